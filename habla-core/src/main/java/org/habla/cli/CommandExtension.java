@@ -1,0 +1,16 @@
+package org.habla.cli;
+
+/**
+ * Adds a subcommand to {@code habla} from another module (e.g. {@code sim}, {@code scenario},
+ * {@code worker}). Registered through {@code META-INF/services/org.habla.cli.CommandExtension}.
+ * The returned object is a picocli {@code @Command}-annotated instance; it exits through its
+ * {@code Callable<Integer>} with the codes of {@link ExitCodes}.
+ */
+public interface CommandExtension {
+
+    /** The subcommand name. */
+    String name();
+
+    /** A fresh picocli command object. */
+    Object command();
+}

@@ -1,0 +1,26 @@
+package org.habla.config;
+
+import java.util.Map;
+import java.util.Optional;
+import org.habla.method.Layer;
+
+/**
+ * One method of the graph.
+ *
+ * @param id       the id used in references ({@code "id.output"})
+ * @param type     the method type name
+ * @param layer    the layer it is placed in
+ * @param inputs   input name → where its samples come from
+ * @param commands output name → the interface command channel it writes (sensors &amp; actuators layer only)
+ * @param params   the type's own params record, already validated
+ * @param expose   the method's control socket, if it has one (virtual layer only)
+ * @param host     the worker that runs it ({@code "host:port"}), if not the daemon itself
+ */
+public record MethodConfig(String id, String type, Layer layer, Map<String, Source> inputs,
+        Map<String, ChannelRef> commands, Record params, Optional<Expose> expose, Optional<String> host) {
+
+    public MethodConfig {
+        inputs = Map.copyOf(inputs);
+        commands = Map.copyOf(commands);
+    }
+}

@@ -1,0 +1,25 @@
+package org.habla.driver;
+
+import java.util.Objects;
+import java.util.Set;
+import java.util.function.Supplier;
+
+/**
+ * One TCP connection a driver keeps to the robot.
+ *
+ * @param name             a short name for logs and the status ({@code "arcos"}, {@code "worldstate"})
+ * @param port             the TCP port on the interface's host
+ * @param commandChannels  the command channels written through this connection
+ * @param sessions         makes a fresh session for every (re)connection
+ */
+public record Connection(String name, int port, Set<String> commandChannels, Supplier<LinkSession> sessions) {
+
+    public Connection {
+        Objects.requireNonNull(name, "name");
+        if (port < 1 || port > 65_535) {
+            throw new IllegalArgumentException("port must be in 1..65535, was " + port);
+        }
+        commandChannels = Set.copyOf(commandChannels);
+        Objects.requireNonNull(sessions, "sessions");
+    }
+}

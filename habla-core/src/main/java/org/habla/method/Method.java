@@ -1,0 +1,335 @@
+package org.habla.method;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.concurrent.Callable;
+import java.util.function.Consumer;
+import org.habla.driver.ChannelDescriptor;
+import org.habla.sample.Payload;
+import org.habla.sample.Sample;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * A method: one small unit of the HABLA's three-layer graph, with named typed inputs and
+ * outputs. Subclass the base class of its layer — {@link SensorActuatorMethod},
+ * {@link ProcessingMethod} or {@link VirtualMethod} — declare ports as fields, and handle samples:
+ *
+ * <pre>{@code
+ * public final class NearestDistance extends ProcessingMethod {
+ *     private final Output<NumberValue> nearest = output("nearest", NumberValue.class, Shape.number("m", "closest range"));
+ *     private final Input<VectorValue> ranges = input("ranges", VectorValue.class, Delivery.latest(), this::onRanges);
+ *
+ *     private void onRanges(VectorValue r, Sample s) {
+ *         emit(nearest, new NumberValue(Arrays.stream(r.toArray()).min().orElse(Double.NaN)));
+ *     }
+ * }
+ * }</pre>
+ *
+ * <h2>Threading contract</h2>
+ * The engine hands a method one message at a time — a sample, a tick or the result of background
+ * work — never two at once, so method code needs no locks: keep state in plain fields. Method code
+ * never sleeps, never starts a thread and never opens a socket; slow work goes through
+ * {@link #background}, periodic work through {@link #tickEvery}, time through {@link #nowMicros}.
+ *
+ * <h2>Life cycle</h2>
+ * The engine owns it: {@code NEW → ATTACHED → RUNNING → STOPPED}. The public final methods below
+ * ({@link #attach}, {@link #start}, {@link #deliver}, {@link #tick}, {@link #stop}) are the engine's
+ * and check every transition; an exception thrown by a hook puts the method in {@code FAILED} with
+ * one log line, and a failed method is handed nothing more. Subclasses fill the hooks
+ * {@link #onStart}, {@link #onSample}, {@link #onTick} and {@link #onStop}.
+ */
+public abstract sealed class Method permits SensorActuatorMethod, ProcessingMethod, VirtualMethod {
+
+    private static final Logger LOG = LoggerFactory.getLogger(Method.class);
+
+    private final List<Input<?>> inputs = new ArrayList<>();
+    private final List<Output<?>> outputs = new ArrayList<>();
+    private Duration tickPeriod;
+    private volatile MethodState state = MethodState.NEW;
+    private volatile String failure = "";
+    private MethodContext context;
+    private long currentSourceMicros;
+
+    Method() {
+    }
+
+    /** The layer this method belongs to. */
+    public abstract Layer layer();
+
+    // ---------------------------------------------------------------- declarations (subclass construction)
+
+    /** Declares an input with {@code latest} delivery and a typed handler. */
+    protected final <P extends Payload> Input<P> input(String name, Class<P> type, InputHandler<P> handler) {
+        return input(name, type, Delivery.latest(), handler);
+    }
+
+    /** Declares an input with the given delivery and a typed handler. */
+    protected final <P extends Payload> Input<P> input(String name, Class<P> type, Delivery delivery,
+            InputHandler<P> handler) {
+        return addInput(new Input<>(name, type, delivery, Objects.requireNonNull(handler, "handler"), false));
+    }
+
+    /** Declares an input the config may leave unwired. */
+    protected final <P extends Payload> Input<P> optionalInput(String name, Class<P> type, Delivery delivery,
+            InputHandler<P> handler) {
+        return addInput(new Input<>(name, type, delivery, Objects.requireNonNull(handler, "handler"), true));
+    }
+
+    /** Declares an input whose samples go to {@link #onSample}. */
+    protected final <P extends Payload> Input<P> input(String name, Class<P> type, Delivery delivery) {
+        return addInput(new Input<>(name, type, delivery, null, false));
+    }
+
+    private <P extends Payload> Input<P> addInput(Input<P> in) {
+        requireState(MethodState.NEW, "declare an input");
+        for (Input<?> other : inputs) {
+            if (other.name().equals(in.name())) {
+                throw new IllegalArgumentException("input '" + in.name() + "' is declared twice");
+            }
+        }
+        inputs.add(in);
+        return in;
+    }
+
+    /** Declares an output; its shape is just its kind. */
+    protected final <P extends Payload> Output<P> output(String name, Class<P> type) {
+        return output(name, type, Shape.of(org.habla.sample.PayloadKind.of(type)));
+    }
+
+    /** Declares an output with a shape that tells clients its unit, fields and meaning. */
+    protected final <P extends Payload> Output<P> output(String name, Class<P> type, Shape shape) {
+        requireState(MethodState.NEW, "declare an output");
+        for (Output<?> other : outputs) {
+            if (other.name().equals(name)) {
+                throw new IllegalArgumentException("output '" + name + "' is declared twice");
+            }
+        }
+        Output<P> out = new Output<>(name, type, shape);
+        outputs.add(out);
+        return out;
+    }
+
+    /** Asks the engine for {@link #onTick} every {@code period}; call from the constructor. */
+    protected final void tickEvery(Duration period) {
+        requireState(MethodState.NEW, "ask for ticks");
+        if (period.isNegative() || period.isZero() || period.toMillis() > 3_600_000) {
+            throw new IllegalArgumentException("tick period must be within (0, 1 h], was " + period);
+        }
+        this.tickPeriod = period;
+    }
+
+    // ---------------------------------------------------------------- hooks
+
+    /** Called once before any sample; may start background work. */
+    protected void onStart() throws Exception {
+    }
+
+    /** Called for a sample of an input declared without a handler. */
+    protected void onSample(Input<?> input, Sample sample) throws Exception {
+        throw new IllegalStateException(getClass().getSimpleName() + " declares " + input
+                + " without a handler and does not override onSample");
+    }
+
+    /** Called every tick period, if the method asked for ticks. */
+    protected void onTick(long nowMicros) throws Exception {
+    }
+
+    /** Called once when the engine stops; release what {@link #onStart} took. */
+    protected void onStop() throws Exception {
+    }
+
+    // ---------------------------------------------------------------- helpers for method code
+
+    /** Publishes a value, stamped with the source time of the message being handled. */
+    protected final <P extends Payload> void emit(Output<P> output, P value) {
+        emit(output, value, currentSourceMicros);
+    }
+
+    /** Publishes a value stamped with an explicit source time. */
+    protected final <P extends Payload> void emit(Output<P> output, P value, long sourceMicros) {
+        if (!outputs.contains(output)) {
+            throw new IllegalArgumentException(output + " is not an output of " + id());
+        }
+        context().emit(output, Objects.requireNonNull(value, "value"), sourceMicros);
+    }
+
+    /** The engine clock, in microseconds since the epoch. */
+    protected final long nowMicros() {
+        return context().nowMicros();
+    }
+
+    /** The source time of the message being handled (the raw reading's time, or the tick's time). */
+    protected final long sourceMicros() {
+        return currentSourceMicros;
+    }
+
+    /** The interface channel an input is wired to, with its metadata (e.g. sonar poses). */
+    protected final Optional<ChannelDescriptor> channelOf(Input<?> input) {
+        return context().channelOf(input);
+    }
+
+    /** Reports whether the method can do its work yet. */
+    protected final void readiness(boolean ready, String detail) {
+        context().readiness(ready, detail);
+    }
+
+    /** Runs slow work away from the method's turn; {@code done} later runs as a turn of its own. */
+    protected final <T> void background(String what, Callable<T> task, Consumer<T> done) {
+        context().background(what, task, done);
+    }
+
+    /** The logger of the concrete method class. */
+    protected final Logger log() {
+        return LoggerFactory.getLogger(getClass());
+    }
+
+    // ---------------------------------------------------------------- the engine's side
+
+    /** The method's id, once attached. */
+    public final String id() {
+        return context == null ? getClass().getSimpleName() : context.methodId();
+    }
+
+    public final List<Input<?>> inputs() {
+        return Collections.unmodifiableList(inputs);
+    }
+
+    public final List<Output<?>> outputs() {
+        return Collections.unmodifiableList(outputs);
+    }
+
+    public final Optional<Input<?>> input(String name) {
+        return inputs.stream().filter(i -> i.name().equals(name)).findFirst();
+    }
+
+    public final Optional<Output<?>> output(String name) {
+        return outputs.stream().filter(o -> o.name().equals(name)).findFirst();
+    }
+
+    /** The tick period the method asked for, if any. */
+    public final Optional<Duration> tickPeriod() {
+        return Optional.ofNullable(tickPeriod);
+    }
+
+    public final MethodState state() {
+        return state;
+    }
+
+    /** Why the method failed, or an empty string. */
+    public final String failure() {
+        return failure;
+    }
+
+    /** Engine only: gives the method its context. NEW → ATTACHED. */
+    public final void attach(MethodContext context) {
+        requireState(MethodState.NEW, "attach");
+        this.context = Objects.requireNonNull(context, "context");
+        state = MethodState.ATTACHED;
+    }
+
+    /** Engine only: ATTACHED → RUNNING, or FAILED if {@link #onStart} throws. */
+    public final void start() {
+        requireState(MethodState.ATTACHED, "start");
+        currentSourceMicros = context.nowMicros();
+        state = MethodState.RUNNING;
+        guard("start", this::onStart);
+    }
+
+    /** Engine only: hands one sample of one input to the method, if it is running. */
+    public final void deliver(Input<?> input, Sample sample) {
+        if (state != MethodState.RUNNING) {
+            return;
+        }
+        currentSourceMicros = sample.sourceMicros();
+        guard("handle a sample of " + input.name(), () -> dispatch(input, sample));
+    }
+
+    /** Engine only: a tick, if the method is running. */
+    public final void tick(long nowMicros) {
+        if (state != MethodState.RUNNING) {
+            return;
+        }
+        currentSourceMicros = nowMicros;
+        guard("tick", () -> onTick(nowMicros));
+    }
+
+    /** Engine only: runs a piece of method code (a background result) as a turn, if running. */
+    public final void runTurn(String what, ThrowingRunnable turn) {
+        if (state != MethodState.RUNNING) {
+            return;
+        }
+        currentSourceMicros = context.nowMicros();
+        guard(what, turn);
+    }
+
+    /** Engine only: a failure that happened on the method's behalf (e.g. its background task). */
+    public final void fail(String what, Throwable cause) {
+        if (state == MethodState.RUNNING || state == MethodState.ATTACHED) {
+            markFailed(what, cause);
+        }
+    }
+
+    /** Engine only: RUNNING or FAILED → STOPPED (FAILED stays FAILED); calls {@link #onStop} once. */
+    public final void stop() {
+        MethodState was = state;
+        if (was == MethodState.STOPPED || was == MethodState.NEW) {
+            return;
+        }
+        if (was == MethodState.RUNNING) {
+            state = MethodState.STOPPED;
+        }
+        try {
+            onStop();
+        } catch (Exception e) {
+            LOG.warn("method {} failed to stop cleanly: {}", id(), e.toString());
+        }
+    }
+
+    @SuppressWarnings({"unchecked", "rawtypes"})
+    private void dispatch(Input<?> input, Sample sample) throws Exception {
+        InputHandler handler = input.handler();
+        if (handler == null) {
+            onSample(input, sample);
+        } else {
+            handler.handle(input.payload(sample), sample);
+        }
+    }
+
+    private void guard(String what, ThrowingRunnable body) {
+        try {
+            body.run();
+        } catch (Exception | LinkageError | AssertionError e) {
+            markFailed(what, e);
+        }
+    }
+
+    private void markFailed(String what, Throwable e) {
+        state = MethodState.FAILED;
+        failure = "failed to " + what + ": " + e;
+        LOG.error("method {} ({}) FAILED to {}: {}", id(), getClass().getSimpleName(), what, e.toString(), e);
+    }
+
+    private MethodContext context() {
+        if (context == null) {
+            throw new IllegalStateException(getClass().getSimpleName() + " is not attached to an engine yet");
+        }
+        return context;
+    }
+
+    private void requireState(MethodState expected, String action) {
+        if (state != expected) {
+            throw new IllegalStateException("cannot " + action + " in state " + state + " (needs " + expected + ")");
+        }
+    }
+
+    /** A piece of method code that may throw. */
+    @FunctionalInterface
+    public interface ThrowingRunnable {
+        void run() throws Exception;
+    }
+}

@@ -1,0 +1,231 @@
+package org.habla.method;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.Callable;
+import java.util.function.Consumer;
+import org.habla.driver.ChannelDescriptor;
+import org.habla.sample.Payload;
+import org.habla.sample.Sample;
+
+/**
+ * Runs one method in memory, without sockets, threads or an engine: push samples into its inputs,
+ * step its clock, read what it emitted. Shipped in the main sources so method authors test with it.
+ *
+ * <pre>{@code
+ * MethodHarness h = MethodHarness.of("nearest", new NearestDistance());
+ * h.push("ranges", VectorValue.of(2.0, 0.4, 3.0));
+ * assertThat(h.last("nearest")).isEqualTo(new NumberValue(0.4));
+ * }</pre>
+ *
+ * Background work runs when {@link #runBackground()} is called (or at once with
+ * {@link #runBackgroundAtOnce()}), so tests decide when slow work finishes.
+ */
+public final class MethodHarness {
+
+    private final Method method;
+    private final String id;
+    private final Map<String, List<Sample>> emitted = new HashMap<>();
+    private final Map<String, ChannelDescriptor> channels = new HashMap<>();
+    private final ArrayDeque<Runnable> pendingBackground = new ArrayDeque<>();
+    private final Map<String, Long> sequences = new HashMap<>();
+    private long nowMicros = 1_700_000_000_000_000L;
+    private long nextTickMicros;
+    private boolean backgroundAtOnce;
+    private boolean ready = true;
+    private String readinessDetail = "";
+
+    private MethodHarness(String id, Method method) {
+        this.id = id;
+        this.method = method;
+    }
+
+    /** Attaches {@code method} under {@code id}; call {@link #start()} next (or use {@link #started}). */
+    public static MethodHarness of(String id, Method method) {
+        MethodHarness h = new MethodHarness(id, method);
+        method.attach(h.new Context());
+        return h;
+    }
+
+    /** Attaches and starts {@code method}. */
+    public static MethodHarness started(String id, Method method) {
+        return of(id, method).start();
+    }
+
+    /** Describes the interface channel an input is wired to (before {@link #start()}). */
+    public MethodHarness wireChannel(String input, ChannelDescriptor channel) {
+        requireInput(input);
+        channels.put(input, channel);
+        return this;
+    }
+
+    public MethodHarness start() {
+        method.start();
+        method.tickPeriod().ifPresent(p -> nextTickMicros = nowMicros + p.toNanos() / 1000);
+        return this;
+    }
+
+    /** Makes background work run as soon as it is asked for. */
+    public MethodHarness runBackgroundAtOnce() {
+        backgroundAtOnce = true;
+        while (!pendingBackground.isEmpty()) {
+            pendingBackground.poll().run();
+        }
+        return this;
+    }
+
+    /** Runs the background work asked for so far; returns how many tasks ran. */
+    public int runBackground() {
+        int n = 0;
+        while (!pendingBackground.isEmpty()) {
+            pendingBackground.poll().run();
+            n++;
+        }
+        return n;
+    }
+
+    /** Hands a value to an input, stamped now. */
+    public MethodHarness push(String input, Payload value) {
+        return push(input, value, nowMicros);
+    }
+
+    /** Hands a value to an input with an explicit source time. */
+    public MethodHarness push(String input, Payload value, long sourceMicros) {
+        Input<?> in = requireInput(input);
+        if (!in.accepts(value)) {
+            throw new IllegalArgumentException(in + " does not accept " + value.kind().wireName());
+        }
+        long seq = sequences.merge("in:" + input, 1L, Long::sum);
+        method.deliver(in, new Sample(value, "harness." + input, seq, sourceMicros, false));
+        return this;
+    }
+
+    /** Moves the clock forward, running every tick that falls due on the way. */
+    public MethodHarness advanceMillis(long millis) {
+        long target = nowMicros + millis * 1000;
+        Optional<java.time.Duration> period = method.tickPeriod();
+        if (period.isPresent()) {
+            long step = period.get().toNanos() / 1000;
+            while (nextTickMicros <= target) {
+                nowMicros = nextTickMicros;
+                method.tick(nowMicros);
+                nextTickMicros += step;
+            }
+        }
+        nowMicros = target;
+        return this;
+    }
+
+    public long nowMicros() {
+        return nowMicros;
+    }
+
+    /** Every sample emitted on {@code output}, oldest first. */
+    public List<Sample> samples(String output) {
+        requireOutput(output);
+        return List.copyOf(emitted.getOrDefault(output, List.of()));
+    }
+
+    /** Every payload emitted on {@code output}, oldest first. */
+    public List<Payload> values(String output) {
+        return samples(output).stream().map(Sample::payload).toList();
+    }
+
+    /** The last payload emitted on {@code output}; fails if there is none. */
+    public Payload last(String output) {
+        List<Sample> s = samples(output);
+        if (s.isEmpty()) {
+            throw new AssertionError(id + " emitted nothing on " + output);
+        }
+        return s.get(s.size() - 1).payload();
+    }
+
+    /** Forgets what was emitted so far. */
+    public MethodHarness clear() {
+        emitted.clear();
+        return this;
+    }
+
+    public MethodState state() {
+        return method.state();
+    }
+
+    public boolean ready() {
+        return ready;
+    }
+
+    public String readinessDetail() {
+        return readinessDetail;
+    }
+
+    public MethodHarness stop() {
+        method.stop();
+        return this;
+    }
+
+    private Input<?> requireInput(String name) {
+        return method.input(name).orElseThrow(() -> new IllegalArgumentException(
+                id + " has no input '" + name + "'; it has " + method.inputs().stream().map(Input::name).toList()));
+    }
+
+    private void requireOutput(String name) {
+        method.output(name).orElseThrow(() -> new IllegalArgumentException(
+                id + " has no output '" + name + "'; it has " + method.outputs().stream().map(Output::name).toList()));
+    }
+
+    private final class Context implements MethodContext {
+        @Override
+        public String methodId() {
+            return id;
+        }
+
+        @Override
+        public long nowMicros() {
+            return nowMicros;
+        }
+
+        @Override
+        public void emit(Output<?> output, Payload value, long sourceMicros) {
+            if (!output.type().isInstance(value)) {
+                throw new IllegalArgumentException(output + " cannot carry " + value.kind().wireName());
+            }
+            long seq = sequences.merge(output.name(), 1L, Long::sum);
+            emitted.computeIfAbsent(output.name(), k -> new ArrayList<>())
+                    .add(new Sample(value, id + "." + output.name(), seq, sourceMicros, false));
+        }
+
+        @Override
+        public Optional<ChannelDescriptor> channelOf(Input<?> input) {
+            return Optional.ofNullable(channels.get(input.name()));
+        }
+
+        @Override
+        public void readiness(boolean isReady, String detail) {
+            ready = isReady;
+            readinessDetail = detail;
+        }
+
+        @Override
+        public <T> void background(String what, Callable<T> task, Consumer<T> done) {
+            Runnable r = () -> {
+                T result;
+                try {
+                    result = task.call();
+                } catch (Exception e) {
+                    method.fail(what, e);
+                    return;
+                }
+                method.runTurn(what + " (done)", () -> done.accept(result));
+            };
+            if (backgroundAtOnce) {
+                r.run();
+            } else {
+                pendingBackground.add(r);
+            }
+        }
+    }
+}
