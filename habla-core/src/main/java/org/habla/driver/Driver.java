@@ -1,6 +1,7 @@
 package org.habla.driver;
 
 import java.util.List;
+import org.habla.sample.PayloadKind;
 
 /**
  * A native-protocol driver for one robot: it describes the robot's channels and the TCP connections
@@ -8,6 +9,13 @@ import java.util.List;
  * engine's, written once.
  */
 public interface Driver {
+
+    /**
+     * The reading channel the engine adds to every interface, whatever its driver: the link's state as a
+     * record {@code {"up": bool, "detail": text}}, sent on every change and once a second. Drivers must not
+     * declare a channel of this name.
+     */
+    ChannelDescriptor LINK_CHANNEL = ChannelDescriptor.reading("link", PayloadKind.RECORD, "");
 
     /** Every channel the robot offers, readings and commands, with their metadata. */
     List<ChannelDescriptor> channels();
