@@ -1,0 +1,265 @@
+package org.habla.graph;
+
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.Condition;
+import java.util.concurrent.locks.ReentrantLock;
+import org.habla.config.Reconnect;
+import org.habla.driver.Connection;
+import org.habla.driver.LinkSession;
+import org.habla.driver.ReadingSink;
+import org.habla.sample.Payload;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Keeps one TCP connection of an interface alive: connects, runs the driver session's handshake,
+ * reads until the connection fails, then waits (doubling up to a maximum) and connects again.
+ * Writes come from any thread and are serialised; a write to a connection that is down is refused,
+ * never queued, so a command is never applied late.
+ */
+final class ConnectionLink {
+
+    private static final Logger LOG = LoggerFactory.getLogger(ConnectionLink.class);
+
+    private final String name;
+    private final String host;
+    private final Connection connection;
+    private final Reconnect reconnect;
+    private final ReadingSink sink;
+    private final Runnable onStateChange;
+    private final ReentrantLock writeLock = new ReentrantLock();
+    private final ReentrantLock sleepLock = new ReentrantLock();
+    private final Condition wakeUp = sleepLock.newCondition();
+    private final AtomicLong connects = new AtomicLong();
+    private final AtomicLong failures = new AtomicLong();
+    private volatile boolean running;
+    private volatile boolean up;
+    private volatile String lastError = "";
+    private volatile Socket socket;
+    private volatile LinkSession session;
+    private volatile OutputStream out;
+    private AutoCloseable keepAlive;
+    private Thread thread;
+
+    ConnectionLink(String interfaceId, String host, Connection connection, Reconnect reconnect, ReadingSink sink,
+            Runnable onStateChange) {
+        this.name = interfaceId + "/" + connection.name();
+        this.host = host;
+        this.connection = connection;
+        this.reconnect = reconnect;
+        this.sink = sink;
+        this.onStateChange = onStateChange;
+    }
+
+    Connection connection() {
+        return connection;
+    }
+
+    boolean up() {
+        return up;
+    }
+
+    void start() {
+        running = true;
+        thread = Thread.ofVirtual().name("habla-link-" + name).start(this::loop);
+    }
+
+    /** Says goodbye if connected, closes the socket and stops reconnecting. */
+    void stop() {
+        running = false;
+        if (up) {
+            write("goodbye", (s, o) -> s.goodbye(o));
+        }
+        closeSocket();
+        sleepLock.lock();
+        try {
+            wakeUp.signalAll();
+        } finally {
+            sleepLock.unlock();
+        }
+        if (thread != null) {
+            try {
+                thread.join(2_000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    private void loop() {
+        long backoff = reconnect.initialMs();
+        while (running) {
+            try {
+                runOnce();
+                backoff = reconnect.initialMs();
+            } catch (IOException | RuntimeException e) {
+                if (!running) {
+                    break;
+                }
+                failures.incrementAndGet();
+                lastError = e.getMessage() == null ? e.toString() : e.getMessage();
+                if (connects.get() == 0 || up) {
+                    LOG.warn("link {} ({}:{}) down: {}", name, host, connection.port(), lastError);
+                } else {
+                    LOG.debug("link {} still down: {}", name, lastError);
+                }
+            } finally {
+                markDown();
+            }
+            if (running) {
+                sleep(backoff);
+                backoff = Math.min(reconnect.maxMs(), backoff * 2);
+            }
+        }
+    }
+
+    private void runOnce() throws IOException {
+        Socket s = new Socket();
+        socket = s;
+        s.setTcpNoDelay(true);
+        s.connect(new InetSocketAddress(host, connection.port()), (int) reconnect.connectTimeoutMs());
+        s.setSoTimeout((int) reconnect.connectTimeoutMs());
+        InputStream in = new BufferedInputStream(s.getInputStream());
+        OutputStream o = new BufferedOutputStream(s.getOutputStream());
+        LinkSession sess = connection.sessions().get();
+        sess.handshake(in, o, sink);
+        o.flush();
+        s.setSoTimeout((int) reconnect.readTimeoutMs());
+        session = sess;
+        out = o;
+        connects.incrementAndGet();
+        up = true;
+        lastError = "";
+        LOG.info("link {} up ({}:{})", name, host, connection.port());
+        onStateChange.run();
+        sess.keepAlivePeriod().ifPresent(p -> keepAlive = startKeepAlive(sess, p.toMillis()));
+        while (running) {
+            sess.readNext(in, sink);
+        }
+    }
+
+    private void markDown() {
+        closeKeepAlive();
+        boolean was = up;
+        up = false;
+        session = null;
+        out = null;
+        closeSocket();
+        if (was) {
+            onStateChange.run();
+        }
+    }
+
+    /** Keep-alives go from a thread of their own, so a robot that stops reading blocks nothing else. */
+    private AutoCloseable startKeepAlive(LinkSession sess, long periodMillis) {
+        Thread t = Thread.ofVirtual().name("habla-keepalive-" + name).start(() -> {
+            while (running && session == sess) {
+                try {
+                    Thread.sleep(Math.max(1, periodMillis));
+                } catch (InterruptedException e) {
+                    return;
+                }
+                if (session == sess) {
+                    write("keep-alive", (x, w) -> x.keepAlive(w));
+                }
+            }
+        });
+        return t::interrupt;
+    }
+
+    private void closeKeepAlive() {
+        AutoCloseable k = keepAlive;
+        keepAlive = null;
+        if (k != null) {
+            try {
+                k.close();
+            } catch (Exception e) {
+                LOG.debug("keep-alive of {} did not close: {}", name, e.toString());
+            }
+        }
+    }
+
+    private void closeSocket() {
+        Socket s = socket;
+        if (s != null) {
+            try {
+                s.close();
+            } catch (IOException e) {
+                LOG.debug("closing {}: {}", name, e.toString());
+            }
+        }
+    }
+
+    private void sleep(long millis) {
+        sleepLock.lock();
+        try {
+            wakeUp.await(millis, TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            running = false;
+        } finally {
+            sleepLock.unlock();
+        }
+    }
+
+    /** Writes a command now; false if the connection is down or the write failed. */
+    boolean command(String channel, Payload value) {
+        return write("command " + channel, (s, o) -> s.write(channel, value, o));
+    }
+
+    boolean stopMotion() {
+        return write("stop", (s, o) -> s.stopMotion(o));
+    }
+
+    private boolean write(String what, SessionWrite action) {
+        writeLock.lock();
+        try {
+            LinkSession s = session;
+            OutputStream o = out;
+            if (!up || s == null || o == null) {
+                return false;
+            }
+            action.write(s, o);
+            o.flush();
+            return true;
+        } catch (IOException | RuntimeException e) {
+            LOG.warn("link {}: {} failed: {}", name, what, e.toString());
+            closeSocket();
+            return false;
+        } finally {
+            writeLock.unlock();
+        }
+    }
+
+    ObjectNode status() {
+        ObjectNode n = JsonNodeFactory.instance.objectNode();
+        n.put("name", connection.name());
+        n.put("port", connection.port());
+        n.put("up", up);
+        n.put("connects", connects.get());
+        n.put("failures", failures.get());
+        if (!lastError.isEmpty()) {
+            n.put("lastError", lastError);
+        }
+        return n;
+    }
+
+    String lastError() {
+        return lastError;
+    }
+
+    @FunctionalInterface
+    private interface SessionWrite {
+        void write(LinkSession session, OutputStream out) throws IOException;
+    }
+}

@@ -1,0 +1,141 @@
+package org.habla.graph;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
+import org.habla.config.Expose;
+import org.habla.method.Input;
+import org.habla.method.Layer;
+import org.habla.method.MethodState;
+import org.habla.method.Output;
+import org.habla.net.ControlPoint;
+import org.habla.sample.Payload;
+import org.habla.sample.Sample;
+
+/** A method with a control socket, as the engine shows it to its control server. */
+final class ExposedMethod implements ControlPoint {
+
+    private final MethodRunner runner;
+    private final Expose expose;
+    private final List<Input<?>> controlInputs;
+    private final MotionWatchdog watchdog;
+    private final List<Listener> listeners = new CopyOnWriteArrayList<>();
+    private final Map<String, Long> controlSequences = new HashMap<>();
+
+    ExposedMethod(MethodRunner runner, Expose expose, List<Input<?>> controlInputs, MotionWatchdog watchdog) {
+        this.runner = runner;
+        this.expose = expose;
+        this.controlInputs = List.copyOf(controlInputs);
+        this.watchdog = watchdog;
+        for (Output<?> out : runner.method().outputs()) {
+            runner.port(out).subscribe(sample -> {
+                for (Listener l : listeners) {
+                    l.onSample(out, sample);
+                }
+            });
+        }
+    }
+
+    Expose expose() {
+        return expose;
+    }
+
+    @Override
+    public String name() {
+        return expose.name();
+    }
+
+    @Override
+    public String methodId() {
+        return runner.id();
+    }
+
+    @Override
+    public Layer layer() {
+        return runner.method().layer();
+    }
+
+    @Override
+    public List<Output<?>> outputs() {
+        return runner.method().outputs();
+    }
+
+    @Override
+    public List<Input<?>> controlInputs() {
+        return controlInputs;
+    }
+
+    @Override
+    public Map<String, Sample> latest() {
+        Map<String, Sample> m = new HashMap<>();
+        for (Output<?> out : runner.method().outputs()) {
+            Sample s = runner.port(out).latest();
+            if (s != null) {
+                m.put(out.name(), s);
+            }
+        }
+        return m;
+    }
+
+    @Override
+    public boolean stale() {
+        return runner.stale();
+    }
+
+    /** Tells every client that staleness changed. */
+    void staleChanged(boolean stale, String why) {
+        for (Listener l : listeners) {
+            l.onStale(stale, why);
+        }
+    }
+
+    @Override
+    public Subscription subscribe(Listener listener) {
+        listeners.add(listener);
+        return () -> listeners.remove(listener);
+    }
+
+    @Override
+    public void write(Input<?> input, Payload value) throws Rejected {
+        if (!controlInputs.contains(input)) {
+            throw new Rejected("unknown_input", "'" + input.name() + "' is not a control input of " + runner.id());
+        }
+        if (!input.accepts(value)) {
+            throw new Rejected("bad_value", "input '" + input.name() + "' takes " + input.kind().wireName()
+                    + ", got " + value.kind().wireName());
+        }
+        MethodState state = runner.method().state();
+        if (state != MethodState.RUNNING) {
+            throw new Rejected("method_unavailable", "method " + runner.id() + " is " + state
+                    + (runner.method().failure().isEmpty() ? "" : ": " + runner.method().failure()));
+        }
+        long seq;
+        synchronized (controlSequences) {
+            seq = controlSequences.merge(input.name(), 1L, Long::sum);
+        }
+        watchdog.controlWrite();
+        Sample sample = new Sample(value, "control:" + expose.name(), seq, runner.nowMicros(), false);
+        if (!runner.slot(input).offer(sample)) {
+            throw new Rejected("queue_full", "input '" + input.name() + "' of " + runner.id()
+                    + " is full (" + input.delivery().capacity() + " waiting); value dropped");
+        }
+    }
+
+    @Override
+    public void writerLeft() {
+        watchdog.writerLeft();
+    }
+
+    static List<Input<?>> controlInputsOf(MethodRunner runner, Map<String, ?> controlSources) {
+        List<Input<?>> list = new ArrayList<>();
+        for (Input<?> in : runner.method().inputs()) {
+            if (controlSources.containsKey(in.name())) {
+                list.add(in);
+            }
+        }
+        return list;
+    }
+
+}

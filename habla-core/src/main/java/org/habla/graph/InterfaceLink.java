@@ -1,0 +1,251 @@
+package org.habla.graph;
+
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.atomic.LongAdder;
+import java.util.function.Consumer;
+import org.habla.config.InterfaceConfig;
+import org.habla.driver.ChannelDescriptor;
+import org.habla.driver.Connection;
+import org.habla.driver.Driver;
+import org.habla.driver.ReadingSink;
+import org.habla.sample.Payload;
+import org.habla.sample.RecordValue;
+import org.habla.sample.Sample;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * One robot interface in the running graph: its driver's connections, a producer per reading
+ * channel (plus the engine's {@code link} channel), and the routing of commands to the connection
+ * that carries them. Motion commands are dropped — never delayed — while their connection is down
+ * or the motion watchdog has tripped.
+ */
+final class InterfaceLink {
+
+    private static final Logger LOG = LoggerFactory.getLogger(InterfaceLink.class);
+
+    private final InterfaceConfig config;
+    private final Driver driver;
+    private final EngineClock clock;
+    private final Map<String, ChannelDescriptor> channels = new HashMap<>();
+    private final Map<String, OutputPort> readings = new HashMap<>();
+    private final Map<String, ConnectionLink> commandRoutes = new HashMap<>();
+    private final List<ConnectionLink> connections = new ArrayList<>();
+    private final List<Consumer<Boolean>> stateListeners = new ArrayList<>();
+    private final LongAdder malformed = new LongAdder();
+    private final LongAdder unknownChannel = new LongAdder();
+    private final LongAdder commandsSent = new LongAdder();
+    private final AtomicLong commandsDropped = new AtomicLong();
+    private volatile ObjectNode robotInfo = JsonNodeFactory.instance.objectNode();
+    private volatile MotionWatchdog watchdog;
+    private volatile boolean up;
+    private AutoCloseable linkTicker;
+
+    InterfaceLink(InterfaceConfig config, Driver driver, EngineClock clock) {
+        this.config = config;
+        this.driver = driver;
+        this.clock = clock;
+        for (ChannelDescriptor c : driver.channels()) {
+            channels.put(c.name(), c);
+        }
+        channels.put(Driver.LINK_CHANNEL.name(), Driver.LINK_CHANNEL);
+        for (ChannelDescriptor c : channels.values()) {
+            if (c.direction() == ChannelDescriptor.Direction.READING) {
+                readings.put(c.name(), new OutputPort("@" + config.id() + "." + c.name()));
+            }
+        }
+        ReadingSink sink = new Sink();
+        for (Connection c : driver.connections()) {
+            ConnectionLink link = new ConnectionLink(config.id(), config.address().host(), c, config.reconnect(), sink,
+                    this::connectionChanged);
+            connections.add(link);
+            for (String channel : c.commandChannels()) {
+                commandRoutes.put(channel, link);
+            }
+        }
+    }
+
+    String id() {
+        return config.id();
+    }
+
+    ChannelDescriptor channel(String name) {
+        return channels.get(name);
+    }
+
+    /** The producer of a reading channel, for wiring; null if there is none. */
+    OutputPort reading(String channel) {
+        return readings.get(channel);
+    }
+
+    void watchdog(MotionWatchdog w) {
+        this.watchdog = w;
+    }
+
+    void onStateChange(Consumer<Boolean> listener) {
+        stateListeners.add(listener);
+    }
+
+    boolean up() {
+        return up;
+    }
+
+    void start() {
+        for (ConnectionLink c : connections) {
+            c.start();
+        }
+        linkTicker = clock.every(1_000_000, this::publishLink);
+        publishLink();
+    }
+
+    void stop() {
+        if (linkTicker != null) {
+            try {
+                linkTicker.close();
+            } catch (Exception e) {
+                LOG.debug("link ticker: {}", e.toString());
+            }
+        }
+        for (ConnectionLink c : connections) {
+            c.stop();
+        }
+    }
+
+    /** Sends a command sample from an actuator method to its channel. */
+    void command(String channel, Sample sample) {
+        ChannelDescriptor d = channels.get(channel);
+        ConnectionLink link = commandRoutes.get(channel);
+        if (d == null || link == null) {
+            drop(channel, "no connection carries it");
+            return;
+        }
+        MotionWatchdog w = watchdog;
+        if (d.motion() && w != null && !w.allowsMotion()) {
+            drop(channel, "the motion watchdog has stopped the robot");
+            return;
+        }
+        if (!link.command(channel, sample.payload())) {
+            drop(channel, "link " + config.id() + "/" + link.connection().name() + " is down");
+            return;
+        }
+        commandsSent.increment();
+    }
+
+    /** Writes the stop of every connection that carries a motion channel, each from a thread of its own. */
+    void stopMotion() {
+        for (ConnectionLink link : connections) {
+            boolean carriesMotion = link.connection().commandChannels().stream()
+                    .map(channels::get).anyMatch(c -> c != null && c.motion());
+            if (carriesMotion) {
+                Thread.ofVirtual().name("habla-stop-" + config.id()).start(link::stopMotion);
+            }
+        }
+    }
+
+    /** Stops motion and waits briefly for the stop to be written (shutdown). */
+    void stopMotionNow() {
+        for (ConnectionLink link : connections) {
+            if (link.connection().commandChannels().stream().map(channels::get).anyMatch(c -> c != null && c.motion())) {
+                link.stopMotion();
+            }
+        }
+    }
+
+    private void drop(String channel, String why) {
+        long n = commandsDropped.incrementAndGet();
+        if (n == 1 || n % 100 == 0) {
+            LOG.warn("interface {}: command on {} dropped ({} dropped so far): {}", config.id(), channel, n, why);
+        }
+    }
+
+    private void connectionChanged() {
+        boolean all = connections.stream().allMatch(ConnectionLink::up);
+        if (all != up) {
+            up = all;
+            publishLink();
+            for (Consumer<Boolean> l : stateListeners) {
+                l.accept(all);
+            }
+        }
+    }
+
+    private void publishLink() {
+        StringBuilder detail = new StringBuilder();
+        for (ConnectionLink c : connections) {
+            if (!c.up()) {
+                detail.append(detail.length() == 0 ? "" : "; ").append(c.connection().name()).append(" down")
+                        .append(c.lastError().isEmpty() ? "" : ": " + c.lastError());
+            }
+        }
+        RecordValue value = RecordValue.builder().put("up", up).put("interface", config.id())
+                .put("detail", detail.length() == 0 ? "all connections up" : detail.toString()).build();
+        readings.get(Driver.LINK_CHANNEL.name()).publish(value, clock.nowMicros(), false);
+    }
+
+    ObjectNode status() {
+        ObjectNode n = JsonNodeFactory.instance.objectNode();
+        n.put("id", config.id());
+        n.put("driver", config.driver());
+        n.put("address", config.address().toString());
+        n.put("up", up);
+        n.set("robot", robotInfo);
+        ArrayNode conns = n.putArray("connections");
+        connections.forEach(c -> conns.add(c.status()));
+        n.put("malformed", malformed.sum());
+        n.put("unknownChannel", unknownChannel.sum());
+        n.put("commandsSent", commandsSent.sum());
+        n.put("commandsDropped", commandsDropped.get());
+        ObjectNode rs = n.putObject("readings");
+        readings.forEach((name, port) -> rs.put(name, port.published()));
+        return n;
+    }
+
+    /** Turns what the sessions decode into samples on the reading channels. */
+    private final class Sink implements ReadingSink {
+        @Override
+        public void reading(String channel, Payload value) {
+            reading(channel, value, clock.nowMicros());
+        }
+
+        @Override
+        public void reading(String channel, Payload value, long sourceMicros) {
+            OutputPort port = readings.get(channel);
+            ChannelDescriptor d = channels.get(channel);
+            if (port == null || Driver.LINK_CHANNEL.name().equals(channel)) {
+                unknownChannel.increment();
+                LOG.debug("interface {}: reading on unknown channel '{}' ignored", config.id(), channel);
+                return;
+            }
+            if (!d.kind().accepts(value.kind())) {
+                malformed("reading on " + channel + " is " + value.kind().wireName() + ", expected "
+                        + d.kind().wireName());
+                return;
+            }
+            port.publish(value, sourceMicros, false);
+        }
+
+        @Override
+        public void malformed(String what) {
+            malformed.increment();
+            long n = malformed.sum();
+            if (n <= 10 || n % 1000 == 0) {
+                LOG.warn("interface {}: malformed input dropped ({} so far): {}", config.id(), n, what);
+            }
+        }
+
+        @Override
+        public void robotInfo(ObjectNode info) {
+            ObjectNode merged = robotInfo.deepCopy();
+            merged.setAll(info.deepCopy());
+            robotInfo = merged;
+            LOG.info("interface {}: robot {}", config.id(), merged);
+        }
+    }
+}

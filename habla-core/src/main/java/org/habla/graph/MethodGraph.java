@@ -1,0 +1,249 @@
+package org.habla.graph;
+
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.habla.config.ChannelRef;
+import org.habla.config.HablaConfig;
+import org.habla.config.InterfaceConfig;
+import org.habla.config.MethodConfig;
+import org.habla.config.Source;
+import org.habla.driver.ChannelDescriptor;
+import org.habla.method.Input;
+import org.habla.method.Method;
+import org.habla.method.Output;
+import org.habla.net.ControlPoint;
+import org.habla.plugin.DriverProvider;
+import org.habla.plugin.MethodProvider;
+import org.habla.plugin.PluginRegistry;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The running form of a valid config: every method on its runner, every wire connected, every
+ * interface link keeping its robot connections, and the motion watchdog. The config was checked
+ * by the loader, so building only fails on what cannot be known before (a provider that throws).
+ *
+ * <pre>
+ *   interface ──reading──▶ [sensors &amp; actuators] ──▶ [processing] ──▶ [virtual] ──sample──▶ control socket
+ *   interface ◀─command─── [sensors &amp; actuators] ◀── [processing] ◀── [virtual] ◀──value─── control socket
+ * </pre>
+ */
+public final class MethodGraph implements AutoCloseable {
+
+    private static final Logger LOG = LoggerFactory.getLogger(MethodGraph.class);
+    private static final long STOP_WAIT_MILLIS = 2_000;
+
+    private final HablaConfig config;
+    private final EngineClock clock;
+    private final ExecutorService backgroundPool;
+    private final Map<String, MethodRunner> runners = new LinkedHashMap<>();
+    private final Map<String, InterfaceLink> links = new LinkedHashMap<>();
+    private final Map<String, Set<String>> upstreamInterfaces = new HashMap<>();
+    private final List<ExposedMethod> exposed = new ArrayList<>();
+    private final MotionWatchdog watchdog;
+    private final long startedMicros;
+    private AutoCloseable watchdogTicker;
+    private boolean started;
+
+    private MethodGraph(HablaConfig config, PluginRegistry registry, EngineClock clock) {
+        this.config = config;
+        this.clock = clock;
+        this.startedMicros = clock.nowMicros();
+        AtomicInteger n = new AtomicInteger();
+        this.backgroundPool = Executors.newFixedThreadPool(Math.max(2, Runtime.getRuntime().availableProcessors()),
+                r -> {
+                    Thread t = new Thread(r, "habla-background-" + n.incrementAndGet());
+                    t.setDaemon(true);
+                    return t;
+                });
+        for (InterfaceConfig ic : config.interfaces()) {
+            links.put(ic.id(), new InterfaceLink(ic, createDriver(registry, ic), clock));
+        }
+        this.watchdog = new MotionWatchdog(config.safety().watchdogMs(), clock, List.copyOf(links.values()));
+        links.values().forEach(l -> l.watchdog(watchdog));
+        for (MethodConfig mc : config.methods()) {
+            runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc), clock, backgroundPool));
+        }
+        for (MethodConfig mc : config.methods()) {
+            wire(mc);
+        }
+        for (MethodConfig mc : config.methods()) {
+            upstreamInterfaces.put(mc.id(), upstream(mc.id(), new LinkedHashSet<>()));
+        }
+        for (InterfaceLink link : links.values()) {
+            link.onStateChange(up -> linkChanged(link, up));
+        }
+    }
+
+    /** Builds the graph of a checked config. Nothing runs until {@link #start()}. */
+    public static MethodGraph build(HablaConfig config, PluginRegistry registry, EngineClock clock) {
+        return new MethodGraph(config, registry, clock);
+    }
+
+    @SuppressWarnings({"unchecked", "rawtypes"})
+    private static org.habla.driver.Driver createDriver(PluginRegistry registry, InterfaceConfig ic) {
+        DriverProvider provider = registry.driver(ic.driver()).orElseThrow(() ->
+                new IllegalStateException("no driver type '" + ic.driver() + "'"));
+        return provider.create(ic.address(), ic.params());
+    }
+
+    @SuppressWarnings({"unchecked", "rawtypes"})
+    private static Method createMethod(PluginRegistry registry, MethodConfig mc) {
+        MethodProvider provider = registry.method(mc.type()).orElseThrow(() ->
+                new IllegalStateException("no method type '" + mc.type() + "'"));
+        return provider.create(mc.layer(), mc.params());
+    }
+
+    private void wire(MethodConfig mc) {
+        MethodRunner runner = runners.get(mc.id());
+        Map<String, Source> controlSources = new HashMap<>();
+        for (Map.Entry<String, Source> e : mc.inputs().entrySet()) {
+            Input<?> input = runner.method().input(e.getKey()).orElseThrow();
+            InputSlot slot = runner.slot(input);
+            switch (e.getValue()) {
+                case Source.MethodOutput mo -> {
+                    MethodRunner from = runners.get(mo.methodId());
+                    Output<?> out = from.method().output(mo.output()).orElseThrow();
+                    from.port(out).subscribe(slot::offer);
+                }
+                case Source.Channel ch -> {
+                    InterfaceLink link = links.get(ch.interfaceId());
+                    link.reading(ch.channel()).subscribe(slot::offer);
+                    runner.bindChannel(input, link.channel(ch.channel()));
+                }
+                case Source.Control c -> controlSources.put(e.getKey(), c);
+            }
+        }
+        for (Map.Entry<String, ChannelRef> e : mc.commands().entrySet()) {
+            Output<?> out = runner.method().output(e.getKey()).orElseThrow();
+            InterfaceLink link = links.get(e.getValue().interfaceId());
+            String channel = e.getValue().channel();
+            runner.port(out).subscribe(sample -> link.command(channel, sample));
+        }
+        mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner,
+                x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog)));
+    }
+
+    private Set<String> upstream(String methodId, Set<String> visited) {
+        Set<String> result = new LinkedHashSet<>();
+        if (!visited.add(methodId)) {
+            return result;
+        }
+        MethodConfig mc = config.method(methodId).orElseThrow();
+        for (Source s : mc.inputs().values()) {
+            switch (s) {
+                case Source.Channel ch -> result.add(ch.interfaceId());
+                case Source.MethodOutput mo -> result.addAll(upstream(mo.methodId(), visited));
+                case Source.Control c -> { }
+            }
+        }
+        return result;
+    }
+
+    private void linkChanged(InterfaceLink link, boolean up) {
+        for (Map.Entry<String, Set<String>> e : upstreamInterfaces.entrySet()) {
+            if (!e.getValue().contains(link.id())) {
+                continue;
+            }
+            MethodRunner r = runners.get(e.getKey());
+            boolean stale = e.getValue().stream().anyMatch(id -> !links.get(id).up());
+            if (r.stale() != stale) {
+                r.stale(stale);
+                for (ExposedMethod x : exposed) {
+                    if (x.methodId().equals(r.id())) {
+                        x.staleChanged(stale, stale ? "interface " + link.id() + " is down" : "all links up");
+                    }
+                }
+            }
+        }
+    }
+
+    /** Starts every method, then every link, then the watchdog. */
+    public synchronized void start() {
+        if (started) {
+            throw new IllegalStateException("the graph is already started");
+        }
+        started = true;
+        // Until a link reports up, what depends on it is stale.
+        for (Map.Entry<String, Set<String>> e : upstreamInterfaces.entrySet()) {
+            runners.get(e.getKey()).stale(!e.getValue().isEmpty());
+        }
+        runners.values().forEach(MethodRunner::start);
+        links.values().forEach(InterfaceLink::start);
+        watchdogTicker = clock.every(50_000, watchdog::check);
+        LOG.info("graph of '{}' started: {} methods, {} interfaces, {} sockets", config.system(), runners.size(),
+                links.size(), exposed.size());
+    }
+
+    /** The exposed methods, in config order, each with its socket settings. */
+    public List<ControlPoint> controlPoints() {
+        return List.copyOf(exposed);
+    }
+
+    /** The socket settings of an exposed method's control point. */
+    public org.habla.config.Expose exposeOf(ControlPoint point) {
+        return ((ExposedMethod) point).expose();
+    }
+
+    /** Stops every motion now and keeps motion commands out until a control client writes again. */
+    public void stopActuators(String reason) {
+        watchdog.trip(reason);
+    }
+
+    /** A snapshot for the status endpoint. */
+    public ObjectNode status() {
+        long now = clock.nowMicros();
+        ObjectNode n = JsonNodeFactory.instance.objectNode();
+        n.put("system", config.system());
+        n.put("uptimeS", (now - startedMicros) / 1e6);
+        ObjectNode w = n.putObject("watchdog");
+        w.put("timeoutMs", watchdog.timeoutMillis());
+        w.put("tripped", watchdog.tripped());
+        w.put("trips", watchdog.trips());
+        if (!watchdog.lastReason().isEmpty()) {
+            w.put("lastReason", watchdog.lastReason());
+        }
+        ArrayNode ifs = n.putArray("interfaces");
+        links.values().forEach(l -> ifs.add(l.status()));
+        ArrayNode ms = n.putArray("methods");
+        runners.values().forEach(r -> ms.add(r.status(now)));
+        return n;
+    }
+
+    /** Stops the actuators first, then the links' reconnecting, then the methods. */
+    @Override
+    public synchronized void close() {
+        if (!started) {
+            backgroundPool.shutdownNow();
+            return;
+        }
+        started = false;
+        closeQuietly(watchdogTicker);
+        links.values().forEach(InterfaceLink::stopMotionNow);
+        runners.values().forEach(r -> r.stop(STOP_WAIT_MILLIS));
+        links.values().forEach(InterfaceLink::stop);
+        backgroundPool.shutdownNow();
+        LOG.info("graph of '{}' stopped", config.system());
+    }
+
+    private static void closeQuietly(AutoCloseable c) {
+        if (c != null) {
+            try {
+                c.close();
+            } catch (Exception e) {
+                LOG.debug("close: {}", e.toString());
+            }
+        }
+    }
+}

@@ -1,0 +1,284 @@
+package org.habla.graph;
+
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.Callable;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.locks.LockSupport;
+import java.util.function.Consumer;
+import org.habla.driver.ChannelDescriptor;
+import org.habla.method.Input;
+import org.habla.method.Method;
+import org.habla.method.MethodContext;
+import org.habla.method.Output;
+import org.habla.sample.Payload;
+import org.habla.sample.Sample;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Runs one method on a thread of its own: waits for samples in its input slots, ticks and
+ * background results, and hands them to the method one at a time. Because every method has its
+ * own thread, a slow method (speech, vision) never holds up a light one.
+ */
+final class MethodRunner implements MethodContext {
+
+    private static final Logger LOG = LoggerFactory.getLogger(MethodRunner.class);
+    private static final long IDLE_PARK_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
+
+    private final String id;
+    private final String type;
+    private final Method method;
+    private final EngineClock clock;
+    private final ExecutorService backgroundPool;
+    private final List<InputSlot> slots = new ArrayList<>();
+    private final Map<Input<?>, InputSlot> slotByInput = new HashMap<>();
+    private final Map<Output<?>, OutputPort> ports = new HashMap<>();
+    private final Map<Input<?>, ChannelDescriptor> channels = new HashMap<>();
+    private final ConcurrentLinkedQueue<Runnable> turns = new ConcurrentLinkedQueue<>();
+    private final AtomicBoolean signalled = new AtomicBoolean();
+    private final AtomicBoolean tickPending = new AtomicBoolean();
+    private final RateMeter handled = new RateMeter();
+    private final LatencyStats latency = new LatencyStats();
+    private volatile boolean running;
+    private volatile boolean stale;
+    private volatile boolean ready = true;
+    private volatile String readinessDetail = "";
+    private AutoCloseable ticker;
+    private Thread thread;
+
+    MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool) {
+        this.id = id;
+        this.type = type;
+        this.method = method;
+        this.clock = clock;
+        this.backgroundPool = backgroundPool;
+        for (Input<?> in : method.inputs()) {
+            InputSlot slot = new InputSlot(in, this::wake);
+            slots.add(slot);
+            slotByInput.put(in, slot);
+        }
+        for (Output<?> out : method.outputs()) {
+            ports.put(out, new OutputPort(id + "." + out.name()));
+        }
+        method.attach(this);
+    }
+
+    String id() {
+        return id;
+    }
+
+    String type() {
+        return type;
+    }
+
+    Method method() {
+        return method;
+    }
+
+    InputSlot slot(Input<?> input) {
+        return slotByInput.get(input);
+    }
+
+    OutputPort port(Output<?> output) {
+        return ports.get(output);
+    }
+
+    void bindChannel(Input<?> input, ChannelDescriptor channel) {
+        channels.put(input, channel);
+    }
+
+    void stale(boolean isStale) {
+        stale = isStale;
+    }
+
+    boolean stale() {
+        return stale;
+    }
+
+    /** Starts the method and its thread. */
+    void start() {
+        running = true;
+        thread = new Thread(this::loop, "habla-method-" + id);
+        thread.setDaemon(true);
+        method.start();
+        method.tickPeriod().ifPresent(p -> ticker = clock.every(p.toNanos() / 1_000, this::requestTick));
+        thread.start();
+    }
+
+    /** Stops the thread, then the method. Waits at most {@code waitMillis} for the current turn. */
+    void stop(long waitMillis) {
+        running = false;
+        closeTicker();
+        if (thread != null) {
+            LockSupport.unpark(thread);
+            try {
+                thread.join(waitMillis);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            if (thread.isAlive()) {
+                LOG.warn("method {} is still busy after {} ms; stopping it anyway", id, waitMillis);
+            }
+        }
+        method.stop();
+    }
+
+    private void closeTicker() {
+        if (ticker != null) {
+            try {
+                ticker.close();
+            } catch (Exception e) {
+                LOG.debug("ticker of {} did not close: {}", id, e.toString());
+            }
+        }
+    }
+
+    private void requestTick() {
+        if (tickPending.compareAndSet(false, true)) {
+            turns.add(() -> {
+                tickPending.set(false);
+                method.tick(clock.nowMicros());
+            });
+            wake();
+        }
+    }
+
+    private void wake() {
+        signalled.set(true);
+        Thread t = thread;
+        if (t != null) {
+            LockSupport.unpark(t);
+        }
+    }
+
+    private void loop() {
+        while (running) {
+            signalled.set(false);
+            boolean worked = drainOnce();
+            if (!worked && !signalled.get() && running) {
+                LockSupport.parkNanos(this, IDLE_PARK_NANOS);
+            }
+        }
+    }
+
+    /** One pass: at most one sample from every input (round robin), then the turns waiting now. */
+    private boolean drainOnce() {
+        boolean worked = false;
+        for (InputSlot slot : slots) {
+            Sample s = slot.poll();
+            if (s != null) {
+                worked = true;
+                long now = clock.nowMicros();
+                latency.record(now - s.sourceMicros());
+                handled.mark(now);
+                method.deliver(slot.input(), s);
+            }
+        }
+        for (int n = turns.size(); n > 0; n--) {
+            Runnable turn = turns.poll();
+            if (turn == null) {
+                break;
+            }
+            worked = true;
+            turn.run();
+        }
+        return worked;
+    }
+
+    // ------------------------------------------------------------------ MethodContext
+
+    @Override
+    public String methodId() {
+        return id;
+    }
+
+    @Override
+    public long nowMicros() {
+        return clock.nowMicros();
+    }
+
+    @Override
+    public void emit(Output<?> output, Payload value, long sourceMicros) {
+        if (!output.type().isInstance(value)) {
+            throw new IllegalArgumentException(output + " of " + id + " cannot carry " + value.kind().wireName());
+        }
+        ports.get(output).publish(value, sourceMicros, stale);
+    }
+
+    @Override
+    public Optional<ChannelDescriptor> channelOf(Input<?> input) {
+        return Optional.ofNullable(channels.get(input));
+    }
+
+    @Override
+    public void readiness(boolean isReady, String detail) {
+        if (isReady != ready) {
+            LOG.info("method {} is {}{}", id, isReady ? "ready" : "not ready",
+                    detail == null || detail.isEmpty() ? "" : ": " + detail);
+        }
+        ready = isReady;
+        readinessDetail = detail == null ? "" : detail;
+    }
+
+    @Override
+    public <T> void background(String what, Callable<T> task, Consumer<T> done) {
+        try {
+            backgroundPool.execute(() -> {
+                try {
+                    T result = task.call();
+                    turns.add(() -> method.runTurn(what, () -> done.accept(result)));
+                } catch (Exception | LinkageError e) {
+                    turns.add(() -> method.fail(what, e));
+                }
+                wake();
+            });
+        } catch (RejectedExecutionException e) {
+            LOG.debug("background work '{}' of {} refused: the engine is stopping", what, id);
+        }
+    }
+
+    // ------------------------------------------------------------------ status
+
+    ObjectNode status(long nowMicros) {
+        ObjectNode n = JsonNodeFactory.instance.objectNode();
+        n.put("id", id);
+        n.put("type", type);
+        n.put("layer", method.layer().configName());
+        n.put("state", method.state().name());
+        if (!method.failure().isEmpty()) {
+            n.put("failure", method.failure());
+        }
+        n.put("ready", ready);
+        if (!readinessDetail.isEmpty()) {
+            n.put("readiness", readinessDetail);
+        }
+        n.put("stale", stale);
+        n.put("handled", handled.total());
+        n.put("handledPerS", handled.perSecond(nowMicros));
+        n.set("latency", latency.snapshot());
+        ObjectNode inputs = n.putObject("inputs");
+        for (InputSlot slot : slots) {
+            ObjectNode i = inputs.putObject(slot.input().name());
+            i.put("delivery", slot.input().delivery().mode().name().toLowerCase(java.util.Locale.ROOT));
+            i.put("depth", slot.depth());
+            i.put("offered", slot.offered());
+            i.put("dropped", slot.dropped());
+            i.put("conflated", slot.conflated());
+        }
+        ObjectNode outputs = n.putObject("outputs");
+        for (Output<?> out : method.outputs()) {
+            outputs.put(out.name(), ports.get(out).published());
+        }
+        return n;
+    }
+}

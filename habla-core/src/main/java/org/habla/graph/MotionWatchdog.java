@@ -1,0 +1,88 @@
+package org.habla.graph;
+
+import java.util.List;
+import java.util.concurrent.atomic.AtomicLong;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Stops the robot when its control architecture goes quiet or away. Armed by the first value a
+ * control client writes; trips when no value has come for the timeout, or at once when a client
+ * that wrote values disconnects. A trip sends every link's stop and then drops motion commands
+ * until a control client writes again, so nothing queued before the trip moves the robot later.
+ */
+final class MotionWatchdog {
+
+    private static final Logger LOG = LoggerFactory.getLogger(MotionWatchdog.class);
+
+    private final long timeoutMicros;
+    private final EngineClock clock;
+    private final List<InterfaceLink> links;
+    private final AtomicLong trips = new AtomicLong();
+    private volatile long lastWriteMicros;
+    private volatile boolean armed;
+    private volatile boolean tripped;
+    private volatile String lastReason = "";
+
+    MotionWatchdog(long timeoutMillis, EngineClock clock, List<InterfaceLink> links) {
+        this.timeoutMicros = timeoutMillis * 1_000;
+        this.clock = clock;
+        this.links = links;
+    }
+
+    /** A control client wrote a value: motion is allowed again and the silence timer restarts. */
+    void controlWrite() {
+        lastWriteMicros = clock.nowMicros();
+        armed = true;
+        if (tripped) {
+            tripped = false;
+            LOG.info("motion watchdog: control is back, motion commands flow again");
+        }
+    }
+
+    /** Called periodically by the engine. */
+    void check() {
+        if (armed && timeoutMicros > 0 && clock.nowMicros() - lastWriteMicros > timeoutMicros) {
+            trip("no control value for " + timeoutMicros / 1_000 + " ms");
+        }
+    }
+
+    /** A control client that had written values disconnected. */
+    void writerLeft() {
+        if (armed) {
+            trip("a control client that drove the robot disconnected");
+        }
+    }
+
+    /** Stops every motion now (also used at shutdown). */
+    void trip(String reason) {
+        armed = false;
+        tripped = true;
+        lastReason = reason;
+        trips.incrementAndGet();
+        LOG.warn("motion watchdog: stopping the robot: {}", reason);
+        for (InterfaceLink link : links) {
+            link.stopMotion();
+        }
+    }
+
+    boolean allowsMotion() {
+        return !tripped;
+    }
+
+    boolean tripped() {
+        return tripped;
+    }
+
+    long trips() {
+        return trips.get();
+    }
+
+    String lastReason() {
+        return lastReason;
+    }
+
+    long timeoutMillis() {
+        return timeoutMicros / 1_000;
+    }
+}

@@ -1,0 +1,55 @@
+package org.habla.graph;
+
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
+import org.habla.sample.Payload;
+import org.habla.sample.Sample;
+
+/**
+ * The engine's side of one producer — a method's output or an interface's reading channel: it
+ * numbers samples, remembers the newest and hands each to every subscriber (input slots, command
+ * channels, control clients). Subscribers must not block.
+ */
+final class OutputPort {
+
+    private final String producer;
+    private final List<Consumer<Sample>> subscribers = new CopyOnWriteArrayList<>();
+    private final AtomicLong sequence = new AtomicLong();
+    private volatile Sample latest;
+
+    OutputPort(String producer) {
+        this.producer = producer;
+    }
+
+    String producer() {
+        return producer;
+    }
+
+    void subscribe(Consumer<Sample> subscriber) {
+        subscribers.add(subscriber);
+    }
+
+    void unsubscribe(Consumer<Sample> subscriber) {
+        subscribers.remove(subscriber);
+    }
+
+    /** Makes a sample of {@code payload} and hands it to every subscriber. */
+    Sample publish(Payload payload, long sourceMicros, boolean stale) {
+        Sample s = new Sample(payload, producer, sequence.incrementAndGet(), sourceMicros, stale);
+        latest = s;
+        for (Consumer<Sample> sub : subscribers) {
+            sub.accept(s);
+        }
+        return s;
+    }
+
+    Sample latest() {
+        return latest;
+    }
+
+    long published() {
+        return sequence.get();
+    }
+}

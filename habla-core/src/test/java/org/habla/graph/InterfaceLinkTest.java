@@ -1,0 +1,200 @@
+package org.habla.graph;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.OptionalInt;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import org.habla.config.ChannelRef;
+import org.habla.config.Expose;
+import org.habla.config.HablaConfig;
+import org.habla.config.InterfaceConfig;
+import org.habla.config.Limits;
+import org.habla.config.MethodConfig;
+import org.habla.config.Reconnect;
+import org.habla.config.Safety;
+import org.habla.config.Source;
+import org.habla.config.StatusConfig;
+import org.habla.driver.InterfaceAddress;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.net.ControlPoint;
+import org.habla.plugin.NoParams;
+import org.habla.sample.NumberValue;
+import org.habla.sample.Sample;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/** The hardware side of the engine against a robot on loopback: reconnecting, staleness, the watchdog. */
+@Timeout(60)
+class InterfaceLinkTest {
+
+    private final List<AutoCloseable> toClose = new ArrayList<>();
+
+    @AfterEach
+    void closeAll() throws Exception {
+        for (int i = toClose.size() - 1; i >= 0; i--) {
+            toClose.get(i).close();
+        }
+    }
+
+    /** Sensing: @robot.value → s → p → v (exposed). Acting: control → cmd (virtual) → fwd → act → @robot.motor. */
+    private MethodGraph start(int port, long watchdogMs) {
+        MethodConfig s = new MethodConfig("s", "add-one-sensor", Layer.SENSORS_ACTUATORS,
+                Map.of("in", new Source.Channel("robot", "value")), Map.of(), new NoParams(), Optional.empty(),
+                Optional.empty());
+        MethodConfig p = new MethodConfig("p", "add-one-processing", Layer.PROCESSING,
+                Map.of("in", new Source.MethodOutput("s", "out")), Map.of(), new NoParams(), Optional.empty(),
+                Optional.empty());
+        MethodConfig v = new MethodConfig("v", "add-one-virtual", Layer.VIRTUAL,
+                Map.of("in", new Source.MethodOutput("p", "out")), Map.of(), new NoParams(),
+                Optional.of(new Expose("v", "127.0.0.1", 7001)), Optional.empty());
+        MethodConfig cmd = new MethodConfig("cmd", "command-virtual", Layer.VIRTUAL,
+                Map.of("in", new Source.Control()), Map.of(), new NoParams(),
+                Optional.of(new Expose("cmd", "127.0.0.1", 7002)), Optional.empty());
+        MethodConfig fwd = new MethodConfig("fwd", "forward-processing", Layer.PROCESSING,
+                Map.of("in", new Source.MethodOutput("cmd", "out")), Map.of(), new NoParams(), Optional.empty(),
+                Optional.empty());
+        MethodConfig act = new MethodConfig("act", "forward-actuator", Layer.SENSORS_ACTUATORS,
+                Map.of("in", new Source.MethodOutput("fwd", "out")), Map.of("out", new ChannelRef("robot", "motor")),
+                new NoParams(), Optional.empty(), Optional.empty());
+        InterfaceConfig robot = new InterfaceConfig("robot", "lines-test",
+                new InterfaceAddress("127.0.0.1", OptionalInt.of(port)), new NoParams(),
+                new Reconnect(50, 200, 1_000, 5_000));
+        HablaConfig config = new HablaConfig("link-test", Limits.DEFAULTS, new Safety(watchdogMs),
+                new StatusConfig("127.0.0.1", 0), List.of(robot), List.of(s, p, v, cmd, fwd, act));
+        MethodGraph g = MethodGraph.build(config, TestMethods.registry(), EngineClock.system());
+        toClose.add(g);
+        g.start();
+        return g;
+    }
+
+    private static ControlPoint point(MethodGraph g, String name) {
+        return g.controlPoints().stream().filter(x -> x.name().equals(name)).findFirst().orElseThrow();
+    }
+
+    private static final class Recorder implements ControlPoint.Listener {
+        final BlockingQueue<Sample> samples = new LinkedBlockingQueue<>();
+        final BlockingQueue<Boolean> staleness = new LinkedBlockingQueue<>();
+
+        @Override
+        public void onSample(Output<?> output, Sample sample) {
+            samples.add(sample);
+        }
+
+        @Override
+        public void onStale(boolean stale, String why) {
+            staleness.add(stale);
+        }
+    }
+
+    private static void write(ControlPoint p, double value) throws ControlPoint.Rejected {
+        p.write(p.controlInputs().get(0), new NumberValue(value));
+    }
+
+    @Test
+    void anActionWrittenByControlArrivesAtTheRobotAsACommand() throws Exception {
+        FakeLineRobot robot = new FakeLineRobot(0);
+        toClose.add(robot);
+        MethodGraph g = start(robot.port(), 0);
+        assertThat(robot.awaitClient(5_000)).isTrue();
+        write(point(g, "cmd"), 0.25);
+        assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.25");
+    }
+
+    @Test
+    void theWatchdogStopsTheRobotWhenControlGoesSilentAndDropsLateCommands() throws Exception {
+        FakeLineRobot robot = new FakeLineRobot(0);
+        toClose.add(robot);
+        MethodGraph g = start(robot.port(), 300);
+        assertThat(robot.awaitClient(5_000)).isTrue();
+        long t0 = System.nanoTime();
+        write(point(g, "cmd"), 0.5);
+        assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.5");
+        assertThat(robot.next(5_000)).isEqualTo("stop");
+        long tookMs = (System.nanoTime() - t0) / 1_000_000;
+        assertThat(tookMs).isGreaterThanOrEqualTo(250);
+        JsonNode w = g.status().path("watchdog");
+        assertThat(w.path("tripped").asBoolean()).isTrue();
+        assertThat(w.path("trips").asLong()).isEqualTo(1);
+        // A new control value lifts the stop.
+        write(point(g, "cmd"), 0.1);
+        assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.1");
+    }
+
+    @Test
+    void aDisconnectingDriverStopsTheRobotAtOnce() throws Exception {
+        FakeLineRobot robot = new FakeLineRobot(0);
+        toClose.add(robot);
+        MethodGraph g = start(robot.port(), 0);
+        assertThat(robot.awaitClient(5_000)).isTrue();
+        write(point(g, "cmd"), 0.5);
+        assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.5");
+        point(g, "cmd").writerLeft();
+        assertThat(robot.next(2_000)).isEqualTo("stop");
+    }
+
+    @Test
+    void aRobotKilledAndRestartedIsReconnectedWithStaleThenFreshData() throws Exception {
+        FakeLineRobot robot = new FakeLineRobot(0);
+        int port = robot.port();
+        MethodGraph g = start(port, 0);
+        Recorder rec = new Recorder();
+        point(g, "v").subscribe(rec);
+        assertThat(robot.awaitClient(5_000)).isTrue();
+        assertThat(rec.staleness.poll(5, TimeUnit.SECONDS)).isFalse();
+        robot.send("value 1");
+        Sample fresh = rec.samples.poll(5, TimeUnit.SECONDS);
+        assertThat(fresh.payload()).isEqualTo(new NumberValue(4));
+        assertThat(fresh.stale()).isFalse();
+
+        robot.close();
+        assertThat(rec.staleness.poll(5, TimeUnit.SECONDS)).isTrue();
+        assertThat(point(g, "v").stale()).isTrue();
+        // While the robot is away, a motion command is dropped, not queued.
+        write(point(g, "cmd"), 0.7);
+        long end = System.nanoTime() + 5_000_000_000L;
+        while (g.status().path("interfaces").get(0).path("commandsDropped").asLong() == 0 && System.nanoTime() < end) {
+            Thread.sleep(10);
+        }
+        assertThat(g.status().path("interfaces").get(0).path("commandsDropped").asLong()).isEqualTo(1);
+
+        FakeLineRobot again = new FakeLineRobot(port);
+        toClose.add(again);
+        assertThat(again.awaitClient(5_000)).isTrue();
+        assertThat(rec.staleness.poll(5, TimeUnit.SECONDS)).isFalse();
+        again.send("value 2");
+        Sample after = rec.samples.poll(5, TimeUnit.SECONDS);
+        assertThat(after.payload()).isEqualTo(new NumberValue(5));
+        assertThat(after.stale()).isFalse();
+        // The command sent while the robot was away never arrives late.
+        assertThat(again.next(300)).isNull();
+        JsonNode link = g.status().path("interfaces").get(0);
+        assertThat(link.path("connections").get(0).path("connects").asLong()).isEqualTo(2);
+    }
+
+    @Test
+    void malformedReadingsAreCountedAndTheLinkStaysUp() throws Exception {
+        FakeLineRobot robot = new FakeLineRobot(0);
+        toClose.add(robot);
+        MethodGraph g = start(robot.port(), 0);
+        Recorder rec = new Recorder();
+        point(g, "v").subscribe(rec);
+        assertThat(robot.awaitClient(5_000)).isTrue();
+        robot.send("value not-a-number");
+        robot.send("nosuchchannel 3");
+        robot.send("value 7");
+        assertThat(rec.samples.poll(5, TimeUnit.SECONDS).payload()).isEqualTo(new NumberValue(10));
+        JsonNode link = g.status().path("interfaces").get(0);
+        assertThat(link.path("malformed").asLong()).isEqualTo(1);
+        assertThat(link.path("unknownChannel").asLong()).isEqualTo(1);
+        assertThat(link.path("up").asBoolean()).isTrue();
+    }
+}

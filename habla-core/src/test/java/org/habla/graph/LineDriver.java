@@ -1,0 +1,122 @@
+package org.habla.graph;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.nio.charset.StandardCharsets;
+import java.time.Duration;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+import org.habla.driver.ChannelDescriptor;
+import org.habla.driver.Connection;
+import org.habla.driver.Driver;
+import org.habla.driver.InterfaceAddress;
+import org.habla.driver.LinkSession;
+import org.habla.driver.ReadingSink;
+import org.habla.plugin.DriverProvider;
+import org.habla.plugin.NoParams;
+import org.habla.sample.NumberValue;
+import org.habla.sample.Payload;
+import org.habla.sample.PayloadKind;
+
+/**
+ * A tiny text protocol for engine tests: the robot sends {@code "<channel> <number>\n"}, HABLA sends
+ * {@code "cmd <channel> <number>\n"}, {@code "stop\n"} and {@code "ping\n"}; the handshake is
+ * {@code "hello\n"} → {@code "ready\n"}.
+ */
+final class LineDriver implements Driver {
+
+    private final int port;
+
+    LineDriver(int port) {
+        this.port = port;
+    }
+
+    @Override
+    public List<ChannelDescriptor> channels() {
+        return List.of(ChannelDescriptor.reading("value", PayloadKind.NUMBER, "m"),
+                ChannelDescriptor.command("motor", PayloadKind.NUMBER, "m/s", true));
+    }
+
+    @Override
+    public List<Connection> connections() {
+        return List.of(new Connection("main", port, Set.of("motor"), Session::new));
+    }
+
+    static String readLine(InputStream in) throws IOException {
+        ByteArrayOutputStream b = new ByteArrayOutputStream();
+        for (int c = in.read(); c != '\n'; c = in.read()) {
+            if (c < 0) {
+                throw new java.io.EOFException("robot closed the connection");
+            }
+            b.write(c);
+        }
+        return b.toString(StandardCharsets.UTF_8);
+    }
+
+    static final class Session implements LinkSession {
+        @Override
+        public void handshake(InputStream in, OutputStream out, ReadingSink sink) throws IOException {
+            out.write("hello\n".getBytes(StandardCharsets.UTF_8));
+            out.flush();
+            String reply = readLine(in);
+            if (!reply.equals("ready")) {
+                throw new IOException("expected ready, got " + reply);
+            }
+        }
+
+        @Override
+        public void readNext(InputStream in, ReadingSink sink) throws IOException {
+            String[] parts = readLine(in).split(" ");
+            try {
+                sink.reading(parts[0], new NumberValue(Double.parseDouble(parts[1])));
+            } catch (RuntimeException e) {
+                sink.malformed("bad line: " + String.join(" ", parts));
+            }
+        }
+
+        @Override
+        public void write(String channel, Payload command, OutputStream out) throws IOException {
+            out.write(("cmd " + channel + " " + ((NumberValue) command).value() + "\n").getBytes(StandardCharsets.UTF_8));
+        }
+
+        @Override
+        public Optional<Duration> keepAlivePeriod() {
+            return Optional.of(Duration.ofMillis(200));
+        }
+
+        @Override
+        public void keepAlive(OutputStream out) throws IOException {
+            out.write("ping\n".getBytes(StandardCharsets.UTF_8));
+        }
+
+        @Override
+        public void stopMotion(OutputStream out) throws IOException {
+            out.write("stop\n".getBytes(StandardCharsets.UTF_8));
+        }
+    }
+
+    static final class Provider implements DriverProvider<NoParams> {
+        @Override
+        public String name() {
+            return "lines-test";
+        }
+
+        @Override
+        public String description() {
+            return "test line protocol";
+        }
+
+        @Override
+        public Class<NoParams> paramsType() {
+            return NoParams.class;
+        }
+
+        @Override
+        public Driver create(InterfaceAddress address, NoParams params) {
+            return new LineDriver(address.portOr(1));
+        }
+    }
+}

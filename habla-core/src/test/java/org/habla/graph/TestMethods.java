@@ -1,0 +1,159 @@
+package org.habla.graph;
+
+import java.time.Duration;
+import java.util.List;
+import java.util.Set;
+import org.habla.method.Delivery;
+import org.habla.method.Input;
+import org.habla.method.Layer;
+import org.habla.method.Method;
+import org.habla.method.Output;
+import org.habla.method.ProcessingMethod;
+import org.habla.method.SensorActuatorMethod;
+import org.habla.method.VirtualMethod;
+import org.habla.plugin.MethodProvider;
+import org.habla.plugin.NoParams;
+import org.habla.plugin.PluginRegistry;
+import org.habla.sample.NumberValue;
+import org.habla.sample.Sample;
+
+/** Small real methods for engine tests: a doubling chain, a slow method, a ticking counter. */
+final class TestMethods {
+
+    private TestMethods() {
+    }
+
+    /** Adds one to every number; queue delivery so nothing is conflated. */
+    static final class AddOneSensor extends SensorActuatorMethod {
+        final Output<NumberValue> out = output("out", NumberValue.class);
+        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(4096), this::on);
+
+        private void on(NumberValue v, Sample s) {
+            emit(out, new NumberValue(v.value() + 1));
+        }
+    }
+
+    static final class AddOneProcessing extends ProcessingMethod {
+        final Output<NumberValue> out = output("out", NumberValue.class);
+        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(4096), this::on);
+
+        private void on(NumberValue v, Sample s) {
+            emit(out, new NumberValue(v.value() + 1));
+        }
+    }
+
+    static final class AddOneVirtual extends VirtualMethod {
+        final Output<NumberValue> out = output("out", NumberValue.class);
+        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(4096), this::on);
+
+        private void on(NumberValue v, Sample s) {
+            emit(out, new NumberValue(v.value() + 1));
+        }
+    }
+
+    /** Takes a value from control and sends it down as a command. */
+    static final class CommandVirtual extends VirtualMethod {
+        final Output<NumberValue> out = output("out", NumberValue.class);
+        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(64), this::on);
+
+        private void on(NumberValue v, Sample s) {
+            emit(out, v);
+        }
+    }
+
+    static final class ForwardProcessing extends ProcessingMethod {
+        final Output<NumberValue> out = output("out", NumberValue.class);
+        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(64), this::on);
+
+        private void on(NumberValue v, Sample s) {
+            emit(out, v);
+        }
+    }
+
+    static final class ForwardActuator extends SensorActuatorMethod {
+        final Output<NumberValue> out = output("out", NumberValue.class);
+        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(64), this::on);
+
+        private void on(NumberValue v, Sample s) {
+            emit(out, v);
+        }
+    }
+
+    /** Spends a long time on every sample, as speech recognition would (busy, not sleeping). */
+    static final class SlowProcessing extends ProcessingMethod {
+        final Output<NumberValue> out = output("out", NumberValue.class);
+        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.latest(), this::on);
+
+        private void on(NumberValue v, Sample s) {
+            long until = System.nanoTime() + 2_000_000_000L;
+            while (System.nanoTime() < until) {
+                Thread.onSpinWait();
+            }
+            emit(out, v);
+        }
+    }
+
+    /** Emits a running count on every tick. */
+    static final class Ticker extends ProcessingMethod {
+        final Output<NumberValue> count = output("count", NumberValue.class);
+        private int n;
+
+        Ticker() {
+            tickEvery(Duration.ofMillis(100));
+        }
+
+        @Override
+        protected void onTick(long nowMicros) {
+            emit(count, new NumberValue(++n));
+        }
+    }
+
+    /** Throws on a negative number. */
+    static final class Fragile extends ProcessingMethod {
+        final Output<NumberValue> out = output("out", NumberValue.class);
+        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(16), this::on);
+
+        private void on(NumberValue v, Sample s) {
+            if (v.value() < 0) {
+                throw new IllegalArgumentException("negative");
+            }
+            emit(out, v);
+        }
+    }
+
+    record Simple(String name, Layer layer, java.util.function.Supplier<Method> make) implements MethodProvider<NoParams> {
+        @Override
+        public String description() {
+            return "test method " + name;
+        }
+
+        @Override
+        public Set<Layer> layers() {
+            return Set.of(layer);
+        }
+
+        @Override
+        public Class<NoParams> paramsType() {
+            return NoParams.class;
+        }
+
+        @Override
+        public Method create(Layer l, NoParams params) {
+            return make.get();
+        }
+    }
+
+    static PluginRegistry registry() {
+        return PluginRegistry.of(List.of(
+                new Simple("add-one-sensor", Layer.SENSORS_ACTUATORS, AddOneSensor::new),
+                new Simple("add-one-processing", Layer.PROCESSING, AddOneProcessing::new),
+                new Simple("add-one-virtual", Layer.VIRTUAL, AddOneVirtual::new),
+                new Simple("command-virtual", Layer.VIRTUAL, CommandVirtual::new),
+                new Simple("forward-processing", Layer.PROCESSING, ForwardProcessing::new),
+                new Simple("forward-actuator", Layer.SENSORS_ACTUATORS, ForwardActuator::new),
+                new Simple("slow", Layer.PROCESSING, SlowProcessing::new),
+                new Simple("ticker", Layer.PROCESSING, Ticker::new),
+                new Simple("fragile", Layer.PROCESSING, Fragile::new)),
+                List.of(new LineDriver.Provider()));
+    }
+}
