@@ -1,0 +1,71 @@
+package org.habla.cli;
+
+import java.io.PrintWriter;
+import java.lang.reflect.RecordComponent;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import java.util.stream.Collectors;
+import org.habla.method.Layer;
+import org.habla.plugin.DriverProvider;
+import org.habla.plugin.MethodProvider;
+import org.habla.plugin.Param;
+import org.habla.plugin.PluginRegistry;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Spec;
+
+/** {@code habla plugins}: every method and driver type on the class path, with layers and parameters. */
+@Command(name = "plugins", mixinStandardHelpOptions = true,
+        description = "List every method type and driver type, with its layers and parameters.")
+public final class PluginsCommand implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
+
+    private final PluginRegistry registry;
+
+    public PluginsCommand() {
+        this(null);
+    }
+
+    public PluginsCommand(PluginRegistry registry) {
+        this.registry = registry;
+    }
+
+    @Override
+    public Integer call() {
+        PluginRegistry r = registry != null ? registry : PluginRegistry.discover(Thread.currentThread().getContextClassLoader());
+        PrintWriter out = spec.commandLine().getOut();
+        out.println("Method types (" + r.methods().size() + "):");
+        for (Map.Entry<String, MethodProvider<?>> e : r.methods().entrySet()) {
+            MethodProvider<?> p = e.getValue();
+            String layers = p.layers().stream().sorted().map(Layer::configName).collect(Collectors.joining(", "));
+            out.println("  " + e.getKey() + "  [" + layers + "]  " + p.description());
+            printParams(out, p.paramsType());
+        }
+        out.println();
+        out.println("Driver types (" + r.drivers().size() + "):");
+        for (Map.Entry<String, DriverProvider<?>> e : r.drivers().entrySet()) {
+            out.println("  " + e.getKey() + "  " + e.getValue().description());
+            printParams(out, e.getValue().paramsType());
+        }
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    private static void printParams(PrintWriter out, Class<? extends Record> params) {
+        for (RecordComponent c : params.getRecordComponents()) {
+            Param doc = c.getAnnotation(Param.class);
+            StringBuilder line = new StringBuilder("      ").append(c.getName()).append(": ")
+                    .append(c.getGenericType().getTypeName().replaceAll("[a-z]+\\.", ""));
+            if (doc != null) {
+                if (!doc.unit().isEmpty()) {
+                    line.append(" [").append(doc.unit()).append(']');
+                }
+                line.append(doc.defaultValue().isEmpty() ? " (required)" : " = " + doc.defaultValue());
+                line.append("  ").append(doc.value());
+            }
+            out.println(line);
+        }
+    }
+}

@@ -1,0 +1,101 @@
+package org.habla.cli;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.io.PrintWriter;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/** {@code habla status}: reads a running daemon's status endpoint and prints it as tables (or JSON). */
+@Command(name = "status", mixinStandardHelpOptions = true,
+        description = "Show a running daemon's methods, links, sockets and the watchdog.")
+public final class StatusCommand implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
+
+    @Option(names = "--host", defaultValue = "127.0.0.1", description = "The daemon's host (default ${DEFAULT-VALUE}).")
+    private String host;
+
+    @Option(names = "--port", defaultValue = "7099", description = "The status port (default ${DEFAULT-VALUE}).")
+    private int port;
+
+    @Option(names = "--json", description = "Print the raw JSON snapshot.")
+    private boolean json;
+
+    @Override
+    public Integer call() {
+        PrintWriter out = spec.commandLine().getOut();
+        PrintWriter err = spec.commandLine().getErr();
+        JsonNode status;
+        try (Socket s = new Socket()) {
+            s.connect(new InetSocketAddress(host, port), 2_000);
+            s.setSoTimeout(5_000);
+            BufferedReader in = new BufferedReader(new InputStreamReader(s.getInputStream(), StandardCharsets.UTF_8));
+            String line = in.readLine();
+            if (line == null) {
+                err.println("habla status: the daemon at " + host + ":" + port + " closed without a status line");
+                return ExitCodes.RUNTIME_FAILURE;
+            }
+            status = new ObjectMapper().readTree(line);
+        } catch (IOException e) {
+            err.println("habla status: no daemon status at " + host + ":" + port + " (" + e.getMessage() + ")");
+            return ExitCodes.RUNTIME_FAILURE;
+        }
+        if (json) {
+            out.println(status.toPrettyString());
+        } else {
+            print(status, out);
+        }
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    static void print(JsonNode st, PrintWriter out) {
+        JsonNode w = st.path("watchdog");
+        out.printf(Locale.ROOT, "system %s, up %.0f s, watchdog %s (%d trips, timeout %d ms)%n",
+                st.path("system").asText(), st.path("uptimeS").asDouble(),
+                w.path("tripped").asBoolean() ? "TRIPPED" : "ok", w.path("trips").asLong(), w.path("timeoutMs").asLong());
+        out.println();
+        out.printf(Locale.ROOT, "%-14s %-10s %-6s %9s %9s %9s%n", "INTERFACE", "DRIVER", "LINK", "MALFORMED", "SENT",
+                "DROPPED");
+        for (JsonNode i : st.path("interfaces")) {
+            out.printf(Locale.ROOT, "%-14s %-10s %-6s %9d %9d %9d%n", i.path("id").asText(), i.path("driver").asText(),
+                    i.path("up").asBoolean() ? "up" : "DOWN", i.path("malformed").asLong(),
+                    i.path("commandsSent").asLong(), i.path("commandsDropped").asLong());
+        }
+        out.println();
+        out.printf(Locale.ROOT, "%-22s %-17s %-8s %-5s %10s %8s %9s %9s %8s%n", "METHOD", "LAYER", "STATE", "STALE",
+                "HANDLED", "PER S", "P50 US", "P99 US", "DROPS");
+        for (JsonNode m : st.path("methods")) {
+            long drops = 0;
+            for (JsonNode in : m.path("inputs")) {
+                drops += in.path("dropped").asLong();
+            }
+            String state = m.path("state").asText() + (m.path("ready").asBoolean(true) ? "" : "*");
+            out.printf(Locale.ROOT, "%-22s %-17s %-8s %-5s %10d %8.1f %9s %9s %8d%n", m.path("id").asText(),
+                    m.path("layer").asText(), state, m.path("stale").asBoolean() ? "yes" : "no",
+                    m.path("handled").asLong(), m.path("handledPerS").asDouble(),
+                    m.path("latency").path("p50Us").asText("-"), m.path("latency").path("p99Us").asText("-"), drops);
+        }
+        if (st.has("sockets")) {
+            out.println();
+            out.printf(Locale.ROOT, "%-18s %6s %8s %10s %8s%n", "SOCKET", "PORT", "CLIENTS", "LINES OUT", "DROPS");
+            for (JsonNode s : st.path("sockets")) {
+                out.printf(Locale.ROOT, "%-18s %6d %8d %10d %8d%n", s.path("name").asText(), s.path("port").asInt(),
+                        s.path("clients").asInt(), s.path("linesOut").asLong(), s.path("dropped").asLong());
+            }
+        }
+        out.println("(* = not ready yet)");
+    }
+}
