@@ -1,0 +1,125 @@
+"""A small client for HABLA's control sockets, in Python 3 with the standard library only.
+
+Every exposed method of a HABLA daemon has its own TCP port. On connect the daemon sends a hello
+line describing the method; then it streams one JSON object per line. A line may declare
+"bytes": N, in which case N raw bytes (audio, images) follow its newline.
+
+    from habla_client import ControlSocket
+    with ControlSocket("127.0.0.1", 7002) as s:
+        print(s.hello["outputs"])
+        sample = s.next_sample(timeout=2.0)
+        print(sample["value"])
+    with ControlSocket("127.0.0.1", 7004) as action:
+        action.write("forward")
+"""
+
+import json
+import socket
+import time
+
+
+class ControlError(Exception):
+    """The daemon answered with an error line."""
+
+    def __init__(self, line):
+        super().__init__("%s: %s" % (line.get("code"), line.get("message")))
+        self.code = line.get("code")
+        self.line = line
+
+
+class ControlSocket:
+    """One connection to one method's control socket."""
+
+    def __init__(self, host, port, timeout=5.0, max_line=1 << 20):
+        self._sock = socket.create_connection((host, port), timeout=timeout)
+        self._buf = b""
+        self._max_line = max_line
+        self.events = []  # stale / dropped / error lines seen while waiting for samples
+        self.hello = self.read_line(timeout)
+        if self.hello is None:
+            raise ConnectionError("the daemon closed the connection before its hello")
+        if self.hello.get("type") == "error":
+            raise ControlError(self.hello)
+        if self.hello.get("type") != "hello":
+            raise ConnectionError("expected a hello line, got %r" % (self.hello,))
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def close(self):
+        try:
+            self._sock.close()
+        except OSError:
+            pass
+
+    def _fill(self, deadline):
+        remaining = deadline - time.monotonic()
+        if remaining <= 0:
+            raise socket.timeout("timed out")
+        self._sock.settimeout(remaining)
+        chunk = self._sock.recv(65536)
+        if not chunk:
+            return False
+        self._buf += chunk
+        return True
+
+    def read_line(self, timeout=5.0):
+        """The next line as a dict (with its binary block under "_bytes"), or None at end of stream."""
+        deadline = time.monotonic() + timeout
+        while b"\n" not in self._buf:
+            if len(self._buf) > self._max_line:
+                raise ValueError("line longer than %d bytes" % self._max_line)
+            if not self._fill(deadline):
+                return None
+        line, self._buf = self._buf.split(b"\n", 1)
+        obj = json.loads(line.decode("utf-8"))
+        n = obj.get("bytes")
+        if isinstance(n, int) and n > 0:
+            while len(self._buf) < n:
+                if not self._fill(deadline):
+                    return None
+            obj["_bytes"], self._buf = self._buf[:n], self._buf[n:]
+        return obj
+
+    def next_sample(self, timeout=5.0):
+        """The next sample line; other lines (stale, dropped, errors) are kept in self.events."""
+        deadline = time.monotonic() + timeout
+        while True:
+            line = self.read_line(max(0.0, deadline - time.monotonic()))
+            if line is None:
+                return None
+            if line.get("type") == "sample":
+                return line
+            self.events.append(line)
+
+    def send(self, obj):
+        """Sends one request line."""
+        self._sock.sendall((json.dumps(obj) + "\n").encode("utf-8"))
+
+    def write(self, value, input_name=None, request_id=None):
+        """Writes a value to the method's control input (the only one, unless input_name names it)."""
+        req = {"op": "write", "value": value}
+        if input_name is not None:
+            req["input"] = input_name
+        if request_id is not None:
+            req["id"] = request_id
+        self.send(req)
+
+    def request(self, obj, timeout=5.0):
+        """Sends a request with an id and waits for its ok or error line."""
+        rid = obj.setdefault("id", int(time.monotonic() * 1e6))
+        self.send(obj)
+        deadline = time.monotonic() + timeout
+        while True:
+            line = self.read_line(max(0.0, deadline - time.monotonic()))
+            if line is None:
+                raise ConnectionError("closed while waiting for the answer to %r" % (obj,))
+            if line.get("id") == rid:
+                if line.get("type") == "error":
+                    raise ControlError(line)
+                return line
+            if line.get("type") != "sample":
+                self.events.append(line)
