@@ -21,16 +21,20 @@ final class ExposedMethod implements ControlPoint {
     private final Expose expose;
     private final List<Input<?>> controlInputs;
     private final MotionWatchdog watchdog;
+    private final GraphTap tap;
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     private final Map<String, Long> controlSequences = new HashMap<>();
 
-    ExposedMethod(MethodRunner runner, Expose expose, List<Input<?>> controlInputs, MotionWatchdog watchdog) {
+    ExposedMethod(MethodRunner runner, Expose expose, List<Input<?>> controlInputs, MotionWatchdog watchdog,
+            GraphTap tap) {
         this.runner = runner;
         this.expose = expose;
         this.controlInputs = List.copyOf(controlInputs);
         this.watchdog = watchdog;
+        this.tap = tap;
         for (Output<?> out : runner.method().outputs()) {
             runner.port(out).subscribe(sample -> {
+                tap.output(runner.id(), out.name(), sample);
                 for (Listener l : listeners) {
                     l.onSample(out, sample);
                 }
@@ -117,6 +121,7 @@ final class ExposedMethod implements ControlPoint {
         }
         watchdog.controlWrite();
         Sample sample = new Sample(value, "control:" + expose.name(), seq, runner.nowMicros(), false);
+        tap.control(expose.name(), input.name(), sample);
         if (!runner.slot(input).offer(sample)) {
             throw new Rejected("queue_full", "input '" + input.name() + "' of " + runner.id()
                     + " is full (" + input.delivery().capacity() + " waiting); value dropped");

@@ -32,8 +32,8 @@ final class InterfaceLink {
     private static final Logger LOG = LoggerFactory.getLogger(InterfaceLink.class);
 
     private final InterfaceConfig config;
-    private final Driver driver;
     private final EngineClock clock;
+    private final GraphTap tap;
     private final Map<String, ChannelDescriptor> channels = new HashMap<>();
     private final Map<String, OutputPort> readings = new HashMap<>();
     private final Map<String, ConnectionLink> commandRoutes = new HashMap<>();
@@ -48,10 +48,10 @@ final class InterfaceLink {
     private volatile boolean up;
     private AutoCloseable linkTicker;
 
-    InterfaceLink(InterfaceConfig config, Driver driver, EngineClock clock) {
+    InterfaceLink(InterfaceConfig config, Driver driver, EngineClock clock, GraphTap tap) {
         this.config = config;
-        this.driver = driver;
         this.clock = clock;
+        this.tap = tap;
         for (ChannelDescriptor c : driver.channels()) {
             channels.put(c.name(), c);
         }
@@ -128,13 +128,16 @@ final class InterfaceLink {
         }
         MotionWatchdog w = watchdog;
         if (d.motion() && w != null && !w.allowsMotion()) {
+            tap.command(config.id(), channel, sample, false);
             drop(channel, "the motion watchdog has stopped the robot");
             return;
         }
         if (!link.command(channel, sample.payload())) {
+            tap.command(config.id(), channel, sample, false);
             drop(channel, "link " + config.id() + "/" + link.connection().name() + " is down");
             return;
         }
+        tap.command(config.id(), channel, sample, true);
         commandsSent.increment();
     }
 
@@ -169,6 +172,7 @@ final class InterfaceLink {
         boolean all = connections.stream().allMatch(ConnectionLink::up);
         if (all != up) {
             up = all;
+            tap.link(config.id(), all, clock.nowMicros());
             publishLink();
             for (Consumer<Boolean> l : stateListeners) {
                 l.accept(all);
@@ -228,7 +232,7 @@ final class InterfaceLink {
                         + d.kind().wireName());
                 return;
             }
-            port.publish(value, sourceMicros, false);
+            tap.reading(config.id(), channel, port.publish(value, sourceMicros, false));
         }
 
         @Override

@@ -56,7 +56,10 @@ public final class MethodGraph implements AutoCloseable {
     private AutoCloseable watchdogTicker;
     private boolean started;
 
-    private MethodGraph(HablaConfig config, PluginRegistry registry, EngineClock clock) {
+    private final GraphTap tap;
+
+    private MethodGraph(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap) {
+        this.tap = tap;
         this.config = config;
         this.clock = clock;
         this.startedMicros = clock.nowMicros();
@@ -68,7 +71,7 @@ public final class MethodGraph implements AutoCloseable {
                     return t;
                 });
         for (InterfaceConfig ic : config.interfaces()) {
-            links.put(ic.id(), new InterfaceLink(ic, createDriver(registry, ic), clock));
+            links.put(ic.id(), new InterfaceLink(ic, createDriver(registry, ic), clock, tap));
         }
         this.watchdog = new MotionWatchdog(config.safety().watchdogMs(), clock, List.copyOf(links.values()));
         links.values().forEach(l -> l.watchdog(watchdog));
@@ -88,7 +91,12 @@ public final class MethodGraph implements AutoCloseable {
 
     /** Builds the graph of a checked config. Nothing runs until {@link #start()}. */
     public static MethodGraph build(HablaConfig config, PluginRegistry registry, EngineClock clock) {
-        return new MethodGraph(config, registry, clock);
+        return new MethodGraph(config, registry, clock, GraphTap.NONE);
+    }
+
+    /** Builds the graph with a tap that sees everything crossing its edges (for recording). */
+    public static MethodGraph build(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap) {
+        return new MethodGraph(config, registry, clock, tap);
     }
 
     @SuppressWarnings({"unchecked", "rawtypes"})
@@ -132,7 +140,7 @@ public final class MethodGraph implements AutoCloseable {
             runner.port(out).subscribe(sample -> link.command(channel, sample));
         }
         mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner,
-                x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog)));
+                x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap)));
     }
 
     private Set<String> upstream(String methodId, Set<String> visited) {

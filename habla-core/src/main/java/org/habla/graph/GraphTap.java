@@ -1,0 +1,49 @@
+package org.habla.graph;
+
+import org.habla.sample.Sample;
+
+/**
+ * Sees everything that crosses the graph's edges — readings from the hardware, commands to it,
+ * values from control clients, link changes and the outputs of exposed methods — for recording.
+ * Called on engine threads: implementations must not block (hand off to a queue of their own).
+ */
+public interface GraphTap {
+
+    /** A reading decoded from an interface channel. */
+    void reading(String interfaceId, String channel, Sample sample);
+
+    /** A command written (or dropped) on an interface channel. */
+    void command(String interfaceId, String channel, Sample sample, boolean sent);
+
+    /** A value a control client wrote to an exposed method's input. */
+    void control(String socket, String input, Sample sample);
+
+    /** An interface link went up or down. */
+    void link(String interfaceId, boolean up, long micros);
+
+    /** A sample emitted by an exposed method. */
+    void output(String methodId, String output, Sample sample);
+
+    /** The tap that sees nothing. */
+    GraphTap NONE = new GraphTap() {
+        @Override
+        public void reading(String interfaceId, String channel, Sample sample) {
+        }
+
+        @Override
+        public void command(String interfaceId, String channel, Sample sample, boolean sent) {
+        }
+
+        @Override
+        public void control(String socket, String input, Sample sample) {
+        }
+
+        @Override
+        public void link(String interfaceId, boolean up, long micros) {
+        }
+
+        @Override
+        public void output(String methodId, String output, Sample sample) {
+        }
+    };
+}
