@@ -311,7 +311,8 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
     private void markFailed(String what, Throwable e) {
         state = MethodState.FAILED;
         failure = "failed to " + what + ": " + e;
-        LOG.error("method {} ({}) FAILED to {}: {}", id(), getClass().getSimpleName(), what, e.toString(), e);
+        LOG.error("method {} ({}) FAILED to {}: {}", id(), getClass().getSimpleName(), what, e.toString());
+        LOG.debug("method {} failure trace", id(), e);
     }
 
     private MethodContext context() {
