@@ -30,8 +30,8 @@ public final class ArcosPacketDecoder {
     private int end;
     /** Bytes skipped while hunting that are not yet reported. */
     private int skipped;
-    /** True after a bad packet until the next good one: the bytes skipped meanwhile are its remains. */
-    private boolean recovering;
+    /** Bytes still claimed by the last bad packet: skipping them is part of that packet's report. */
+    private int shadow;
     private long packets;
     private long dropped;
 
@@ -82,7 +82,8 @@ public final class ArcosPacketDecoder {
             }
             int count = buf[start + 2] & 0xFF;
             if (count < ArcosPacket.MIN_COUNT || count > ArcosPacket.MAX_COUNT) {
-                reject(listener, "ARCOS byte count " + count + " is outside " + ArcosPacket.MIN_COUNT + ".."
+                // its length is unknown: it may claim as many bytes as the largest packet
+                reject(listener, ArcosPacket.MAX_COUNT + 2, "ARCOS byte count " + count + " is outside " + ArcosPacket.MIN_COUNT + ".."
                         + ArcosPacket.MAX_COUNT);
                 continue;
             }
@@ -93,14 +94,14 @@ public final class ArcosPacketDecoder {
             int sent = ((buf[start + 3 + dataLength] & 0xFF) << 8) | (buf[start + 4 + dataLength] & 0xFF);
             int computed = ArcosPacket.checksum(buf, start + 3, dataLength);
             if (sent != computed) {
-                reject(listener, String.format("ARCOS checksum 0x%04X does not match the computed 0x%04X (type 0x%02X, count %d)",
+                reject(listener, 2 + count, String.format("ARCOS checksum 0x%04X does not match the computed 0x%04X (type 0x%02X, count %d)",
                         sent, computed, buf[start + 3] & 0xFF, count));
                 continue;
             }
             byte[] data = new byte[dataLength];
             System.arraycopy(buf, start + 3, data, 0, dataLength);
             start += 3 + count;
-            recovering = false;
+            shadow = 0;
             packets++;
             listener.packet(ArcosPacket.wrap(data));
         }
@@ -113,26 +114,34 @@ public final class ArcosPacketDecoder {
                 reportSkipped(listener);
                 return true;
             }
-            start++;
-            skipped++;
+            skip();
         }
         if (end - start == 1 && (buf[start] & 0xFF) != ArcosPacket.HEADER_1) {
-            start++;
-            skipped++;
+            skip();
         }
         return false;
     }
 
-    private void reject(Listener listener, String why) {
+    private void skip() {
+        start++;
+        if (shadow > 0) {
+            shadow--;
+        } else {
+            skipped++;
+        }
+    }
+
+    /** Drops the 0xFA at {@code start}; the {@code claimed} bytes after it are the bad packet's. */
+    private void reject(Listener listener, int claimed, String why) {
         reportSkipped(listener);
         start++;
-        recovering = true;
+        shadow = claimed;
         dropped++;
         listener.malformed(why);
     }
 
     private void reportSkipped(Listener listener) {
-        if (skipped > 0 && !recovering) {
+        if (skipped > 0) {
             dropped++;
             listener.malformed(skipped + " byte(s) of garbage before an ARCOS header");
         }

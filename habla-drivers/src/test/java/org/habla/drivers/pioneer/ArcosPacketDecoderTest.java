@@ -91,6 +91,16 @@ class ArcosPacketDecoderTest {
     }
 
     @Test
+    void garbageAfterABadPacketIsReportedApartFromIt() {
+        byte[] bad = CapturedSip.wire();
+        bad[10] ^= 0x01;
+        push(concat(bad, Hex.bytes("01 02 03"), PULSE));
+        assertThat(packets).containsExactly(ArcosCommand.PULSE.packet());
+        assertThat(malformed).hasSize(2);
+        assertThat(malformed.get(1)).contains("3 byte(s) of garbage");
+    }
+
+    @Test
     void aByteCountOverTwoHundredIsRejectedWithoutSwallowingWhatFollows() {
         push(concat(Hex.bytes("FA FB C9 32 00 00"), PULSE));
         assertThat(packets).containsExactly(ArcosCommand.PULSE.packet());
