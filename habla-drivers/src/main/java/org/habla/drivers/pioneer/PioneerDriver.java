@@ -1,0 +1,37 @@
+package org.habla.drivers.pioneer;
+
+import java.util.List;
+import java.util.Objects;
+import java.util.Set;
+import org.habla.driver.ChannelDescriptor;
+import org.habla.driver.Connection;
+import org.habla.driver.Driver;
+import org.habla.driver.InterfaceAddress;
+
+/** A Pioneer reached over one ARCOS TCP connection: a simulator's port, or a serial-to-TCP bridge. */
+public final class PioneerDriver implements Driver {
+
+    /** The port MobileSim and AMRISim serve the first robot on. */
+    public static final int DEFAULT_PORT = 8101;
+
+    private final int port;
+    private final PioneerParams params;
+    private final List<ChannelDescriptor> channels;
+
+    public PioneerDriver(InterfaceAddress address, PioneerParams params) {
+        this.port = address.portOr(DEFAULT_PORT);
+        this.params = Objects.requireNonNull(params, "params");
+        this.channels = PioneerChannels.describe(params);
+    }
+
+    @Override
+    public List<ChannelDescriptor> channels() {
+        return channels;
+    }
+
+    @Override
+    public List<Connection> connections() {
+        return List.of(new Connection("arcos", port, Set.of(PioneerChannels.MOTION, PioneerChannels.SONAR_POWER),
+                () -> new ArcosSession(params)));
+    }
+}

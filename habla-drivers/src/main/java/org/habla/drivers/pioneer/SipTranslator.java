@@ -1,0 +1,129 @@
+package org.habla.drivers.pioneer;
+
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import org.habla.driver.ReadingSink;
+import org.habla.sample.NumberValue;
+import org.habla.sample.RecordValue;
+import org.habla.sample.VectorValue;
+
+/**
+ * Turns the SIPs of one session into readings in SI units: keeps odometry continuous across the
+ * position roll-over and merges partial sonar updates into one full ring. One per session, used by the
+ * session's reader only.
+ */
+final class SipTranslator {
+
+    private final PioneerParams params;
+    private final RollingPosition x = new RollingPosition();
+    private final RollingPosition y = new RollingPosition();
+    private final SonarRing sonar;
+    private volatile RobotIdentity identity = RobotIdentity.UNKNOWN;
+    private long ignoredPackets;
+
+    SipTranslator(PioneerParams params) {
+        this.params = params;
+        this.sonar = new SonarRing(params.sonarCount(), params.maxRangeM());
+    }
+
+    /** Who the robot said it is in the handshake; shown in {@code status}. */
+    void identity(RobotIdentity id) {
+        identity = id;
+    }
+
+    /** The count of non-SIP packets the session has ignored, shown in {@code status}. */
+    void ignoredPackets(long count) {
+        ignoredPackets = count;
+    }
+
+    /** Emits every reading {@code sip} carries. */
+    void translate(StandardSip sip, ReadingSink sink) {
+        sink.reading(PioneerChannels.ODOMETRY, odometry(sip));
+        sink.reading(PioneerChannels.BATTERY, new NumberValue(batteryV(sip)));
+        sink.reading(PioneerChannels.BUMPERS, bumpers(sip));
+        sink.reading(PioneerChannels.STALL, RecordValue.builder()
+                .put("left", sip.leftStalled()).put("right", sip.rightStalled()).build());
+        sink.reading(PioneerChannels.STATUS, status(sip));
+        if (!sip.sonar().isEmpty()) {
+            for (StandardSip.SonarReading r : sip.sonar()) {
+                if (!sonar.put(r.index(), r.range() * params.rangeConvFactor() / 1000.0)) {
+                    sink.malformed("sonar index " + r.index() + " is not one of this robot's 0.." + (sonar.size() - 1));
+                }
+            }
+            sonar.endUpdate();
+            if (sonar.ready()) {
+                sink.reading(PioneerChannels.SONAR, VectorValue.wrap(sonar.snapshot()));
+            }
+        }
+    }
+
+    private RecordValue odometry(StandardSip sip) {
+        double mPerUnit = params.distConvFactor() / 1000.0;
+        double leftMps = sip.leftVel() * params.velConvFactor() / 1000.0;
+        double rightMps = sip.rightVel() * params.velConvFactor() / 1000.0;
+        double wRadps = sip.rotVelDdegps().isPresent()
+                ? Math.toRadians(sip.rotVelDdegps().getAsInt() / 10.0)
+                : (sip.rightVel() - sip.leftVel()) / 2.0 * params.velConvFactor() * params.diffConvFactor();
+        return RecordValue.builder()
+                .put("xM", x.update(sip.xPos()) * mPerUnit)
+                .put("yM", y.update(sip.yPos()) * mPerUnit)
+                .put("thetaRad", normalise(sip.thPos() * params.angleConvFactor()))
+                .put("vMps", (leftMps + rightMps) / 2.0)
+                .put("wRadps", wRadps)
+                .put("leftMps", leftMps)
+                .put("rightMps", rightMps)
+                .build();
+    }
+
+    private static double batteryV(StandardSip sip) {
+        int dv = sip.batteryX10().isPresent() && sip.batteryX10().getAsInt() > 0 ? sip.batteryX10().getAsInt() : sip.batteryDv();
+        return dv / 10.0;
+    }
+
+    private RecordValue bumpers(StandardSip sip) {
+        ArrayNode front = JsonNodeFactory.instance.arrayNode();
+        ArrayNode rear = JsonNodeFactory.instance.arrayNode();
+        boolean frontHit = false;
+        boolean rearHit = false;
+        for (int i = 0; i < params.frontBumpers(); i++) {
+            front.add(sip.frontBumper(i));
+            frontHit |= sip.frontBumper(i);
+        }
+        for (int i = 0; i < params.rearBumpers(); i++) {
+            rear.add(sip.rearBumper(i));
+            rearHit |= sip.rearBumper(i);
+        }
+        return RecordValue.builder().set("front", front).set("rear", rear)
+                .put("frontHit", frontHit).put("rearHit", rearHit).build();
+    }
+
+    private RecordValue status(StandardSip sip) {
+        RobotIdentity id = identity;
+        RecordValue.Builder b = RecordValue.builder()
+                .put("motorsEnabled", sip.motorsEnabled())
+                .put("sonarOn", (sip.flags() & 0x1E) != 0)
+                .put("stopButton", (sip.flags() & 0x20) != 0)
+                .put("eStall", (sip.flags() & 0x40) != 0)
+                .put("moving", sip.moving())
+                .put("flags", sip.flags())
+                .put("robotName", id.name())
+                .put("robotClass", id.robotClass())
+                .put("robotSubclass", id.subclass())
+                .put("ignoredPackets", ignoredPackets);
+        sip.chargeState().ifPresent(v -> b.put("chargeState", v));
+        sip.faultFlags().ifPresent(v -> b.put("faultFlags", v));
+        sip.temperatureC().ifPresent(v -> {
+            if (v != -127) {
+                b.put("temperatureC", v);
+            }
+        });
+        sip.stateOfCharge().ifPresent(v -> b.put("stateOfChargePct", v));
+        return b.build();
+    }
+
+    /** The angle in (-π, π]. */
+    static double normalise(double rad) {
+        double r = Math.IEEEremainder(rad, 2 * Math.PI);
+        return r <= -Math.PI ? r + 2 * Math.PI : r;
+    }
+}
