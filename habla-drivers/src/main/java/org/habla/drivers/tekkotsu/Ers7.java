@@ -44,6 +44,8 @@ final class Ers7 {
     static final int B_ACCEL = 3;
     static final int L_ACCEL = 4;
     static final int D_ACCEL = 5;
+    static final int POWER_REMAIN = 6;
+    static final int POWER_VOLTAGE = 9;
 
     /** The infrared sensors: name, range limits in metres. */
     static final List<String> IR_NAMES = List.of("near", "far", "chest");

@@ -29,6 +29,7 @@ final class WorldStateSession implements LinkSession {
     private boolean decodedAny;
     private boolean outOfStep;
     private boolean infoSent;
+    private long batteryPercent = -1;
 
     @Override
     public void readNext(InputStream in, ReadingSink sink) throws IOException {
@@ -62,14 +63,27 @@ final class WorldStateSession implements LinkSession {
             return;
         }
         decodedAny = true;
+        reportInfo(packet, sink);
+        publish(packet, sink);
+    }
+
+    /** The model once, and the battery whenever its whole percentage changes (the robot updates it rarely). */
+    private void reportInfo(WorldStatePacket packet, ReadingSink sink) {
+        float[] s = packet.sensors();
+        long percent = Math.round(s[Ers7.POWER_REMAIN] * 100.0);
+        if (infoSent && percent == batteryPercent) {
+            return;
+        }
+        ObjectNode info = JsonNodeFactory.instance.objectNode();
         if (!infoSent) {
-            infoSent = true;
-            ObjectNode info = JsonNodeFactory.instance.objectNode();
             info.put("model", packet.model());
             info.put("worldStateLayout", "Tekkotsu 4.0+");
-            sink.robotInfo(info);
+            infoSent = true;
         }
-        publish(packet, sink);
+        batteryPercent = percent;
+        info.put("batteryPercent", percent);
+        info.put("batteryVoltageV", (double) s[Ers7.POWER_VOLTAGE]);
+        sink.robotInfo(info);
     }
 
     /** The pre-4.0 layout starts with a timestamp and then NumPIDJoints = 18 (bytes 12 00 00 00). */

@@ -54,6 +54,8 @@ class WorldStateSessionTest {
         assertThat(buttons.number("wirelessSwitch")).as("clamped to 1").isEqualTo(1.0);
         assertThat(sink.info).hasSize(1);
         assertThat(sink.info.get(0).get("model").asText()).isEqualTo("ERS-7");
+        assertThat(sink.info.get(0).get("batteryPercent").asLong()).isEqualTo(80);
+        assertThat(sink.info.get(0).get("batteryVoltageV").asDouble()).isEqualTo((double) 8.2f);
     }
 
     @Test
@@ -66,6 +68,7 @@ class WorldStateSessionTest {
         assertThat(sink.on("ir")).hasSize(2).allSatisfy(v ->
                 assertThat(((VectorValue) v).toArray()).containsExactly(0.234, 0.876, 0.432));
         assertThat(sink.malformed).isEmpty();
+        assertThat(sink.info).as("the status is told once while nothing changes").hasSize(1);
     }
 
     @Test
