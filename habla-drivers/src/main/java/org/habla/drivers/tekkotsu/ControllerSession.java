@@ -104,7 +104,7 @@ final class ControllerSession implements LinkSession {
                 info.put("controllerHellos", Long.parseLong(message.get(1).strip()));
             } catch (NumberFormatException e) {
                 sink.malformed("the Tekkotsu controller answered hello with '"
-                        + EStopSession.abbreviate(message.get(1)) + "', not a count");
+                        + LineReader.abbreviate(message.get(1)) + "', not a count");
                 return;
             }
         } else {

@@ -49,7 +49,8 @@ final class EStopSession implements LinkSession {
             info.put("eStop", text);
             sink.robotInfo(info);
         } else if (!text.isEmpty()) {
-            sink.malformed("the emergency-stop control sent '" + abbreviate(text) + "', expected 'on' or 'off'");
+            sink.malformed("the emergency-stop control sent '" + LineReader.abbreviate(text)
+                    + "', expected 'on' or 'off'");
         }
     }
 
@@ -60,9 +61,5 @@ final class EStopSession implements LinkSession {
 
     private static void send(OutputStream out, String command) throws IOException {
         out.write((command + "\n").getBytes(StandardCharsets.US_ASCII));
-    }
-
-    static String abbreviate(String text) {
-        return text.length() <= 60 ? text : text.substring(0, 60) + "…";
     }
 }

@@ -2,8 +2,8 @@ package org.habla.drivers.tekkotsu;
 
 import java.io.EOFException;
 import java.io.IOException;
-import java.io.InputStream;
 import java.io.ByteArrayOutputStream;
+import java.io.InputStream;
 import java.net.SocketTimeoutException;
 import java.nio.charset.StandardCharsets;
 import java.util.Optional;
@@ -55,5 +55,10 @@ final class LineReader {
                 overflowed = true;
             }
         }
+    }
+
+    /** At most 60 characters of {@code text}, for messages about bad input. */
+    static String abbreviate(String text) {
+        return text.length() <= 60 ? text : text.substring(0, 60) + "…";
     }
 }
