@@ -45,7 +45,8 @@ public record TekkotsuParams(
         Boolean camera,
         @Param(value = "Port of the raw camera server.", defaultValue = "10011")
         Integer cameraPort,
-        @Param(value = "Resolution skip the raw camera is set to (0 = 416x320, 1 = 208x160, 2 = 104x80, 3 = 52x40, 4 = 26x20).",
+        @Param(value = "Resolution skip the raw camera is set to "
+                + "(0 = 416x320, 1 = 208x160, 2 = 104x80, 3 = 52x40, 4 = 26x20).",
                 defaultValue = "2")
         Integer cameraSkip,
         @Param(value = "Height of the camera above the floor when standing.", unit = "m", defaultValue = "0.2")

@@ -72,7 +72,8 @@ class WalkSessionTest {
     @Test
     void badWalkCommandsAreRejectedWithoutWritingAByte() {
         assertThatThrownBy(() -> session.write("walk", VectorValue.of(0.1, 0), out))
-                .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("[forwardMps, strafeMps, rotateRadps]");
+                .isInstanceOf(IllegalArgumentException.class)
+                .hasMessageContaining("[forwardMps, strafeMps, rotateRadps]");
         assertThatThrownBy(() -> session.write("walk", VectorValue.of(Double.NaN, 0, 0), out))
                 .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("finite");
         assertThatThrownBy(() -> session.write("walk", new TextValue("go"), out))
