@@ -1,0 +1,88 @@
+package org.habla.drivers.tekkotsu;
+
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+import org.habla.driver.ChannelDescriptor;
+import org.habla.driver.Connection;
+import org.habla.driver.Driver;
+
+/**
+ * The driver of a Sony Aibo ERS-7 running Tekkotsu: one connection per Tekkotsu server the params
+ * switch on, each with its own session. A channel is offered only when its server's connection is.
+ *
+ * <pre>
+ * connection   port   channels
+ * worldstate   10031  ir, buttons, joints, head (reading), accel
+ * walk         10050  walk (command, motion)
+ * head         10052  head (command)
+ * estop        10053  -   (releases the emergency stop; engages it on goodbye)
+ * microphone   10070  audio
+ * speaker      10071  speaker (command)
+ * camera       10011  camera (raw camera over TCP)
+ * controller   10020  -   (switches the other servers on)
+ * </pre>
+ */
+final class TekkotsuDriver implements Driver {
+
+    private final List<ChannelDescriptor> channels;
+    private final List<Connection> connections;
+
+    TekkotsuDriver(TekkotsuParams p) {
+        List<ChannelDescriptor> ch = new ArrayList<>();
+        List<Connection> conn = new ArrayList<>();
+        if (p.worldState()) {
+            ch.addAll(TekkotsuChannels.worldState());
+            conn.add(new Connection("worldstate", p.worldStatePort(), Set.of(), WorldStateSession::new));
+        }
+        if (p.microphone()) {
+            ch.add(TekkotsuChannels.microphone());
+            conn.add(new Connection("microphone", p.microphonePort(), Set.of(), MicrophoneSession::new));
+        }
+        if (p.camera()) {
+            ch.add(TekkotsuChannels.camera(p.cameraSkip(), p.cameraHeightM()));
+            conn.add(new Connection("camera", p.cameraPort(), Set.of(), RawCamSession::new));
+        }
+        if (p.walk()) {
+            ch.add(TekkotsuChannels.walk(p));
+            WalkSession.WalkLimits limits = new WalkSession.WalkLimits(p.maxForwardMps(), p.maxReverseMps(),
+                    p.maxStrafeMps(), p.maxRotateRadps());
+            Duration resend = Duration.ofMillis(p.walkResendMs());
+            conn.add(new Connection("walk", p.walkPort(), Set.of(TekkotsuChannels.WALK),
+                    () -> new WalkSession(limits, resend)));
+        }
+        if (p.head()) {
+            ch.add(TekkotsuChannels.headCommand());
+            conn.add(new Connection("head", p.headPort(), Set.of(TekkotsuChannels.HEAD), HeadSession::new));
+        }
+        if (p.speaker()) {
+            ch.add(TekkotsuChannels.speaker(p.speakerRateHz()));
+            int rate = p.speakerRateHz();
+            conn.add(new Connection("speaker", p.speakerPort(), Set.of(TekkotsuChannels.SPEAKER),
+                    () -> new SpeakerSession(rate)));
+        }
+        if (p.eStop()) {
+            boolean release = p.releaseEStop();
+            conn.add(new Connection("estop", p.eStopPort(), Set.of(), () -> new EStopSession(release)));
+        }
+        if (p.controller()) {
+            List<String> commands = ControllerSession.startCommands(p.startServers(),
+                    p.camera() ? Optional.of(p.cameraSkip()) : Optional.empty());
+            conn.add(new Connection("controller", p.controllerPort(), Set.of(), () -> new ControllerSession(commands)));
+        }
+        this.channels = List.copyOf(ch);
+        this.connections = List.copyOf(conn);
+    }
+
+    @Override
+    public List<ChannelDescriptor> channels() {
+        return channels;
+    }
+
+    @Override
+    public List<Connection> connections() {
+        return connections;
+    }
+}

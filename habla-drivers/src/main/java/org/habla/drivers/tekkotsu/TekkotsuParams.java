@@ -1,0 +1,192 @@
+package org.habla.drivers.tekkotsu;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import org.habla.plugin.Param;
+
+/**
+ * The params of a {@code tekkotsu} interface: which of the Aibo's Tekkotsu servers to open and on
+ * which ports, the walk's maximum speeds, and what to switch on through the controller.
+ */
+public record TekkotsuParams(
+        @Param(value = "Open the World State Serializer (joints, ir, accel, buttons, head).", defaultValue = "true")
+        Boolean worldState,
+        @Param(value = "Port of the World State Serializer.", defaultValue = "10031")
+        Integer worldStatePort,
+        @Param(value = "Open the walk remote control (the walk command channel).", defaultValue = "true")
+        Boolean walk,
+        @Param(value = "Port of the walk remote control.", defaultValue = "10050")
+        Integer walkPort,
+        @Param(value = "Open the head remote control (the head command channel).", defaultValue = "true")
+        Boolean head,
+        @Param(value = "Port of the head remote control.", defaultValue = "10052")
+        Integer headPort,
+        @Param(value = "Open the emergency-stop control.", defaultValue = "true")
+        Boolean eStop,
+        @Param(value = "Port of the emergency-stop control.", defaultValue = "10053")
+        Integer eStopPort,
+        @Param(value = "Send 'start' to the emergency-stop control on connecting (the robot boots stopped).",
+                defaultValue = "true")
+        Boolean releaseEStop,
+        @Param(value = "Open the microphone server (the audio channel).", defaultValue = "true")
+        Boolean microphone,
+        @Param(value = "Port of the microphone server.", defaultValue = "10070")
+        Integer microphonePort,
+        @Param(value = "Open the speaker server (the speaker command channel).", defaultValue = "true")
+        Boolean speaker,
+        @Param(value = "Port of the speaker server.", defaultValue = "10071")
+        Integer speakerPort,
+        @Param(value = "Sample rate sent to the speaker server; other rates are resampled.", unit = "Hz",
+                defaultValue = "16000")
+        Integer speakerRateHz,
+        @Param(value = "Open the raw camera server over TCP (the camera channel).", defaultValue = "true")
+        Boolean camera,
+        @Param(value = "Port of the raw camera server.", defaultValue = "10011")
+        Integer cameraPort,
+        @Param(value = "Resolution skip the raw camera is set to "
+                + "(0 = 416x320, 1 = 208x160, 2 = 104x80, 3 = 52x40, 4 = 26x20).",
+                defaultValue = "2")
+        Integer cameraSkip,
+        @Param(value = "Height of the camera above the floor when standing.", unit = "m", defaultValue = "0.2")
+        Double cameraHeightM,
+        @Param(value = "Open the controller (menu) server to switch the other servers on.", defaultValue = "true")
+        Boolean controller,
+        @Param(value = "Port of the controller (menu) server.", defaultValue = "10020")
+        Integer controllerPort,
+        @Param(value = "Menu items to switch on through the controller; default: the items of the servers "
+                + "opened above, under their Tekkotsu 4.0 and 5.x names.", defaultValue = "")
+        List<String> startServers,
+        @Param(value = "Walk speed at forward fraction 1.", unit = "m/s", defaultValue = "0.18")
+        Double maxForwardMps,
+        @Param(value = "Walk speed at forward fraction -1.", unit = "m/s", defaultValue = "0.18")
+        Double maxReverseMps,
+        @Param(value = "Walk speed at strafe fraction 1.", unit = "m/s", defaultValue = "0.14")
+        Double maxStrafeMps,
+        @Param(value = "Turn rate at rotate fraction 1.", unit = "rad/s", defaultValue = "1.8")
+        Double maxRotateRadps,
+        @Param(value = "How often the standing walk command is re-sent (the robot stops after 3 s without one).",
+                unit = "ms", defaultValue = "1000")
+        Integer walkResendMs) {
+
+    public TekkotsuParams {
+        worldState = orDefault(worldState, true);
+        worldStatePort = port("worldStatePort", worldStatePort, 10_031);
+        walk = orDefault(walk, true);
+        walkPort = port("walkPort", walkPort, 10_050);
+        head = orDefault(head, true);
+        headPort = port("headPort", headPort, 10_052);
+        eStop = orDefault(eStop, true);
+        eStopPort = port("eStopPort", eStopPort, 10_053);
+        releaseEStop = orDefault(releaseEStop, true);
+        microphone = orDefault(microphone, true);
+        microphonePort = port("microphonePort", microphonePort, 10_070);
+        speaker = orDefault(speaker, true);
+        speakerPort = port("speakerPort", speakerPort, 10_071);
+        speakerRateHz = speakerRateHz == null ? 16_000 : speakerRateHz;
+        if (speakerRateHz < 1_000 || speakerRateHz > 65_535) {
+            throw new IllegalArgumentException("speakerRateHz must be in 1000..65535 Hz, was " + speakerRateHz);
+        }
+        camera = orDefault(camera, true);
+        cameraPort = port("cameraPort", cameraPort, 10_011);
+        cameraSkip = cameraSkip == null ? 2 : cameraSkip;
+        if (cameraSkip < 0 || cameraSkip > 4) {
+            throw new IllegalArgumentException("cameraSkip must be in 0..4, was " + cameraSkip);
+        }
+        cameraHeightM = positive("cameraHeightM", cameraHeightM, 0.2);
+        controller = orDefault(controller, true);
+        controllerPort = port("controllerPort", controllerPort, 10_020);
+        maxForwardMps = positive("maxForwardMps", maxForwardMps, 0.18);
+        maxReverseMps = positive("maxReverseMps", maxReverseMps, 0.18);
+        maxStrafeMps = positive("maxStrafeMps", maxStrafeMps, 0.14);
+        maxRotateRadps = positive("maxRotateRadps", maxRotateRadps, 1.8);
+        walkResendMs = walkResendMs == null ? 1_000 : walkResendMs;
+        if (walkResendMs < 100 || walkResendMs > 2_500) {
+            throw new IllegalArgumentException("walkResendMs must be in 100..2500 ms (below the robot's 3 s "
+                    + "dead-man time-out), was " + walkResendMs);
+        }
+        if (startServers != null && startServers.contains(null)) {
+            throw new IllegalArgumentException("startServers must not contain null");
+        }
+        startServers = startServers == null ? defaultServers(worldState, walk, head, microphone, speaker, camera)
+                : List.copyOf(startServers);
+        for (String name : startServers) {
+            if (name.isBlank() || name.contains("\"") || name.contains("\n") || name.contains("\\")) {
+                throw new IllegalArgumentException("startServers entry '" + name
+                        + "' must be a menu item name without quotes, backslashes or line breaks");
+            }
+        }
+        checkDistinctPorts(List.of(new PortUse(worldState, "worldStatePort", worldStatePort),
+                new PortUse(walk, "walkPort", walkPort), new PortUse(head, "headPort", headPort),
+                new PortUse(eStop, "eStopPort", eStopPort),
+                new PortUse(microphone, "microphonePort", microphonePort),
+                new PortUse(speaker, "speakerPort", speakerPort), new PortUse(camera, "cameraPort", cameraPort),
+                new PortUse(controller, "controllerPort", controllerPort)));
+    }
+
+    /** Every default. */
+    public static TekkotsuParams defaults() {
+        return new TekkotsuParams(null, null, null, null, null, null, null, null, null, null, null, null, null,
+                null, null, null, null, null, null, null, null, null, null, null, null, null);
+    }
+
+    /** The menu items of the enabled servers: Tekkotsu 4.0 names, then the 5.x names where they differ. */
+    private static List<String> defaultServers(boolean worldState, boolean walk, boolean head, boolean microphone,
+            boolean speaker, boolean camera) {
+        List<String> names = new ArrayList<>();
+        if (worldState) {
+            names.add("World State Serializer");
+        }
+        if (walk) {
+            names.addAll(List.of("Walk Remote Control", "WalkController"));
+        }
+        if (head) {
+            names.addAll(List.of("Head Remote Control", "HeadController"));
+        }
+        if (microphone) {
+            names.add("Microphone Server");
+        }
+        if (speaker) {
+            names.add("Speaker Server");
+        }
+        if (camera) {
+            names.addAll(List.of("Raw Cam Server", "RawCam"));
+        }
+        return List.copyOf(names);
+    }
+
+    private record PortUse(boolean on, String name, int port) {
+    }
+
+    private static void checkDistinctPorts(List<PortUse> uses) {
+        Map<Integer, String> used = new HashMap<>();
+        for (PortUse u : uses) {
+            String other = u.on ? used.putIfAbsent(u.port, u.name) : null;
+            if (other != null) {
+                throw new IllegalArgumentException(u.name + " and " + other + " are both " + u.port
+                        + "; each server needs its own port");
+            }
+        }
+    }
+
+    private static boolean orDefault(Boolean value, boolean otherwise) {
+        return value == null ? otherwise : value;
+    }
+
+    private static int port(String name, Integer value, int otherwise) {
+        int p = value == null ? otherwise : value;
+        if (p < 1 || p > 65_535) {
+            throw new IllegalArgumentException(name + " must be in 1..65535, was " + p);
+        }
+        return p;
+    }
+
+    private static double positive(String name, Double value, double otherwise) {
+        double v = value == null ? otherwise : value;
+        if (!(v > 0) || Double.isInfinite(v)) {
+            throw new IllegalArgumentException(name + " must be a positive number, was " + v);
+        }
+        return v;
+    }
+}

@@ -1,0 +1,43 @@
+package org.habla.drivers.tekkotsu;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import org.habla.driver.ReadingSink;
+import org.habla.sample.Payload;
+
+/** A sink that keeps everything a session reports, for tests; safe to read from another thread. */
+final class RecordingSink implements ReadingSink {
+
+    record Reading(String channel, Payload value) {
+    }
+
+    final List<Reading> readings = new CopyOnWriteArrayList<>();
+    final List<String> malformed = new CopyOnWriteArrayList<>();
+    final List<ObjectNode> info = new CopyOnWriteArrayList<>();
+
+    @Override
+    public void reading(String channel, Payload value) {
+        readings.add(new Reading(channel, value));
+    }
+
+    @Override
+    public void reading(String channel, Payload value, long sourceMicros) {
+        readings.add(new Reading(channel, value));
+    }
+
+    @Override
+    public void malformed(String what) {
+        malformed.add(what);
+    }
+
+    @Override
+    public void robotInfo(ObjectNode node) {
+        info.add(node);
+    }
+
+    /** The values read on {@code channel}, in order. */
+    List<Payload> on(String channel) {
+        return readings.stream().filter(r -> r.channel().equals(channel)).map(Reading::value).toList();
+    }
+}
