@@ -29,7 +29,11 @@ public interface LinkSession {
      */
     void readNext(InputStream in, ReadingSink sink) throws IOException;
 
-    /** Encodes a command for one of this connection's command channels. */
+    /**
+     * Encodes a command for one of this connection's command channels. A command that cannot be encoded
+     * (a wrong length, NaN) is refused with an {@link IllegalArgumentException} before any byte is written:
+     * the engine drops and counts it and the link stays up. An {@link IOException} ends the connection.
+     */
     default void write(String channel, Payload command, OutputStream out) throws IOException {
         throw new IOException("this connection carries no command channel '" + channel + "'");
     }

@@ -232,8 +232,12 @@ final class ConnectionLink {
             action.write(s, o);
             o.flush();
             return true;
+        } catch (IllegalArgumentException e) {
+            // The session refused to encode this command before writing a byte: drop it, keep the link.
+            LOG.warn("link {}: {} refused: {}", name, what, e.getMessage());
+            return false;
         } catch (IOException | RuntimeException e) {
-            LOG.warn("link {}: {} failed: {}", name, what, e.toString());
+            LOG.warn("link {}: {} failed, reconnecting: {}", name, what, e.toString());
             closeSocket();
             return false;
         } finally {

@@ -14,6 +14,7 @@ final class TekkotsuChannels {
     static final String BUTTONS = "buttons";
     static final String JOINTS = "joints";
     static final String HEAD = "head";
+    static final String HEAD_POSE = "head-pose";
     static final String ACCEL = "accel";
     static final String AUDIO = "audio";
     static final String CAMERA = "camera";
@@ -38,7 +39,7 @@ final class TekkotsuChannels {
                 ChannelDescriptor.reading(IR, PayloadKind.VECTOR, "m").withMetadata(irMetadata()),
                 ChannelDescriptor.reading(BUTTONS, PayloadKind.RECORD, "").withMetadata(buttonMetadata()),
                 ChannelDescriptor.reading(JOINTS, PayloadKind.VECTOR, "rad").withMetadata(names(Ers7.JOINT_NAMES)),
-                ChannelDescriptor.reading(HEAD, PayloadKind.RECORD, "rad").withMetadata(headLimits()),
+                ChannelDescriptor.reading(HEAD_POSE, PayloadKind.RECORD, "rad").withMetadata(headLimits()),
                 ChannelDescriptor.reading(ACCEL, PayloadKind.VECTOR, "m/s^2").withMetadata(
                         names(List.of("backward", "left", "down"))));
     }

@@ -102,7 +102,7 @@ final class WorldStateSession implements LinkSession {
             joints[i] = out[i];
         }
         sink.reading(TekkotsuChannels.JOINTS, VectorValue.wrap(joints));
-        sink.reading(TekkotsuChannels.HEAD, RecordValue.builder()
+        sink.reading(TekkotsuChannels.HEAD_POSE, RecordValue.builder()
                 .put("tiltRad", (double) out[Ers7.HEAD_TILT])
                 .put("panRad", (double) out[Ers7.HEAD_PAN])
                 .put("nodRad", (double) out[Ers7.HEAD_NOD])

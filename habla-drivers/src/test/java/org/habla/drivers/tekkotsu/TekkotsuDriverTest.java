@@ -40,7 +40,7 @@ class TekkotsuDriverTest {
         assertThat(channel(d, "ir", Direction.READING).unit()).isEqualTo("m");
         assertThat(channel(d, "buttons", Direction.READING).kind()).isEqualTo(PayloadKind.RECORD);
         assertThat(channel(d, "joints", Direction.READING).unit()).isEqualTo("rad");
-        assertThat(channel(d, "head", Direction.READING).kind()).isEqualTo(PayloadKind.RECORD);
+        assertThat(channel(d, "head-pose", Direction.READING).kind()).isEqualTo(PayloadKind.RECORD);
         assertThat(channel(d, "accel", Direction.READING).kind()).isEqualTo(PayloadKind.VECTOR);
         assertThat(channel(d, "audio", Direction.READING).kind()).isEqualTo(PayloadKind.AUDIO);
         assertThat(channel(d, "camera", Direction.READING).kind()).isEqualTo(PayloadKind.IMAGE);
@@ -83,7 +83,7 @@ class TekkotsuDriverTest {
                 "estop", "controller");
         List<String> names = d.channels().stream().map(c -> c.name() + "/" + c.direction()).toList();
         assertThat(names).doesNotContain("camera/READING", "audio/READING", "head/COMMAND")
-                .contains("head/READING", "walk/COMMAND", "speaker/COMMAND");
+                .contains("head-pose/READING", "walk/COMMAND", "speaker/COMMAND");
         assertThat(p.startServers()).doesNotContain("Raw Cam Server", "Microphone Server", "Head Remote Control");
     }
 }

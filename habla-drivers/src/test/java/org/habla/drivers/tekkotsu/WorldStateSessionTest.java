@@ -35,7 +35,7 @@ class WorldStateSessionTest {
         for (int i = 0; i < 18; i++) {
             assertThat(joints[i]).isEqualTo((double) outputs[i]);
         }
-        RecordValue head = (RecordValue) sink.on("head").get(0);
+        RecordValue head = (RecordValue) sink.on("head-pose").get(0);
         assertThat(head.number("tiltRad")).isEqualTo((double) outputs[12]);
         assertThat(head.number("panRad")).isEqualTo((double) outputs[13]);
         assertThat(head.number("nodRad")).isEqualTo((double) outputs[14]);
@@ -143,7 +143,7 @@ class WorldStateSessionTest {
         session.readNext(in, sink);
 
         assertThat(sink.malformed).hasSize(1).first().asString().contains("model name");
-        assertThat(sink.on("head")).hasSize(1);
+        assertThat(sink.on("head-pose")).hasSize(1);
     }
 
     @Test
