@@ -24,7 +24,8 @@ public final class FrameWriter {
     /** Writes a frame without flushing; a frame with a body gets {@code "bytes"} set to its length. */
     public void write(Frame frame) throws IOException {
         ObjectNode header = frame.header();
-        if (frame.body().length > 0 || frame.hasBody()) {
+        boolean declares = frame.body().length > 0 || frame.hasBody();
+        if (declares && header.path("bytes").asLong(-1) != frame.body().length) {
             header = header.deepCopy().put("bytes", frame.body().length);
         }
         out.write(toLine(header));
