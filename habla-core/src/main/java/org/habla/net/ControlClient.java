@@ -1,0 +1,203 @@
+package org.habla.net;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicBoolean;
+import org.habla.config.Limits;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * One control client's connection: a reader that turns its frames into requests, a writer that drains its
+ * {@link Outbox}, each on its own virtual thread. Whatever goes wrong stays inside: one log line, the
+ * connection closes, the server and the other clients carry on.
+ *
+ * <pre>
+ *   socket in  -&gt; FrameReader -&gt; ControlProtocol -&gt; ControlPoint.write / replies -+
+ *   engine     -&gt; offerSample / offerNotice -----------------------------------&gt; Outbox -&gt; FrameWriter -&gt; socket out
+ * </pre>
+ */
+final class ControlClient implements ControlProtocol.Replies {
+
+    private static final Logger LOG = LoggerFactory.getLogger(ControlClient.class);
+    private static final int REPLY_CAPACITY = 256;
+    /** How long a connection that broke the protocol may take to receive its error line before it is closed. */
+    private static final long LINGER_MS = 2_000;
+
+    private final Socket socket;
+    private final String label;
+    private final ControlPoint point;
+    private final ControlProtocol protocol;
+    private final Limits limits;
+    private final ControlServer.Counters counters;
+    private final Runnable onClosed;
+    private final Outbox outbox;
+    private final AtomicBoolean closed = new AtomicBoolean();
+    private final AtomicBoolean wrote = new AtomicBoolean();
+    private volatile Thread writer;
+
+    ControlClient(Socket socket, String label, ControlPoint point, ControlProtocol protocol, Limits limits,
+            ControlServer.Counters counters, Runnable onClosed) {
+        this.socket = socket;
+        this.label = label;
+        this.point = point;
+        this.protocol = protocol;
+        this.limits = limits;
+        this.counters = counters;
+        this.onClosed = onClosed;
+        this.outbox = new Outbox(limits.clientQueueSamples(), REPLY_CAPACITY);
+        try {
+            outbox.putReply(protocol.hello()); // first in the queue, before any sample; never waits when empty
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    /** Starts the reader and the writer. */
+    void start() {
+        writer = Thread.ofVirtual().name(label + "-writer").start(this::writeLoop);
+        Thread.ofVirtual().name(label + "-reader").start(this::readLoop);
+    }
+
+    void offerSample(String output, Frame frame) {
+        outbox.offerSample(output, frame);
+    }
+
+    void offerNotice(Frame frame) {
+        outbox.offerNotice(frame);
+    }
+
+    long dropped() {
+        return outbox.droppedTotal();
+    }
+
+    @Override
+    public void reply(Frame frame) throws InterruptedException {
+        if (frame.type().equals("error")) {
+            counters.errors.incrementAndGet();
+        }
+        outbox.putReply(frame);
+    }
+
+    @Override
+    public void rate(double maxHz) {
+        outbox.rate(maxHz);
+    }
+
+    @Override
+    public void wrote() {
+        wrote.set(true);
+    }
+
+    private void readLoop() {
+        try {
+            FrameReader reader = new FrameReader(socket.getInputStream(), limits.maxLineBytes(), limits.maxBinaryBytes());
+            while (!closed.get()) {
+                Frame frame;
+                try {
+                    frame = reader.read();
+                } catch (FrameException e) {
+                    reply(ControlProtocol.error(e.code(), e.getMessage(), null));
+                    if (e.fatal()) {
+                        LOG.info("{}: closing after a fatal protocol error: {} {}", label, e.code(), e.getMessage());
+                        closeAfterError();
+                        return;
+                    }
+                    continue;
+                }
+                if (frame == null) {
+                    break;
+                }
+                counters.linesIn.incrementAndGet();
+                protocol.handle(frame, this);
+            }
+        } catch (IOException e) {
+            if (!closed.get()) {
+                LOG.debug("{}: connection lost: {}", label, e.toString());
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (RuntimeException e) {
+            LOG.warn("{}: closing after an unexpected error", label, e);
+        }
+        close();
+    }
+
+    private void writeLoop() {
+        try {
+            FrameWriter out = new FrameWriter(socket.getOutputStream());
+            List<Frame> batch;
+            while ((batch = outbox.take()) != null) {
+                for (Frame f : batch) {
+                    out.write(f);
+                }
+                out.flush();
+                counters.linesOut.addAndGet(batch.size());
+            }
+        } catch (IOException e) {
+            if (!closed.get()) {
+                LOG.debug("{}: cannot write: {}", label, e.toString());
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (RuntimeException e) {
+            LOG.warn("{}: closing after an unexpected error while writing", label, e);
+        }
+        close();
+    }
+
+    /**
+     * Lets the writer send what is queued (the error line), ends our side, and reads away what the peer
+     * still sends for a moment, so the error is not lost to a reset; then closes.
+     */
+    private void closeAfterError() {
+        outbox.finish();
+        try {
+            Thread w = writer;
+            if (w != null && !w.join(java.time.Duration.ofMillis(LINGER_MS))) {
+                close();
+                return;
+            }
+            socket.shutdownOutput();
+            socket.setSoTimeout(200);
+            InputStream in = socket.getInputStream();
+            byte[] sink = new byte[16_384];
+            long until = System.nanoTime() + LINGER_MS * 1_000_000;
+            while (System.nanoTime() < until && in.read(sink) >= 0) {
+                // discard
+            }
+        } catch (SocketTimeoutException e) {
+            // the peer has gone quiet: done
+        } catch (IOException e) {
+            LOG.debug("{}: while closing: {}", label, e.toString());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        close();
+    }
+
+    /** Closes the connection once; tells the engine if this client had written values. */
+    void close() {
+        if (!closed.compareAndSet(false, true)) {
+            return;
+        }
+        outbox.finish();
+        try {
+            socket.close();
+        } catch (IOException e) {
+            LOG.debug("{}: close: {}", label, e.toString());
+        }
+        try {
+            if (wrote.get()) {
+                point.writerLeft();
+            }
+        } catch (RuntimeException e) {
+            LOG.warn("{}: the engine failed on writerLeft", label, e);
+        }
+        onClosed.run();
+        LOG.debug("{}: closed", label);
+    }
+}

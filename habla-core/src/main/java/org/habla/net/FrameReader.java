@@ -1,0 +1,129 @@
+package org.habla.net;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.core.StreamReadFeature;
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.json.JsonMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.EOFException;
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.ByteBuffer;
+import java.nio.charset.CharacterCodingException;
+import java.nio.charset.CodingErrorAction;
+import java.nio.charset.StandardCharsets;
+
+/**
+ * Reads the frames of every HABLA socket (control side, interface protocol, workers): a chain of small
+ * bounded stages, each with its own error code.
+ *
+ * <pre>
+ *   one frame on the wire
+ *   +------------------------------------------------+----+  +-----------------------------+
+ *   | {"type":"sample", ... ,"bytes":N}  (UTF-8 JSON) | \n |  | N raw bytes (only if "bytes")|
+ *   +------------------------------------------------+----+  +-----------------------------+
+ *   |&lt;------------ at most maxLineBytes --------------&gt;|      |&lt;--- 0 &lt;= N &lt;= maxBinaryBytes -&gt;|
+ *                       (a '\r' before '\n' is dropped)
+ *
+ *   InputStream
+ *     -&gt; LineFramer     bounded line          line_too_long (skipped to the next '\n')
+ *     -&gt; UTF-8 decoder  strict                bad_utf8
+ *     -&gt; Jackson        one JSON value        bad_json, not_object
+ *     -&gt; bytes trailer  N raw bytes           bad_bytes; binary_too_large (fatal); truncated (fatal)
+ *     -&gt; Frame(header, body)
+ * </pre>
+ *
+ * Blank lines are skipped (a person typing into {@code nc} may press Enter twice). Recoverable errors
+ * leave the stream at the next frame; after a fatal one the connection must be closed. Not thread-safe.
+ */
+public final class FrameReader {
+
+    /** Parses wire JSON strictly: no trailing tokens, no duplicate keys. */
+    static final ObjectMapper JSON = JsonMapper.builder()
+            .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
+            .enable(StreamReadFeature.STRICT_DUPLICATE_DETECTION)
+            .build();
+
+    private final LineFramer lines;
+    private final int maxBinaryBytes;
+
+    public FrameReader(InputStream in, int maxLineBytes, int maxBinaryBytes) {
+        if (maxBinaryBytes < 0) {
+            throw new IllegalArgumentException("maxBinaryBytes must not be negative, was " + maxBinaryBytes);
+        }
+        this.lines = new LineFramer(in, maxLineBytes);
+        this.maxBinaryBytes = maxBinaryBytes;
+    }
+
+    /**
+     * Reads the next frame.
+     *
+     * @return the frame, or {@code null} at a clean end of stream
+     * @throws FrameException for a frame that breaks the protocol ({@link FrameException#fatal()} says
+     *                        whether the stream can go on)
+     * @throws IOException    if the stream fails
+     */
+    public Frame read() throws IOException {
+        byte[] line;
+        do {
+            line = lines.readLine();
+            if (line == null) {
+                return null;
+            }
+        } while (isBlank(line));
+        ObjectNode header = parse(decode(line));
+        JsonNode count = header.get("bytes");
+        if (count == null) {
+            return Frame.of(header);
+        }
+        if (!count.isIntegralNumber() || !count.canConvertToLong() || count.longValue() < 0) {
+            throw FrameException.recoverable("bad_bytes", "\"bytes\" must be a whole number >= 0, was " + count);
+        }
+        if (count.longValue() > maxBinaryBytes) {
+            throw FrameException.fatal("binary_too_large", "\"bytes\": " + count + " is over maxBinaryBytes="
+                    + maxBinaryBytes + "; the stream cannot be resynchronised");
+        }
+        try {
+            return new Frame(header, lines.readBytes(count.intValue()));
+        } catch (EOFException e) {
+            throw FrameException.fatal("truncated", "the stream ended inside a binary block: " + e.getMessage());
+        }
+    }
+
+    private static String decode(byte[] line) throws FrameException {
+        try {
+            return StandardCharsets.UTF_8.newDecoder()
+                    .onMalformedInput(CodingErrorAction.REPORT)
+                    .onUnmappableCharacter(CodingErrorAction.REPORT)
+                    .decode(ByteBuffer.wrap(line))
+                    .toString();
+        } catch (CharacterCodingException e) {
+            throw FrameException.recoverable("bad_utf8", "the line is not valid UTF-8");
+        }
+    }
+
+    private static ObjectNode parse(String text) throws FrameException {
+        JsonNode node;
+        try {
+            node = JSON.readTree(text);
+        } catch (JsonProcessingException e) {
+            throw FrameException.recoverable("bad_json", "the line is not JSON: " + e.getOriginalMessage());
+        }
+        if (node instanceof ObjectNode object) {
+            return object;
+        }
+        throw FrameException.recoverable("not_object", "a frame must be a JSON object, was "
+                + (node == null ? "nothing" : node.getNodeType().name().toLowerCase(java.util.Locale.ROOT)));
+    }
+
+    private static boolean isBlank(byte[] line) {
+        for (byte b : line) {
+            if (b != ' ' && b != '\t' && b != '\r') {
+                return false;
+            }
+        }
+        return true;
+    }
+}

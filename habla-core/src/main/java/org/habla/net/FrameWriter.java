@@ -1,0 +1,62 @@
+package org.habla.net;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.BufferedOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+
+/**
+ * Writes frames (see {@link FrameReader} for the layout): the header as one compact JSON line, then the
+ * body if there is one, with {@code "bytes"} set to the body's length. Buffered: call {@link #flush} after a
+ * frame or after a batch. Not thread-safe: one writer thread per stream.
+ */
+public final class FrameWriter {
+
+    private static final byte NEWLINE = '\n';
+
+    private final OutputStream out;
+
+    public FrameWriter(OutputStream out) {
+        this.out = new BufferedOutputStream(out, 16_384);
+    }
+
+    /** Writes a frame without flushing; a frame with a body gets {@code "bytes"} set to its length. */
+    public void write(Frame frame) throws IOException {
+        ObjectNode header = frame.header();
+        boolean declares = frame.body().length > 0 || frame.hasBody();
+        if (declares && header.path("bytes").asLong(-1) != frame.body().length) {
+            header = header.deepCopy().put("bytes", frame.body().length);
+        }
+        out.write(toLine(header));
+        out.write(NEWLINE);
+        if (frame.body().length > 0) {
+            out.write(frame.body());
+        }
+    }
+
+    /** Writes a header-only frame without flushing. */
+    public void write(ObjectNode header) throws IOException {
+        write(Frame.of(header));
+    }
+
+    /** Writes a frame and flushes. */
+    public void send(Frame frame) throws IOException {
+        write(frame);
+        flush();
+    }
+
+    /** Writes a header-only frame and flushes. */
+    public void send(ObjectNode header) throws IOException {
+        send(Frame.of(header));
+    }
+
+    public void flush() throws IOException {
+        out.flush();
+    }
+
+    /** The header as the bytes of one line (Jackson writes compact JSON and escapes control characters). */
+    static byte[] toLine(ObjectNode header) throws JsonProcessingException {
+        return FrameReader.JSON.writeValueAsBytes(header);
+    }
+}

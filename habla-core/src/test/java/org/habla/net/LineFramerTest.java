@@ -1,0 +1,79 @@
+package org.habla.net;
+
+import static java.nio.charset.StandardCharsets.UTF_8;
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.io.ByteArrayInputStream;
+import java.io.EOFException;
+import java.io.InputStream;
+import org.junit.jupiter.api.Test;
+
+class LineFramerTest {
+
+    private static LineFramer framer(String text, int max) {
+        return new LineFramer(new ByteArrayInputStream(text.getBytes(UTF_8)), max);
+    }
+
+    private static String line(LineFramer f) throws Exception {
+        byte[] b = f.readLine();
+        return b == null ? null : new String(b, UTF_8);
+    }
+
+    @Test
+    void linesAreReturnedWithoutTheirEndsAndNullAtCleanEof() throws Exception {
+        LineFramer f = framer("one\ntwo\r\n\nthree\n", 100);
+        assertThat(line(f)).isEqualTo("one");
+        assertThat(line(f)).isEqualTo("two");
+        assertThat(line(f)).isEqualTo("");
+        assertThat(line(f)).isEqualTo("three");
+        assertThat(line(f)).isNull();
+    }
+
+    @Test
+    void splitReadsOfOneByteGiveTheSameLines() throws Exception {
+        InputStream in = new TrickleInputStream("alpha\r\nbeta\n".getBytes(UTF_8));
+        LineFramer f = new LineFramer(in, 100);
+        assertThat(line(f)).isEqualTo("alpha");
+        assertThat(line(f)).isEqualTo("beta");
+        assertThat(line(f)).isNull();
+    }
+
+    @Test
+    void anOverlongLineIsSkippedWithARecoverableErrorNamingTheLimit() throws Exception {
+        LineFramer f = framer("x".repeat(50_000) + "\nnext\n", 16);
+        assertThatThrownBy(f::readLine).isInstanceOfSatisfying(FrameException.class, e -> {
+            assertThat(e.code()).isEqualTo("line_too_long");
+            assertThat(e.fatal()).isFalse();
+            assertThat(e.getMessage()).contains("maxLineBytes=16");
+        });
+        assertThat(line(f)).isEqualTo("next");
+    }
+
+    @Test
+    void aLineOfExactlyTheLimitPassesWithOrWithoutCarriageReturn() throws Exception {
+        LineFramer f = framer("abcd\nabcd\r\nabcde\nok\n", 4);
+        assertThat(line(f)).isEqualTo("abcd");
+        assertThat(line(f)).isEqualTo("abcd");
+        assertThatThrownBy(f::readLine).hasFieldOrPropertyWithValue("code", "line_too_long");
+        assertThat(line(f)).isEqualTo("ok");
+    }
+
+    @Test
+    void endOfStreamInsideALineIsFatal() {
+        LineFramer f = framer("{\"type\":", 100);
+        assertThatThrownBy(f::readLine).isInstanceOfSatisfying(FrameException.class, e -> {
+            assertThat(e.code()).isEqualTo("truncated");
+            assertThat(e.fatal()).isTrue();
+        });
+    }
+
+    @Test
+    void rawBytesAfterALineComeFromTheSameBuffer() throws Exception {
+        LineFramer f = framer("head\nBODYtail\n", 100);
+        assertThat(line(f)).isEqualTo("head");
+        assertThat(new String(f.readBytes(4), UTF_8)).isEqualTo("BODY");
+        assertThat(line(f)).isEqualTo("tail");
+        assertThatThrownBy(() -> f.readBytes(1)).isInstanceOf(EOFException.class);
+    }
+}
