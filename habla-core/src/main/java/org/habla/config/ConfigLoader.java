@@ -1,0 +1,170 @@
+package org.habla.config;
+
+import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.JsonParser;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.json.JsonMapper;
+import java.io.IOException;
+import java.nio.charset.CharacterCodingException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Objects;
+import java.util.Optional;
+import java.util.Set;
+import org.habla.plugin.PluginRegistry;
+
+/**
+ * Reads a config file into a {@link HablaConfig}, strictly: unknown keys, wrong types, out-of-range
+ * numbers, unknown types, bad params, dangling references, duplicate ports and layer violations all come
+ * back together in one {@link ConfigException}, each error at its JSON path. See {@code docs/config.md}.
+ */
+public final class ConfigLoader {
+
+    static final Set<String> ROOT_KEYS =
+            Set.of("$schema", "description", "system", "limits", "safety", "status", "interfaces", "methods");
+    static final Set<String> LIMITS_KEYS =
+            Set.of("maxLineBytes", "maxBinaryBytes", "maxClientsPerPort", "clientQueueSamples");
+    static final Set<String> SAFETY_KEYS = Set.of("watchdogMs");
+    static final Set<String> STATUS_KEYS = Set.of("bind", "port");
+    static final Set<String> INTERFACE_KEYS = Set.of("id", "driver", "address", "params", "reconnect");
+    static final Set<String> RECONNECT_KEYS = Set.of("initialMs", "maxMs", "connectTimeoutMs", "readTimeoutMs");
+    static final Set<String> METHOD_KEYS =
+            Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host");
+    static final Set<String> EXPOSE_KEYS = Set.of("port", "name", "bind");
+
+    /** The keys of each fixed object of the format, by where it sits ({@code []} stands for any element). */
+    static final Map<String, Set<String>> KEYS_BY_OBJECT = Map.of(
+            "$", ROOT_KEYS,
+            "$.limits", LIMITS_KEYS,
+            "$.safety", SAFETY_KEYS,
+            "$.status", STATUS_KEYS,
+            "$.interfaces[]", INTERFACE_KEYS,
+            "$.interfaces[].reconnect", RECONNECT_KEYS,
+            "$.methods[]", METHOD_KEYS,
+            "$.methods[].expose", EXPOSE_KEYS);
+
+    /** The largest JSON line a socket may be allowed: 16 MiB. */
+    static final int MAX_LINE_BYTES = 16 * 1024 * 1024;
+    /** The largest binary block a socket may be allowed: 256 MiB. */
+    static final int MAX_BINARY_BYTES = 256 * 1024 * 1024;
+    /** The most clients one port may be allowed. */
+    static final int MAX_CLIENTS_PER_PORT = 1_024;
+    /** The longest queue for one client. */
+    static final int MAX_CLIENT_QUEUE_SAMPLES = 65_536;
+    /** The longest time setting (watchdog, back-off, time-outs): one hour. */
+    static final long MAX_MS = 3_600_000;
+
+    private static final ObjectMapper JSON = JsonMapper.builder()
+            .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION)
+            .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
+            .build();
+
+    private final PluginRegistry registry;
+
+    public ConfigLoader(PluginRegistry registry) {
+        this.registry = Objects.requireNonNull(registry, "registry");
+    }
+
+    /** Reads and checks a config file; I/O errors become an error at {@code $}. */
+    public HablaConfig load(Path file) throws ConfigException {
+        String text;
+        try {
+            text = StandardCharsets.UTF_8.newDecoder().decode(java.nio.ByteBuffer.wrap(Files.readAllBytes(file)))
+                    .toString();
+        } catch (CharacterCodingException e) {
+            throw new ConfigException(List.of(new ConfigError("$", "cannot read " + file + ": not UTF-8 text")));
+        } catch (IOException e) {
+            throw new ConfigException(List.of(new ConfigError("$", "cannot read " + file + ": " + e)));
+        }
+        return parse(text);
+    }
+
+    /** Reads and checks a config given as JSON text. */
+    public HablaConfig parse(String json) throws ConfigException {
+        JsonNode root;
+        try {
+            root = JSON.readTree(json);
+        } catch (JsonProcessingException e) {
+            JsonLocation at = e.getLocation();
+            String where = at == null ? "" : " at line " + at.getLineNr() + ", column " + at.getColumnNr();
+            throw new ConfigException(List.of(new ConfigError("$", "invalid JSON" + where + ": " + e.getOriginalMessage())));
+        }
+        ConfigErrors errors = new ConfigErrors();
+        Optional<HablaConfig> config = read(root, errors);
+        if (!errors.isEmpty() || config.isEmpty()) {
+            throw new ConfigException(errors.sorted());
+        }
+        return config.get();
+    }
+
+    private Optional<HablaConfig> read(JsonNode node, ConfigErrors errors) {
+        if (node == null || node.isMissingNode()) {
+            errors.add(JsonPath.ROOT, "the config is empty: it must be a JSON object");
+            return Optional.empty();
+        }
+        Optional<CheckedObject> read = CheckedObject.of(node, JsonPath.ROOT, errors);
+        if (read.isEmpty()) {
+            return Optional.empty();
+        }
+        CheckedObject root = read.get();
+        root.allowOnly(ROOT_KEYS);
+        root.optionalString("$schema");
+        root.optionalString("description");
+        Optional<String> system = root.requiredString("system");
+        Limits limits = root.object("limits").map(this::limits).orElse(Limits.DEFAULTS);
+        Safety safety = root.object("safety").map(this::safety).orElse(Safety.DEFAULTS);
+        StatusConfig status = root.object("status").map(this::status).orElse(StatusConfig.DEFAULTS);
+
+        EntryReader entries = new EntryReader(registry, errors);
+        List<InterfaceEntry> interfaces = new ArrayList<>();
+        List<JsonNode> interfaceNodes = root.array("interfaces");
+        for (int i = 0; i < interfaceNodes.size(); i++) {
+            interfaces.add(entries.iface(interfaceNodes.get(i), JsonPath.ROOT.field("interfaces").index(i)));
+        }
+        List<MethodEntry> methods = new ArrayList<>();
+        List<JsonNode> methodNodes = root.array("methods");
+        for (int i = 0; i < methodNodes.size(); i++) {
+            methods.add(entries.method(methodNodes.get(i), JsonPath.ROOT.field("methods").index(i)));
+        }
+        new DuplicateCheck(errors).run(status, root.has("status"), interfaces, methods);
+        new WiringCheck(errors, interfaces, methods).run(methods);
+
+        if (!errors.isEmpty() || system.isEmpty()
+                || !interfaces.stream().allMatch(InterfaceEntry::complete)
+                || !methods.stream().allMatch(MethodEntry::complete)) {
+            return Optional.empty();
+        }
+        return Optional.of(new HablaConfig(system.get(), limits, safety, status,
+                interfaces.stream().map(InterfaceEntry::toConfig).toList(),
+                methods.stream().map(MethodEntry::toConfig).toList()));
+    }
+
+    private Limits limits(CheckedObject o) {
+        o.allowOnly(LIMITS_KEYS);
+        Limits d = Limits.DEFAULTS;
+        return new Limits(
+                (int) o.integer("maxLineBytes", d.maxLineBytes(), 1, MAX_LINE_BYTES),
+                (int) o.integer("maxBinaryBytes", d.maxBinaryBytes(), 1, MAX_BINARY_BYTES),
+                (int) o.integer("maxClientsPerPort", d.maxClientsPerPort(), 1, MAX_CLIENTS_PER_PORT),
+                (int) o.integer("clientQueueSamples", d.clientQueueSamples(), 1, MAX_CLIENT_QUEUE_SAMPLES));
+    }
+
+    private Safety safety(CheckedObject o) {
+        o.allowOnly(SAFETY_KEYS);
+        return new Safety(o.integer("watchdogMs", Safety.DEFAULTS.watchdogMs(), 0, MAX_MS));
+    }
+
+    private StatusConfig status(CheckedObject o) {
+        o.allowOnly(STATUS_KEYS);
+        StatusConfig d = StatusConfig.DEFAULTS;
+        return new StatusConfig(o.optionalString("bind").orElse(d.bind()),
+                (int) o.integer("port", d.port(), 0, 65_535));
+    }
+}

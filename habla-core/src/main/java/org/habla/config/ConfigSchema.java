@@ -1,0 +1,228 @@
+package org.habla.config;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.SerializationFeature;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.habla.method.Layer;
+import org.habla.plugin.DriverProvider;
+import org.habla.plugin.MethodProvider;
+import org.habla.plugin.PluginRegistry;
+
+/**
+ * The JSON Schema (draft 2020-12) of HABLA config files, for editors: the fixed structure with its
+ * types, ranges, defaults and descriptions, and for each registered method type and driver type its
+ * params object, selected with {@code if}/{@code then} on {@code type} or {@code driver}. The output
+ * depends only on the registry: every {@code properties} and {@code $defs} object is sorted by key.
+ */
+public final class ConfigSchema {
+
+    private static final JsonNodeFactory NODES = JsonNodeFactory.instance;
+    private static final ObjectMapper JSON = new ObjectMapper().enable(SerializationFeature.INDENT_OUTPUT);
+    private static final String ID_PATTERN = "^" + SourceSyntax.ID.pattern() + "$";
+    private static final String NAME = "[A-Za-z][A-Za-z0-9_-]{0,63}";
+
+    private ConfigSchema() {
+    }
+
+    /** The schema for every type in {@code registry}. */
+    public static ObjectNode generate(PluginRegistry registry) {
+        ObjectNode root = NODES.objectNode();
+        root.put("$schema", "https://json-schema.org/draft/2020-12/schema");
+        root.put("$id", "habla-config.schema.json");
+        root.put("title", "HABLA config");
+        root.put("description", "A HABLA daemon config: the robot's interfaces, the three-layer method graph and "
+                + "the daemon's settings. Checked strictly by `habla check`; see docs/config.md.");
+        root.put("type", "object");
+        root.put("additionalProperties", false);
+        root.putArray("required").add("system");
+        ObjectNode p = root.putObject("properties");
+        p.set("$schema", string("The schema this file follows; ignored by HABLA."));
+        p.set("description", string("Free text about the config; ignored by HABLA."));
+        p.set("system", string("The name of the robot or system this config drives.").put("minLength", 1));
+        p.set("limits", limits());
+        p.set("safety", object("The motion watchdog.")
+                .set("properties", props("watchdogMs", integer(0, ConfigLoader.MAX_MS, Safety.DEFAULTS.watchdogMs(),
+                        "Stop the robot when no control client has written for this long; 0 turns the silence check off [ms]"))));
+        p.set("status", object("The status endpoint read by `habla status`.").set("properties", props(
+                "bind", string("The address to listen on.").put("default", StatusConfig.DEFAULTS.bind()),
+                "port", integer(0, 65_535, StatusConfig.DEFAULTS.port(), "The TCP port; 0 turns the endpoint off."))));
+        p.set("interfaces", NODES.objectNode().put("description", "The robot's interface servers.")
+                .put("type", "array").set("items", ref("interface")));
+        p.set("methods", NODES.objectNode().put("description", "The methods of the graph.")
+                .put("type", "array").set("items", ref("method")));
+
+        ObjectNode defs = root.putObject("$defs");
+        defs.set("id", string("A letter, then up to 63 letters, digits, '_' or '-'.").put("pattern", ID_PATTERN));
+        defs.set("source", string("Where an input's samples come from: \"methodId.output\", "
+                + "\"@interfaceId.channel\" (sensors_actuators layer) or \"control\" (virtual layer).")
+                .put("pattern", "^(control|@?" + NAME + "\\." + NAME + ")$"));
+        defs.set("channel", string("An interface channel: \"@interfaceId.channel\".")
+                .put("pattern", "^@" + NAME + "\\." + NAME + "$"));
+        defs.set("interface", iface(registry));
+        defs.set("method", method(registry));
+        registry.methods().forEach((name, provider) -> defs.set("params.method." + name, params(provider)));
+        registry.drivers().forEach((name, provider) -> defs.set("params.driver." + name, params(provider)));
+        sortKeys(root);
+        return root;
+    }
+
+    /** The schema as pretty-printed JSON text ending with a newline. */
+    public static String text(PluginRegistry registry) {
+        try {
+            return JSON.writeValueAsString(generate(registry)).replace("\r\n", "\n") + "\n";
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("the schema cannot be written", e);
+        }
+    }
+
+    private static ObjectNode limits() {
+        Limits d = Limits.DEFAULTS;
+        return object("The limits every socket enforces.").set("properties", props(
+                "maxLineBytes", integer(1, ConfigLoader.MAX_LINE_BYTES, d.maxLineBytes(),
+                        "The longest JSON line accepted, newline excluded [bytes]"),
+                "maxBinaryBytes", integer(1, ConfigLoader.MAX_BINARY_BYTES, d.maxBinaryBytes(),
+                        "The largest \"bytes\" block accepted after a line [bytes]"),
+                "maxClientsPerPort", integer(1, ConfigLoader.MAX_CLIENTS_PER_PORT, d.maxClientsPerPort(),
+                        "Control clients at once on one method's port"),
+                "clientQueueSamples", integer(1, ConfigLoader.MAX_CLIENT_QUEUE_SAMPLES, d.clientQueueSamples(),
+                        "Samples waiting for one slow client before the oldest are dropped")));
+    }
+
+    private static ObjectNode iface(PluginRegistry registry) {
+        Reconnect d = Reconnect.DEFAULTS;
+        ObjectNode s = withRequired(object("One robot interface: a driver type, where the robot's servers are, "
+                + "the driver's params."), "id", "driver", "address");
+        s.set("properties", props(
+                "id", ref("id").put("description", "The id used in channel references (\"@id.channel\")."),
+                "driver", string("The driver type.").set("enum", strings(registry.drivers().keySet())),
+                "address", string("host or host:port of the robot's main server.").put("minLength", 1),
+                "params", object("The driver's own params (see the driver type).").put("additionalProperties", true),
+                "reconnect", object("How the link is re-established after it drops.").set("properties", props(
+                        "initialMs", integer(1, ConfigLoader.MAX_MS, d.initialMs(), "The first wait after a failure [ms]"),
+                        "maxMs", integer(1, ConfigLoader.MAX_MS, d.maxMs(), "The longest wait; not below initialMs [ms]"),
+                        "connectTimeoutMs", integer(1, ConfigLoader.MAX_MS, d.connectTimeoutMs(),
+                                "How long one connect and handshake may take [ms]"),
+                        "readTimeoutMs", integer(1, ConfigLoader.MAX_MS, d.readTimeoutMs(),
+                                "Silence after which the link is declared lost [ms]")))));
+        ArrayNode cases = s.putArray("allOf");
+        registry.drivers().keySet().forEach(name -> cases.add(when("driver", name,
+                props("params", ref("params.driver." + name)))));
+        return s;
+    }
+
+    private static ObjectNode method(PluginRegistry registry) {
+        ObjectNode s = withRequired(object("One method of the three-layer graph."), "id", "type", "layer");
+        ArrayNode layers = NODES.arrayNode();
+        for (Layer l : Layer.values()) {
+            layers.add(l.configName());
+        }
+        s.set("properties", props(
+                "id", ref("id").put("description", "The id used in references (\"id.output\")."),
+                "type", string("The method type.").set("enum", strings(registry.methods().keySet())),
+                "layer", string("The layer the method is placed in.").set("enum", layers),
+                "inputs", object("Input name -> source.").set("additionalProperties", ref("source")),
+                "commands", object("Output name -> interface command channel (sensors_actuators layer only).")
+                        .set("additionalProperties", ref("channel")),
+                "params", object("The type's own params (see the method type).").put("additionalProperties", true),
+                "expose", withRequired(object("The method's control socket (virtual layer only)."), "port")
+                        .set("properties", props(
+                                "port", integer(1, 65_535, "The TCP port; unique in the config."),
+                                "name", ref("id").put("description", "The socket's name; defaults to the method id."),
+                                "bind", string("The address to listen on.").put("default", "127.0.0.1"))),
+                "host", string("The worker that runs the method, host:port; absent means the daemon itself.")
+                        .put("pattern", "^.+:[0-9]{1,5}$")));
+        ArrayNode cases = s.putArray("allOf");
+        registry.methods().forEach((name, provider) -> {
+            ArrayNode typeLayers = NODES.arrayNode();
+            provider.layers().stream().map(Layer::configName).sorted().forEach(typeLayers::add);
+            cases.add(when("type", name, props("params", ref("params.method." + name),
+                    "layer", NODES.objectNode().set("enum", typeLayers))));
+        });
+        return s;
+    }
+
+    private static ObjectNode params(MethodProvider<?> provider) {
+        return ParamsSchema.of(provider.paramsType()).put("description", provider.description());
+    }
+
+    private static ObjectNode params(DriverProvider<?> provider) {
+        return ParamsSchema.of(provider.paramsType()).put("description", provider.description());
+    }
+
+    private static ObjectNode when(String key, String value, ObjectNode thenProperties) {
+        ObjectNode c = NODES.objectNode();
+        ObjectNode condition = withRequired(c.putObject("if"), key);
+        condition.set("properties", props(key, NODES.objectNode().put("const", value)));
+        c.putObject("then").set("properties", thenProperties);
+        return c;
+    }
+
+    private static ObjectNode withRequired(ObjectNode schema, String... keys) {
+        schema.set("required", strings(keys));
+        return schema;
+    }
+
+    private static ObjectNode object(String description) {
+        return NODES.objectNode().put("description", description).put("type", "object")
+                .put("additionalProperties", false);
+    }
+
+    private static ObjectNode string(String description) {
+        return NODES.objectNode().put("description", description).put("type", "string");
+    }
+
+    private static ObjectNode integer(long min, long max, long dflt, String description) {
+        return integer(min, max, description).put("default", dflt);
+    }
+
+    private static ObjectNode integer(long min, long max, String description) {
+        return NODES.objectNode().put("description", description).put("type", "integer")
+                .put("minimum", min).put("maximum", max);
+    }
+
+    private static ObjectNode ref(String def) {
+        return NODES.objectNode().put("$ref", "#/$defs/" + def);
+    }
+
+    private static ObjectNode props(Object... keysAndSchemas) {
+        ObjectNode p = NODES.objectNode();
+        for (int i = 0; i < keysAndSchemas.length; i += 2) {
+            p.set((String) keysAndSchemas[i], (JsonNode) keysAndSchemas[i + 1]);
+        }
+        return p;
+    }
+
+    private static ArrayNode strings(String... values) {
+        return strings(List.of(values));
+    }
+
+    private static ArrayNode strings(java.util.Collection<String> values) {
+        ArrayNode a = NODES.arrayNode();
+        values.forEach(a::add);
+        return a;
+    }
+
+    /** Sorts the keys of every {@code properties} and {@code $defs} object, recursively. */
+    private static void sortKeys(JsonNode node) {
+        if (node instanceof ObjectNode o) {
+            for (String key : List.of("properties", "$defs")) {
+                if (o.get(key) instanceof ObjectNode inner) {
+                    List<Map.Entry<String, JsonNode>> entries = new ArrayList<>(inner.properties());
+                    entries.sort(Map.Entry.comparingByKey());
+                    inner.removeAll();
+                    entries.forEach(e -> inner.set(e.getKey(), e.getValue()));
+                }
+            }
+            o.elements().forEachRemaining(ConfigSchema::sortKeys);
+        } else if (node instanceof ArrayNode a) {
+            a.elements().forEachRemaining(ConfigSchema::sortKeys);
+        }
+    }
+}

@@ -1,0 +1,126 @@
+package org.habla.config;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.lang.reflect.GenericArrayType;
+import java.lang.reflect.ParameterizedType;
+import java.lang.reflect.RecordComponent;
+import java.lang.reflect.Type;
+import java.math.BigDecimal;
+import java.math.BigInteger;
+import java.util.Collection;
+import java.util.Map;
+import java.util.Optional;
+import org.habla.plugin.Param;
+
+/**
+ * The JSON Schema of one params record: an object whose properties are the record's components, typed
+ * from their Java types and documented from their {@link Param} annotations (meaning, unit, default).
+ */
+final class ParamsSchema {
+
+    private static final JsonNodeFactory NODES = JsonNodeFactory.instance;
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    private ParamsSchema() {
+    }
+
+    /** The schema of {@code type}'s params object; nested records become nested objects. */
+    static ObjectNode of(Class<? extends Record> type) {
+        ObjectNode schema = NODES.objectNode();
+        schema.put("type", "object");
+        schema.put("additionalProperties", false);
+        ObjectNode properties = schema.putObject("properties");
+        ArrayNode required = NODES.arrayNode();
+        for (RecordComponent c : type.getRecordComponents()) {
+            String name = ParamsBinder.jsonName(c);
+            ObjectNode property = typeOf(c.getGenericType());
+            Param doc = c.getAnnotation(Param.class);
+            if (doc != null) {
+                String unit = doc.unit().isEmpty() ? "" : " [" + doc.unit() + "]";
+                property.put("description", doc.value() + unit);
+                if (!doc.unit().isEmpty()) {
+                    property.put("x-unit", doc.unit());
+                }
+                defaultOf(doc).ifPresent(d -> property.set("default", d));
+            }
+            if (doc == null ? c.getType().isPrimitive() : doc.defaultValue().isEmpty()) {
+                required.add(name);
+            }
+            properties.set(name, property);
+        }
+        if (!required.isEmpty()) {
+            schema.set("required", required);
+        }
+        return schema;
+    }
+
+    /** The schema of a value of Java type {@code t}. */
+    static ObjectNode typeOf(Type t) {
+        ObjectNode s = NODES.objectNode();
+        if (t instanceof ParameterizedType p && p.getRawType() instanceof Class<?> raw) {
+            Type[] args = p.getActualTypeArguments();
+            if (Collection.class.isAssignableFrom(raw)) {
+                s.put("type", "array");
+                s.set("items", typeOf(args[0]));
+            } else if (Map.class.isAssignableFrom(raw)) {
+                s.put("type", "object");
+                s.set("additionalProperties", typeOf(args[1]));
+            } else if (raw == Optional.class) {
+                return typeOf(args[0]);
+            } else {
+                return typeOf(raw);
+            }
+            return s;
+        }
+        if (t instanceof GenericArrayType g) {
+            s.put("type", "array");
+            s.set("items", typeOf(g.getGenericComponentType()));
+            return s;
+        }
+        if (!(t instanceof Class<?> c)) {
+            return s;
+        }
+        if (c == int.class || c == long.class || c == short.class || c == byte.class || c == Integer.class
+                || c == Long.class || c == Short.class || c == Byte.class || c == BigInteger.class) {
+            s.put("type", "integer");
+        } else if (c == double.class || c == float.class || c == Double.class || c == Float.class
+                || c == BigDecimal.class) {
+            s.put("type", "number");
+        } else if (c == boolean.class || c == Boolean.class) {
+            s.put("type", "boolean");
+        } else if (c == String.class || c == char.class || c == Character.class) {
+            s.put("type", "string");
+        } else if (c.isEnum()) {
+            s.put("type", "string");
+            ArrayNode values = s.putArray("enum");
+            for (Object v : c.getEnumConstants()) {
+                values.add(((Enum<?>) v).name());
+            }
+        } else if (c.isArray()) {
+            s.put("type", "array");
+            s.set("items", typeOf(c.getComponentType()));
+        } else if (c.isRecord()) {
+            return of(c.asSubclass(Record.class));
+        } else if (Collection.class.isAssignableFrom(c)) {
+            s.put("type", "array");
+        } else if (Map.class.isAssignableFrom(c) || ObjectNode.class.isAssignableFrom(c)) {
+            s.put("type", "object");
+        }
+        return s;
+    }
+
+    private static Optional<JsonNode> defaultOf(Param doc) {
+        if (doc.defaultValue().isEmpty()) {
+            return Optional.empty();
+        }
+        try {
+            return Optional.of(JSON.readTree(doc.defaultValue()));
+        } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+            return Optional.of(NODES.textNode(doc.defaultValue()));
+        }
+    }
+}
