@@ -92,7 +92,7 @@ public final class StatusCommand implements Callable<Integer> {
             out.println();
             out.printf(Locale.ROOT, "%-18s %6s %8s %10s %8s%n", "SOCKET", "PORT", "CLIENTS", "LINES OUT", "DROPS");
             for (JsonNode s : st.path("sockets")) {
-                out.printf(Locale.ROOT, "%-18s %6d %8d %10d %8d%n", s.path("name").asText(), s.path("port").asInt(),
+                out.printf(Locale.ROOT, "%-18s %6d %8d %10d %8d%n", s.path("socket").asText(), s.path("port").asInt(),
                         s.path("clients").asInt(), s.path("linesOut").asLong(), s.path("dropped").asLong());
             }
         }

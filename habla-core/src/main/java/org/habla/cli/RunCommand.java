@@ -1,0 +1,68 @@
+package org.habla.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import org.habla.config.ConfigError;
+import org.habla.config.ConfigException;
+import org.habla.config.ConfigLoader;
+import org.habla.config.HablaConfig;
+import org.habla.daemon.Daemon;
+import org.habla.graph.EngineClock;
+import org.habla.plugin.PluginRegistry;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Parameters;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code habla run CONFIG}: checks the config, starts the daemon and runs until SIGINT or SIGTERM,
+ * which stop the actuators first, close the sockets and exit 0.
+ */
+@Command(name = "run", mixinStandardHelpOptions = true,
+        description = "Run the HABLA daemon with a config until interrupted.")
+public final class RunCommand implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
+
+    @Parameters(index = "0", paramLabel = "CONFIG", description = "The JSON config file.")
+    private Path config;
+
+    @Override
+    public Integer call() throws InterruptedException {
+        PrintWriter err = spec.commandLine().getErr();
+        PluginRegistry registry = PluginRegistry.discover(Thread.currentThread().getContextClassLoader());
+        HablaConfig cfg;
+        try {
+            cfg = new ConfigLoader(registry).load(config);
+        } catch (ConfigException e) {
+            err.println(config + ": " + e.errors().size() + (e.errors().size() == 1 ? " error" : " errors")
+                    + "; the daemon does not start:");
+            for (ConfigError ce : e.errors()) {
+                err.println("  " + ce.path() + ": " + ce.message());
+            }
+            err.flush();
+            return ExitCodes.USAGE_OR_CONFIG;
+        }
+        Daemon daemon;
+        try {
+            daemon = Daemon.start(cfg, registry, EngineClock.system());
+        } catch (IOException e) {
+            err.println("habla run: " + e.getMessage());
+            err.flush();
+            return ExitCodes.RUNTIME_FAILURE;
+        }
+        CountDownLatch stopped = new CountDownLatch(1);
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            daemon.close();
+            stopped.countDown();
+            // A signal is the normal way to stop a daemon: exit 0, not the JVM's 128+signal.
+            Runtime.getRuntime().halt(ExitCodes.OK);
+        }, "habla-shutdown"));
+        stopped.await();
+        return ExitCodes.OK;
+    }
+}

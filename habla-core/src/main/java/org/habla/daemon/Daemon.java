@@ -1,0 +1,107 @@
+package org.habla.daemon;
+
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import org.habla.config.HablaConfig;
+import org.habla.graph.EngineClock;
+import org.habla.graph.MethodGraph;
+import org.habla.net.ControlPoint;
+import org.habla.net.ControlServer;
+import org.habla.plugin.PluginRegistry;
+import org.habla.status.StatusServer;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The HABLA daemon: a config's method graph with a control server on every exposed method's port
+ * and the status endpoint. The one assembly point between the engine and the sockets.
+ */
+public final class Daemon implements AutoCloseable {
+
+    private static final Logger LOG = LoggerFactory.getLogger(Daemon.class);
+
+    private final HablaConfig config;
+    private final MethodGraph graph;
+    private final EngineClock clock;
+    private final Map<String, ControlServer> servers = new LinkedHashMap<>();
+    private StatusServer statusServer;
+    private volatile boolean closed;
+
+    private Daemon(HablaConfig config, MethodGraph graph, EngineClock clock) {
+        this.config = config;
+        this.graph = graph;
+        this.clock = clock;
+    }
+
+    /**
+     * Builds and starts everything; if a port cannot be bound, whatever was started is stopped again
+     * and the exception says which port.
+     */
+    public static Daemon start(HablaConfig config, PluginRegistry registry, EngineClock clock) throws IOException {
+        Daemon d = new Daemon(config, MethodGraph.build(config, registry, clock), clock);
+        try {
+            for (ControlPoint point : d.graph.controlPoints()) {
+                ControlServer server = new ControlServer(point, d.graph.exposeOf(point), config.limits());
+                d.servers.put(point.name(), server);
+                server.start();
+            }
+            if (config.status().port() > 0) {
+                d.statusServer = new StatusServer(config.status(), d::status);
+                d.statusServer.start();
+            }
+            d.graph.start();
+        } catch (IOException | RuntimeException e) {
+            d.close();
+            throw e;
+        }
+        LOG.info("HABLA daemon '{}' running: {} control sockets{}", config.system(), d.servers.size(),
+                d.statusServer == null ? "" : ", status on port " + d.statusServer.port());
+        return d;
+    }
+
+    public HablaConfig config() {
+        return config;
+    }
+
+    /** The bound port of the control socket {@code name} (useful when the config asked for port 0). */
+    public int port(String name) {
+        ControlServer s = servers.get(name);
+        if (s == null) {
+            throw new IllegalArgumentException("no control socket '" + name + "'");
+        }
+        return s.port();
+    }
+
+    /** The status endpoint's port, or 0 when it is off. */
+    public int statusPort() {
+        return statusServer == null ? 0 : statusServer.port();
+    }
+
+    /** The engine's status with the sockets' figures. */
+    public ObjectNode status() {
+        ObjectNode st = graph.status();
+        ArrayNode sockets = st.putArray("sockets");
+        servers.values().forEach(s -> sockets.add(s.stats()));
+        return st;
+    }
+
+    /** Stops the actuators first, then closes the sockets, then stops the graph. Safe to call twice. */
+    @Override
+    public synchronized void close() {
+        if (closed) {
+            return;
+        }
+        closed = true;
+        LOG.info("HABLA daemon '{}' stopping: actuators first", config.system());
+        graph.stopActuators("the daemon is shutting down");
+        servers.values().forEach(ControlServer::close);
+        if (statusServer != null) {
+            statusServer.close();
+        }
+        graph.close();
+        clock.close();
+    }
+}
