@@ -1,0 +1,42 @@
+package org.habla.method.builtin;
+
+import org.habla.method.Delivery;
+import org.habla.method.Input;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.method.SensorActuatorMethod;
+import org.habla.sample.Payload;
+
+/**
+ * The trivial sensor method, type {@code channel}: it stores the readings of one interface channel
+ * (input {@code in}) and hands them unchanged to the processing layer (output {@code out}). Its
+ * actuator counterpart is a {@code pass-through} whose output is listed under {@code commands}.
+ */
+public final class ChannelReader extends SensorActuatorMethod {
+
+    private final Input<?> in;
+
+    public ChannelReader(RelayParams params) {
+        this.in = relay(params.payloadKind().type(), params.inputDelivery());
+    }
+
+    private <P extends Payload> Input<P> relay(Class<P> type, Delivery delivery) {
+        Output<P> out = output("out", type);
+        return input("in", type, delivery, (value, sample) -> emit(out, value));
+    }
+
+    @Override
+    protected void onStart() {
+        if (channelOf(in).isEmpty()) {
+            log().warn("{}: input 'in' is not wired to an interface channel; use pass-through for method outputs", id());
+        }
+    }
+
+    /** Makes {@code channel} methods. */
+    public static final class Provider extends SimpleMethodProvider<RelayParams> {
+        public Provider() {
+            super("channel", "Hands the readings of one interface channel to the processing layer unchanged",
+                    RelayParams.class, (layer, p) -> new ChannelReader(p), Layer.SENSORS_ACTUATORS);
+        }
+    }
+}

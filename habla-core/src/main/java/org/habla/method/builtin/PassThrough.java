@@ -1,0 +1,76 @@
+package org.habla.method.builtin;
+
+import org.habla.method.Delivery;
+import org.habla.method.Layer;
+import org.habla.method.Method;
+import org.habla.method.Output;
+import org.habla.method.ProcessingMethod;
+import org.habla.method.SensorActuatorMethod;
+import org.habla.method.VirtualMethod;
+import org.habla.sample.Payload;
+
+/**
+ * The paper's "trivial" method, type {@code pass-through}: it hands every sample of its input {@code in}
+ * unchanged to its output {@code out}, keeping the source time. It lets raw data climb a layer where
+ * no processing is needed, and carries actions down to an actuator channel. It can sit in any layer,
+ * so there is one small class per layer base.
+ */
+public final class PassThrough {
+
+    private PassThrough() {
+    }
+
+    /** Makes a pass-through method for {@code layer}. */
+    public static Method create(Layer layer, RelayParams params) {
+        return switch (layer) {
+            case SENSORS_ACTUATORS -> new Sensing(params);
+            case PROCESSING -> new Processing(params);
+            case VIRTUAL -> new Virtual(params);
+        };
+    }
+
+    /** A pass-through in the sensors &amp; actuators layer. */
+    public static final class Sensing extends SensorActuatorMethod {
+        Sensing(RelayParams params) {
+            relay(params.payloadKind().type(), params.inputDelivery());
+        }
+
+        private <P extends Payload> void relay(Class<P> type, Delivery delivery) {
+            Output<P> out = output("out", type);
+            input("in", type, delivery, (value, sample) -> emit(out, value));
+        }
+    }
+
+    /** A pass-through in the processing layer. */
+    public static final class Processing extends ProcessingMethod {
+        Processing(RelayParams params) {
+            relay(params.payloadKind().type(), params.inputDelivery());
+        }
+
+        private <P extends Payload> void relay(Class<P> type, Delivery delivery) {
+            Output<P> out = output("out", type);
+            input("in", type, delivery, (value, sample) -> emit(out, value));
+        }
+    }
+
+    /** A pass-through in the virtual information layer. */
+    public static final class Virtual extends VirtualMethod {
+        Virtual(RelayParams params) {
+            relay(params.payloadKind().type(), params.inputDelivery());
+        }
+
+        private <P extends Payload> void relay(Class<P> type, Delivery delivery) {
+            Output<P> out = output("out", type);
+            input("in", type, delivery, (value, sample) -> emit(out, value));
+        }
+    }
+
+    /** Makes {@code pass-through} methods, in any layer. */
+    public static final class Provider extends SimpleMethodProvider<RelayParams> {
+        public Provider() {
+            super("pass-through", "Hands every sample on unchanged (the trivial method of any layer)",
+                    RelayParams.class, PassThrough::create,
+                    Layer.SENSORS_ACTUATORS, Layer.PROCESSING, Layer.VIRTUAL);
+        }
+    }
+}

@@ -1,0 +1,50 @@
+package org.habla.method.builtin;
+
+import java.util.Locale;
+import org.habla.method.Delivery;
+import org.habla.plugin.Param;
+import org.habla.sample.PayloadKind;
+
+/**
+ * The params of the trivial methods {@code pass-through} and {@code channel}: what kind of value they
+ * carry and how samples wait for them.
+ */
+public record RelayParams(
+        @Param(value = "Payload kind carried: number, vector, text, record, audio, image or any", defaultValue = "\"any\"")
+        String kind,
+        @Param(value = "How samples wait: latest (newest wins) or queue (bounded first-in first-out)",
+                defaultValue = "\"latest\"")
+        String delivery,
+        @Param(value = "Queue length when delivery is queue", defaultValue = "64")
+        Integer capacity) {
+
+    public RelayParams {
+        kind = kind == null ? "any" : kind.toLowerCase(Locale.ROOT);
+        delivery = delivery == null ? "latest" : delivery.toLowerCase(Locale.ROOT);
+        capacity = capacity == null ? 64 : capacity;
+        try {
+            PayloadKind.fromWire(kind);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("kind: " + e.getMessage());
+        }
+        if (!delivery.equals("latest") && !delivery.equals("queue")) {
+            throw new IllegalArgumentException("delivery must be latest or queue, was '" + delivery + "'");
+        }
+        if (capacity < 1 || capacity > Delivery.MAX_CAPACITY) {
+            throw new IllegalArgumentException("capacity must be in 1.." + Delivery.MAX_CAPACITY + ", was " + capacity);
+        }
+    }
+
+    /** Every parameter at its default. */
+    public static RelayParams defaults() {
+        return new RelayParams(null, null, null);
+    }
+
+    public PayloadKind payloadKind() {
+        return PayloadKind.fromWire(kind);
+    }
+
+    public Delivery inputDelivery() {
+        return delivery.equals("queue") ? Delivery.queue(capacity) : Delivery.latest();
+    }
+}

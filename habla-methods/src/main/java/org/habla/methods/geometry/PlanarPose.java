@@ -1,0 +1,66 @@
+package org.habla.methods.geometry;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.Optional;
+
+/**
+ * A position and heading in the plane of the robot frame: x forward, y to the left, theta
+ * counter-clockwise from x. Used for sensor mounts and robot poses.
+ *
+ * @param xM       forward, in metres
+ * @param yM       to the left, in metres
+ * @param thetaRad heading, in radians, within (-π, π]
+ */
+public record PlanarPose(double xM, double yM, double thetaRad) {
+
+    public static final PlanarPose ORIGIN = new PlanarPose(0, 0, 0);
+
+    public PlanarPose {
+        if (!Double.isFinite(xM) || !Double.isFinite(yM) || !Double.isFinite(thetaRad)) {
+            throw new IllegalArgumentException("a pose needs finite xM, yM and thetaRad, was " + xM + ", " + yM + ", " + thetaRad);
+        }
+        thetaRad = wrap(thetaRad);
+    }
+
+    /** An angle brought into (-π, π]. */
+    public static double wrap(double rad) {
+        double a = Math.IEEEremainder(rad, 2 * Math.PI);
+        return a <= -Math.PI ? a + 2 * Math.PI : a;
+    }
+
+    /** The point {@code rangeM} ahead of this pose, along its heading turned by {@code bearingRad}. */
+    public double[] pointAt(double rangeM, double bearingRad) {
+        double a = thetaRad + bearingRad;
+        return new double[] {xM + rangeM * Math.cos(a), yM + rangeM * Math.sin(a)};
+    }
+
+    /** This pose turned by {@code panRad} about the origin's vertical axis (a sensor on a panning head). */
+    public PlanarPose turnedAboutOrigin(double panRad) {
+        double c = Math.cos(panRad);
+        double s = Math.sin(panRad);
+        return new PlanarPose(c * xM - s * yM, s * xM + c * yM, thetaRad + panRad);
+    }
+
+    /** Reads {@code {"xM","yM","thetaRad"}}; empty if a field is missing or not a finite number. */
+    public static Optional<PlanarPose> fromJson(JsonNode node) {
+        JsonNode x = node.path("xM");
+        JsonNode y = node.path("yM");
+        JsonNode t = node.path("thetaRad");
+        if (!x.isNumber() || !y.isNumber() || !t.isNumber()) {
+            return Optional.empty();
+        }
+        double xv = x.doubleValue();
+        double yv = y.doubleValue();
+        double tv = t.doubleValue();
+        if (!Double.isFinite(xv) || !Double.isFinite(yv) || !Double.isFinite(tv)) {
+            return Optional.empty();
+        }
+        return Optional.of(new PlanarPose(xv, yv, tv));
+    }
+
+    public ObjectNode toJson() {
+        return JsonNodeFactory.instance.objectNode().put("xM", xM).put("yM", yM).put("thetaRad", thetaRad);
+    }
+}
