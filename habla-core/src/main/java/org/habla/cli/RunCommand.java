@@ -14,6 +14,7 @@ import org.habla.graph.EngineClock;
 import org.habla.plugin.PluginRegistry;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
@@ -31,6 +32,11 @@ public final class RunCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "CONFIG", description = "The JSON config file.")
     private Path config;
 
+    @Option(names = "--time-scale", paramLabel = "S", defaultValue = "1",
+            description = "Run the engine's clock S times faster than the wall clock (watchdog, periodic work, "
+                    + "action durations), to drive a simulated robot sped up by the same factor. Never for a real robot.")
+    private double timeScale;
+
     @Override
     public Integer call() throws InterruptedException {
         PrintWriter err = spec.commandLine().getErr();
@@ -47,9 +53,14 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
         }
+        if (!(timeScale >= 1) || !Double.isFinite(timeScale)) {
+            err.println("habla run: --time-scale must be 1 or more, was " + timeScale);
+            err.flush();
+            return ExitCodes.USAGE_OR_CONFIG;
+        }
         Daemon daemon;
         try {
-            daemon = Daemon.start(cfg, registry, EngineClock.system());
+            daemon = Daemon.start(cfg, registry, timeScale == 1 ? EngineClock.system() : EngineClock.scaled(timeScale));
         } catch (IOException e) {
             err.println("habla run: " + e.getMessage());
             err.flush();
