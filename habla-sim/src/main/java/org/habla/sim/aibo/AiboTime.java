@@ -1,43 +1,39 @@
 package org.habla.sim.aibo;
 
+import org.habla.sim.world.SimClock;
+
 /**
- * The simulator's clock: milliseconds of simulated time since the robot booted, running
- * {@code speed} times faster than the wall clock. Every period of the simulated Aibo (the 32 ms
- * sensor frame, the microphone buffer, the camera frame, the walk's dead-man time-out) is counted in
- * this time, so a faster clock makes the whole robot faster and nothing else changes.
+ * The simulation's clock as the Aibo's servers use it: milliseconds of simulated time since boot, and
+ * waiting for a simulated instant. Every period of the robot (the 32 ms sensor frame, the microphone
+ * buffer, the camera frame, the walk's 3 s dead-man time-out) is counted in this time, so a faster clock
+ * makes the whole robot faster and changes nothing else.
  */
 public final class AiboTime {
 
-    private final double speed;
-    private final long startNanos = System.nanoTime();
+    /** How long one wait may take in real time before it is retried (the clock may be stepped by hand). */
+    private static final long WAIT_SLICE_MS = 1_000;
 
-    public AiboTime(double speed) {
-        if (!(speed >= 1.0) || Double.isInfinite(speed)) {
-            throw new IllegalArgumentException("speed must be a number >= 1, was " + speed);
-        }
-        this.speed = speed;
-    }
+    private final SimClock clock;
 
-    public double speed() {
-        return speed;
+    public AiboTime(SimClock clock) {
+        this.clock = clock;
     }
 
     /** Simulated milliseconds since boot. */
     public long nowMs() {
-        return (long) ((System.nanoTime() - startNanos) * speed / 1e6);
+        return Math.round(clock.nowS() * 1000);
     }
 
-    /** Simulated seconds since boot, with fractions. */
+    /** Simulated seconds since boot. */
     public double nowS() {
-        return (System.nanoTime() - startNanos) * speed / 1e9;
+        return clock.nowS();
     }
 
-    /** Sleeps until the simulated time reaches {@code simMs}; returns at once if it has already. */
+    /** Waits until simulated time reaches {@code simMs}; returns at once if it has already. */
     public void sleepUntil(long simMs) throws InterruptedException {
-        long targetNanos = startNanos + (long) (simMs * 1e6 / speed);
-        long wait = targetNanos - System.nanoTime();
-        if (wait > 0) {
-            Thread.sleep(wait / 1_000_000, (int) (wait % 1_000_000));
+        while (!clock.awaitSimTime(simMs / 1000.0, WAIT_SLICE_MS)) {
+            // a stopped clock answers at once: do not spin while the servers close
+            Thread.sleep(10);
         }
     }
 }

@@ -33,6 +33,7 @@ final class TekkotsuSocket implements AutoCloseable {
     private final Thread acceptor;
     private volatile boolean on;
     private Socket current;
+    private Thread serving;
 
     TekkotsuSocket(String name, int port, boolean onAtBoot, Client client) throws IOException {
         this.name = name;
@@ -59,13 +60,18 @@ final class TekkotsuSocket implements AutoCloseable {
     /** Switches the server on (its behaviour started) or off (stopped: the client is dropped). */
     void switchOn(boolean running) {
         Socket drop = null;
+        Thread stop = null;
         synchronized (this) {
             on = running;
             if (!running) {
                 drop = current;
+                stop = serving;
             }
         }
         closeQuietly(drop);
+        if (stop != null) {
+            stop.interrupt();
+        }
     }
 
     private void acceptLoop() {
@@ -87,7 +93,9 @@ final class TekkotsuSocket implements AutoCloseable {
                 closeQuietly(s);
                 continue;
             }
-            Thread.ofVirtual().name("aibo-" + name + "-client").start(() -> serve(s));
+            synchronized (this) {
+                serving = Thread.ofVirtual().name("aibo-" + name + "-client").start(() -> serve(s));
+            }
         }
     }
 
@@ -108,6 +116,7 @@ final class TekkotsuSocket implements AutoCloseable {
             synchronized (this) {
                 if (current == s) {
                     current = null;
+                    serving = null;
                 }
             }
         }

@@ -27,6 +27,7 @@ import org.habla.sample.AudioFormat;
 import org.habla.sample.ImageFrame;
 import org.habla.sample.RecordValue;
 import org.habla.sample.VectorValue;
+import org.habla.sim.world.SimClock;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
@@ -36,19 +37,18 @@ class TekkotsuServersTest {
     private static final Duration LIMIT = Duration.ofSeconds(10);
     private static final CameraView.Ball BALL = new CameraView.Ball(1.0, 0.15, 0.1, 0xff50aa);
 
-    private final AiboTime time = new AiboTime(4);
+    private final SimClock clock = new SimClock(4, 0.008);
+    private final AiboTime time = new AiboTime(clock);
     private final Ers7Body body = new Ers7Body();
     private final Microphone mic = new Microphone(7);
     private final SpeakerLog said = new SpeakerLog();
     private final RecordingSink sink = new RecordingSink();
     private final List<AutoCloseable> open = new ArrayList<>();
     private final Map<String, DriverLink> links = new HashMap<>();
-    private volatile boolean stepping = true;
     private TekkotsuServers servers;
 
     @AfterEach
     void closeAll() throws Exception {
-        stepping = false;
         for (AutoCloseable c : open.reversed()) {
             c.close();
         }
@@ -57,17 +57,9 @@ class TekkotsuServersTest {
     private void start(String extraParams) throws IOException {
         servers = new TekkotsuServers(TekkotsuPorts.ANY_FREE, time, body, mic, said, at -> view());
         open.add(servers);
-        Thread stepper = Thread.ofVirtual().start(() -> {
-            while (stepping) {
-                body.step(0.01, time.nowMs());
-                try {
-                    Thread.sleep(2);
-                } catch (InterruptedException e) {
-                    return;
-                }
-            }
-        });
-        open.add(stepper::interrupt);
+        clock.add((nowS, dtS) -> body.step(dtS, Math.round(nowS * 1000)));
+        clock.start();
+        open.add(clock);
         TekkotsuPorts p = servers.ports();
         String params = """
                 {"worldStatePort": %d, "microphonePort": %d, "cameraPort": %d, "walkPort": %d, "headPort": %d,
