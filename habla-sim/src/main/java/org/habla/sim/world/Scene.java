@@ -1,6 +1,9 @@
 package org.habla.sim.world;
 
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.List;
 import java.util.Objects;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
 
 /**
@@ -16,6 +19,7 @@ public final class Scene implements SimClock.Stepper {
     private volatile Target target;
     private volatile double nowS;
     private volatile int episode;
+    private final List<Consumer<ObjectNode>> details = new CopyOnWriteArrayList<>();
     private volatile Consumer<String> touch = sensor -> {
         throw new IllegalArgumentException("this robot has no touch sensors");
     };
@@ -77,6 +81,18 @@ public final class Scene implements SimClock.Stepper {
     /** Touches a sensor of the robot. */
     public void touch(String sensor) {
         touch.accept(sensor);
+    }
+
+    /** Adds robot-specific facts to every ground-truth line (the Aibo's e-stop, head and speaker). */
+    public void addTruthDetail(Consumer<ObjectNode> detail) {
+        details.add(Objects.requireNonNull(detail, "detail"));
+    }
+
+    /** The ground-truth line: {@link #truth()} in the contract's shape plus the robot's details. */
+    public ObjectNode truthJson() {
+        ObjectNode o = truth().toJson();
+        details.forEach(d -> d.accept(o));
+        return o;
     }
 
     /** Where everything is now. */

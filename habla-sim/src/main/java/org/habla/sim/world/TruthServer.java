@@ -55,7 +55,7 @@ public final class TruthServer implements SimClock.Stepper, AutoCloseable {
         if (nowS + 1e-9 >= nextS) {
             nextS = nowS + PERIOD_S;
             if (server.clientCount() > 0) {
-                server.broadcast(scene.truth().toJson().toString());
+                server.broadcast(scene.truthJson().toString());
             }
         }
     }
