@@ -31,6 +31,15 @@ class AiboSideMethodsTest {
     }
 
     @Test
+    void theConfigSchemaDescribesEveryParamOfEveryType() {
+        String schema = org.habla.config.ConfigSchema.text(PluginRegistry.discover());
+        for (String type : TYPES) {
+            assertThat(schema).contains("\"" + type + "\"");
+        }
+        assertThat(schema).contains("touchValence", "strafeShare", "scanPanRad", "targetRadiusM", "maxFps", "volumeDb");
+    }
+
+    @Test
     @SuppressWarnings({"unchecked", "rawtypes"})
     void aConfigWiringThemAllLoadsAndEveryMethodIsMadeFromItsParams() throws Exception {
         PluginRegistry registry = PluginRegistry.discover();
