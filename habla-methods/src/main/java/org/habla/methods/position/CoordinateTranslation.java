@@ -1,0 +1,210 @@
+package org.habla.methods.position;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import org.habla.method.Delivery;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.method.ProcessingMethod;
+import org.habla.method.Shape;
+import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.methods.geometry.CameraModel;
+import org.habla.methods.geometry.PlanarPose;
+import org.habla.methods.gaze.HeadPose;
+import org.habla.sample.RecordValue;
+import org.habla.sample.Sample;
+
+/**
+ * The coordinate translation method, type {@code coordinate-translation}: it turns what a sensor saw
+ * into the {@code position} of the target in the robot frame, {@code {"xM","yM","distanceM","angleRad","seen"}}
+ * (x forward, y left, angle positive to the left, distance from the robot's origin to the target's
+ * near surface). What it works from depends on which inputs the config wires:
+ *
+ * <ul>
+ *   <li>{@code nearest}: a {@code nearest} record of a range sensor, already in the robot frame: it is
+ *       handed on with {@code seen} added.</li>
+ *   <li>{@code blobs} (with {@code head} and {@code camera}): the image segmentation's blobs; the
+ *       largest blob of the {@code label} is located by {@link BlobFix} from its size (a ball of
+ *       {@code targetRadiusM}) or from where its ray meets the floor, through the head's pan, tilt and
+ *       nod and the camera's geometry. With no such blob the record says {@code seen: false} and keeps
+ *       the last sighting.</li>
+ *   <li>{@code odometry} (optional, a pose record {@code xM, yM, thetaRad}): adds the world-frame
+ *       {@code xWorldM}, {@code yWorldM} of the target.</li>
+ * </ul>
+ */
+public final class CoordinateTranslation extends ProcessingMethod {
+
+    private final CoordinateTranslationParams params;
+    private final Output<RecordValue> position = output("position", RecordValue.class,
+            Shape.record("the target in the robot frame (distance to its near surface); seen false keeps the last sighting",
+                    "xM", "yM", "distanceM", "angleRad", "seen"));
+
+    private CameraModel camera;
+    private HeadPose head = HeadPose.STRAIGHT;
+    private PlanarPose odometry;
+    private double lastX;
+    private double lastY;
+    private double lastDistance;
+    private boolean everSeen;
+    private long rejected;
+    private boolean warnedNoCamera;
+
+    CoordinateTranslation(CoordinateTranslationParams params) {
+        this.params = params;
+        optionalInput("nearest", RecordValue.class, Delivery.latest(), this::onNearest);
+        optionalInput("blobs", RecordValue.class, Delivery.latest(), this::onBlobs);
+        optionalInput("head", RecordValue.class, Delivery.latest(), this::onHead);
+        optionalInput("camera", RecordValue.class, Delivery.latest(), this::onCamera);
+        optionalInput("odometry", RecordValue.class, Delivery.latest(), this::onOdometry);
+        if (params.hfovRad() != null && params.vfovRad() != null && params.cameraHeightM() != null) {
+            camera = new CameraModel(params.hfovRad(), params.vfovRad(), 1, 1, params.cameraHeightM());
+        }
+    }
+
+    private void onCamera(RecordValue record, Sample sample) {
+        CameraModel fromRecord = CameraModel.fromJson(record.json(), null).orElse(null);
+        if (fromRecord == null) {
+            rejected++;
+            log().warn("{}: camera record {} is not a camera; ignored", id(), record);
+            return;
+        }
+        camera = new CameraModel(
+                params.hfovRad() != null ? params.hfovRad() : fromRecord.hfovRad(),
+                params.vfovRad() != null ? params.vfovRad() : fromRecord.vfovRad(),
+                fromRecord.width(), fromRecord.height(),
+                params.cameraHeightM() != null ? params.cameraHeightM() : fromRecord.heightM());
+    }
+
+    private void onHead(RecordValue record, Sample sample) {
+        HeadPose.fromRecord(record).ifPresentOrElse(p -> head = p, () -> rejected++);
+    }
+
+    private void onOdometry(RecordValue record, Sample sample) {
+        PlanarPose.fromJson(record.json()).ifPresentOrElse(p -> odometry = p, () -> rejected++);
+    }
+
+    private void onNearest(RecordValue record, Sample sample) {
+        JsonNode x = record.get("xM");
+        JsonNode y = record.get("yM");
+        JsonNode seenField = record.get("seen");
+        boolean numbers = x.isNumber() && y.isNumber() && Double.isFinite(x.doubleValue()) && Double.isFinite(y.doubleValue());
+        boolean seen = numbers && (!seenField.isBoolean() || seenField.booleanValue());
+        if (numbers) {
+            double d = record.get("distanceM").isNumber() ? record.get("distanceM").doubleValue()
+                    : Math.hypot(x.doubleValue(), y.doubleValue());
+            remember(x.doubleValue(), y.doubleValue(), d);
+        } else {
+            rejected++;
+        }
+        emitPosition(seen, null);
+    }
+
+    private void onBlobs(RecordValue record, Sample sample) {
+        JsonNode blob = largest(record.get("blobs"));
+        if (blob == null) {
+            emitPosition(false, null);
+            return;
+        }
+        CameraModel cam = cameraFor(record);
+        if (cam == null) {
+            if (!warnedNoCamera) {
+                warnedNoCamera = true;
+                log().warn("{}: a blob was seen but the camera geometry is unknown; wire input camera or set "
+                        + "hfovRad, vfovRad and cameraHeightM", id());
+            }
+            emitPosition(false, null);
+            return;
+        }
+        BlobFix fix = new BlobFix(cam, params.targetRadiusM(), params.cameraXM(), params.minRadiusPx());
+        BlobFix.Fix found = fix.locate(num(blob, "cx"), num(blob, "cy"), num(blob, "x"), num(blob, "y"),
+                num(blob, "w"), num(blob, "h"), head).orElse(null);
+        if (found == null) {
+            emitPosition(false, null);
+            return;
+        }
+        remember(found.xM(), found.yM(), Math.max(0, Math.hypot(found.xM(), found.yM()) - params.targetRadiusM()));
+        emitPosition(true, found);
+    }
+
+    /** The camera with this image's size, from the blobs record's width and height. */
+    private CameraModel cameraFor(RecordValue blobs) {
+        if (camera == null) {
+            return null;
+        }
+        JsonNode w = blobs.get("width");
+        JsonNode h = blobs.get("height");
+        if (w.isInt() && h.isInt() && w.intValue() > 0 && h.intValue() > 0) {
+            return camera.withSize(w.intValue(), h.intValue());
+        }
+        return camera.width() > 1 ? camera : null;
+    }
+
+    /** The first blob of the label (the list is largest first) with finite numbers, or null. */
+    private JsonNode largest(JsonNode blobs) {
+        if (!blobs.isArray()) {
+            if (!blobs.isMissingNode()) {
+                rejected++;
+            }
+            return null;
+        }
+        for (JsonNode b : blobs) {
+            boolean labelled = params.label().isEmpty() || params.label().equals(b.path("label").asText());
+            if (labelled && finite(b, "cx", "cy", "x", "y", "w", "h")) {
+                return b;
+            }
+        }
+        return null;
+    }
+
+    private void remember(double x, double y, double distance) {
+        lastX = x;
+        lastY = y;
+        lastDistance = distance;
+        everSeen = true;
+    }
+
+    private void emitPosition(boolean seen, BlobFix.Fix fix) {
+        RecordValue.Builder b = RecordValue.builder()
+                .put("xM", lastX).put("yM", lastY).put("distanceM", lastDistance)
+                .put("angleRad", everSeen ? Math.atan2(lastY, lastX) : 0.0).put("seen", seen);
+        if (fix != null) {
+            b.put("method", fix.method());
+            if (fix.groundRangeM() != null) {
+                b.put("groundRangeM", fix.groundRangeM());
+            }
+        }
+        if (odometry != null && everSeen) {
+            double c = Math.cos(odometry.thetaRad());
+            double s = Math.sin(odometry.thetaRad());
+            b.put("xWorldM", odometry.xM() + c * lastX - s * lastY).put("yWorldM", odometry.yM() + s * lastX + c * lastY);
+        }
+        emit(position, b.build());
+    }
+
+    private static boolean finite(JsonNode node, String... fields) {
+        for (String f : fields) {
+            JsonNode n = node.get(f);
+            if (n == null || !n.isNumber() || !Double.isFinite(n.doubleValue())) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    private static double num(JsonNode node, String field) {
+        return node.get(field).doubleValue();
+    }
+
+    /** Inputs that were not what their record should be, since start. */
+    public long rejected() {
+        return rejected;
+    }
+
+    /** Makes {@code coordinate-translation} methods. */
+    public static final class Provider extends SimpleMethodProvider<CoordinateTranslationParams> {
+        public Provider() {
+            super("coordinate-translation",
+                    "Places the target in the robot frame (and the world frame) from a range reading or a camera blob",
+                    CoordinateTranslationParams.class, (layer, p) -> new CoordinateTranslation(p), Layer.PROCESSING);
+        }
+    }
+}

@@ -1,0 +1,67 @@
+package org.habla.methods.sensors;
+
+import org.habla.method.Delivery;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.method.SensorActuatorMethod;
+import org.habla.method.Shape;
+import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.methods.locomotion.WalkLimits;
+import org.habla.sample.Sample;
+import org.habla.sample.VectorValue;
+
+/**
+ * The general legs method, type {@code legs}: it sends walk commands to a legged robot. Input
+ * {@code walk} takes the vector {@code [forwardMps, strafeMps, rotateRadps]} (or {@code [forwardMps,
+ * rotateRadps]}); output {@code walk}, listed under the config's {@code commands}, carries it to the
+ * interface's walk channel with each component clamped to its limit. A command that is not such a
+ * vector (a wrong length, a NaN) stops the robot rather than being guessed at, and when the method stops
+ * it sends a last zero command so the robot never walks on unattended.
+ */
+public final class Legs extends SensorActuatorMethod {
+
+    private static final VectorValue HALT = VectorValue.of(0, 0, 0);
+
+    private final WalkLimits limits;
+    private final Output<VectorValue> walk = output("walk", VectorValue.class,
+            Shape.vector("m/s, rad/s", "[forwardMps, strafeMps, rotateRadps] within the walk limits"));
+    private long rejected;
+    private boolean sentAny;
+
+    Legs(LegsParams params) {
+        this.limits = params.limits();
+        input("walk", VectorValue.class, Delivery.queue(params.queue()), this::onWalk);
+    }
+
+    private void onWalk(VectorValue value, Sample sample) {
+        double[] cmd = WalkLimits.read(value).orElse(null);
+        sentAny = true;
+        if (cmd == null) {
+            rejected++;
+            log().warn("{}: walk command {} is not [forward, strafe, rotate] of finite numbers; stopping instead", id(), value);
+            emit(walk, HALT);
+            return;
+        }
+        emit(walk, VectorValue.wrap(limits.clamp(cmd[0], cmd[1], cmd[2])));
+    }
+
+    @Override
+    protected void onStop() {
+        if (sentAny) {
+            emit(walk, HALT);
+        }
+    }
+
+    /** Walk commands that were not valid vectors (each stopped the robot), since start. */
+    public long rejected() {
+        return rejected;
+    }
+
+    /** Makes {@code legs} methods. */
+    public static final class Provider extends SimpleMethodProvider<LegsParams> {
+        public Provider() {
+            super("legs", "Sends walk commands [forward, strafe, rotate] to a legged robot, clamped to its walk limits",
+                    LegsParams.class, (layer, p) -> new Legs(p), Layer.SENSORS_ACTUATORS);
+        }
+    }
+}

@@ -1,0 +1,48 @@
+package org.habla.methods.sensors;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import org.habla.method.MethodHarness;
+import org.habla.method.MethodState;
+import org.habla.sample.VectorValue;
+import org.junit.jupiter.api.Test;
+
+class LegsTest {
+
+    @Test
+    void eachComponentIsClampedToItsOwnLimit() {
+        MethodHarness h = MethodHarness.started("legs", new Legs(LegsParams.defaults()));
+        h.push("walk", VectorValue.of(0.1, -0.05, 0.5));
+        assertThat(h.last("walk")).isEqualTo(VectorValue.of(0.1, -0.05, 0.5));
+        h.push("walk", VectorValue.of(0.5, 0.3, -4.0));
+        assertThat(h.last("walk")).isEqualTo(VectorValue.of(0.18, 0.14, -1.8));
+        h.push("walk", VectorValue.of(-0.5, 0, 0));
+        assertThat(h.last("walk")).isEqualTo(VectorValue.of(-0.18, 0, 0));
+    }
+
+    @Test
+    void limitsComeFromParamsAndATwoElementVectorIsForwardAndRotate() {
+        MethodHarness h = MethodHarness.started("legs", new Legs(new LegsParams(0.3, 0.1, 0.0, 1.0, null)));
+        h.push("walk", VectorValue.of(0.25, 2.0));
+        assertThat(h.last("walk")).isEqualTo(VectorValue.of(0.25, 0, 1.0));
+        h.push("walk", VectorValue.of(-0.25, 0.2, 0));
+        assertThat(h.last("walk")).isEqualTo(VectorValue.of(-0.1, 0, 0));
+    }
+
+    @Test
+    void aBadCommandStopsTheRobotAndStoppingTheMethodSendsZero() {
+        Legs legs = new Legs(LegsParams.defaults());
+        MethodHarness h = MethodHarness.started("legs", legs);
+        h.push("walk", VectorValue.of(0.1, 0, 0));
+        h.push("walk", VectorValue.of(Double.NaN, 0, 0));
+        assertThat(h.last("walk")).isEqualTo(VectorValue.of(0, 0, 0));
+        h.push("walk", VectorValue.of(0.1, 0, 0, 0));
+        assertThat(h.last("walk")).isEqualTo(VectorValue.of(0, 0, 0));
+        assertThat(legs.rejected()).isEqualTo(2);
+        h.push("walk", VectorValue.of(0.1, 0, 0));
+        assertThat(h.state()).isEqualTo(MethodState.RUNNING);
+        h.stop();
+        assertThat(h.values("walk")).hasSize(5);
+        assertThat(h.last("walk")).isEqualTo(VectorValue.of(0, 0, 0));
+    }
+}
