@@ -8,7 +8,8 @@ import org.habla.daemon.Daemon;
 /**
  * Benchmark (a): end-to-end latency of one reading through the daemon over loopback, from the moment the
  * robot stamps it to the moment a control client has parsed it, with readings at a fixed rate; and the
- * same hops through {@link PlainRelay}, directly and with three thread hand-offs, as the floor.
+ * same hops through {@link PlainRelay}, on one thread and with four thread hand-offs (as many as the
+ * daemon's path: link reader → three method threads → the client's writer), as the floor.
  */
 final class LatencyBench {
 
@@ -35,8 +36,8 @@ final class LatencyBench {
             PlainRelay r = new PlainRelay(robot.port(), 0);
             return new Path(r.port(), r::close);
         });
-        measure("plain relay, 3 thread hand-offs", robot -> {
-            PlainRelay r = new PlainRelay(robot.port(), 3);
+        measure("plain relay, 4 thread hand-offs", robot -> {
+            PlainRelay r = new PlainRelay(robot.port(), 4);
             return new Path(r.port(), r::close);
         });
     }

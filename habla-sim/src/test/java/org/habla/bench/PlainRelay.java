@@ -22,8 +22,8 @@ import java.util.concurrent.BlockingQueue;
  * The baseline the daemon is compared with: a plain Java TCP relay that connects to the robot, reads
  * its JSON lines, parses them, and writes a sample line for each to one client — the same socket hops
  * and the same parse/encode as the daemon, without the engine. With {@code handOffs} > 0 the value also
- * passes through that many threads over blocking queues, as it passes through the method threads of a
- * chain in the daemon.
+ * changes thread that many times over blocking queues, as it does in the daemon between the link's
+ * reader, the method threads and the client's writer.
  */
 final class PlainRelay implements AutoCloseable {
 
