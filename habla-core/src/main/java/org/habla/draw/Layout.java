@@ -38,6 +38,7 @@ public record Layout(Map<String, Box> nodes, Map<String, Box> frames, Map<Row, B
     static final double TITLE = 44;
     static final double LEGEND = 40;
     static final int SWEEPS = 4;
+    static final int ALIGN_ROUNDS = 4;
     /** Wide enough for the legend. */
     static final double MIN_WIDTH = 720;
 
@@ -54,6 +55,25 @@ public record Layout(Map<String, Box> nodes, Map<String, Box> frames, Map<Row, B
         double width = Math.max(MIN_WIDTH, left + content + BAND_PAD + MARGIN);
         content = width - left - BAND_PAD - MARGIN;
 
+        Map<Row, List<Block>> blocks = new EnumMap<>(Row.class);
+        Map<Row, double[]> xs = new EnumMap<>(Row.class);
+        for (Row row : Row.values()) {
+            List<Block> bs = blocks(row, order.get(row), picture);
+            blocks.put(row, bs);
+            double[] x = new double[bs.size()];
+            double at = left + (content - rowWidths.get(row)) / 2;
+            for (int i = 0; i < bs.size(); i++) {
+                x[i] = at;
+                at += bs.get(i).width() + GAP_X;
+            }
+            xs.put(row, x);
+        }
+        for (int round = 0; round < ALIGN_ROUNDS; round++) {
+            for (Row row : Row.values()) {
+                align(row, blocks, xs, picture, left, left + content);
+            }
+        }
+
         Map<String, Box> nodes = new LinkedHashMap<>();
         Map<String, Box> frames = new LinkedHashMap<>();
         Map<Row, Box> bands = new EnumMap<>(Row.class);
@@ -61,31 +81,112 @@ public record Layout(Map<String, Box> nodes, Map<String, Box> frames, Map<Row, B
         for (Row row : Row.values()) {
             double bandHeight = rowHeights.get(row) + BAND_PAD * 2;
             bands.put(row, new Box(MARGIN, y, width - 2 * MARGIN, bandHeight));
-            double x = left + (content - rowWidths.get(row)) / 2;
             double top = y + BAND_PAD;
-            if (row == Row.INTERFACES) {
-                for (InterfaceGroup g : groupOrder(order.get(row), picture)) {
-                    List<Node> channels = order.get(row).stream().filter(n -> n.group().equals(g.id())).toList();
-                    double frameWidth = groupWidth(g, channels);
-                    double inner = channels.stream().mapToDouble(Layout::boxWidth).sum() + GAP_X * Math.max(0, channels.size() - 1);
-                    double cx = x + (frameWidth - inner) / 2;
-                    for (Node n : channels) {
-                        nodes.put(n.key(), new Box(cx, top + PAD_Y, boxWidth(n), boxHeight(n)));
-                        cx += boxWidth(n) + GAP_X;
-                    }
-                    frames.put(g.id(), new Box(x, top, frameWidth, rowHeights.get(row)));
-                    x += frameWidth + GAP_X;
+            List<Block> bs = blocks.get(row);
+            for (int i = 0; i < bs.size(); i++) {
+                Block b = bs.get(i);
+                double x = xs.get(row)[i];
+                if (b.group() != null) {
+                    frames.put(b.group().id(), new Box(x, top, b.width(), rowHeights.get(row)));
                 }
-            } else {
-                for (Node n : order.get(row)) {
-                    nodes.put(n.key(), new Box(x, top + (rowHeights.get(row) - boxHeight(n)) / 2, boxWidth(n), boxHeight(n)));
-                    x += boxWidth(n) + GAP_X;
+                for (int k = 0; k < b.nodes().size(); k++) {
+                    Node n = b.nodes().get(k);
+                    double boxTop = b.group() != null ? top + PAD_Y : top + (rowHeights.get(row) - boxHeight(n)) / 2;
+                    nodes.put(n.key(), new Box(x + b.offsets()[k], boxTop, boxWidth(n), boxHeight(n)));
                 }
             }
             y += bandHeight + GAP_Y;
         }
         double height = y - GAP_Y + LEGEND;
         return new Layout(nodes, frames, bands, width, height);
+    }
+
+    /**
+     * What moves as one in a band: a box, or an interface's frame with its channel boxes.
+     *
+     * @param nodes   the boxes, left to right
+     * @param group   the interface, for a frame; null for a single box
+     * @param width   the block's width
+     * @param offsets each box's x from the block's left edge
+     */
+    private record Block(List<Node> nodes, InterfaceGroup group, double width, double[] offsets) {
+    }
+
+    private static List<Block> blocks(Row row, List<Node> ordered, GraphPicture picture) {
+        List<Block> out = new ArrayList<>();
+        if (row != Row.INTERFACES) {
+            for (Node n : ordered) {
+                out.add(new Block(List.of(n), null, boxWidth(n), new double[] {0}));
+            }
+            return out;
+        }
+        for (InterfaceGroup g : groupOrder(ordered, picture)) {
+            List<Node> channels = ordered.stream().filter(n -> n.group().equals(g.id())).toList();
+            double frameWidth = groupWidth(g, channels);
+            double inner = channels.stream().mapToDouble(Layout::boxWidth).sum() + GAP_X * Math.max(0, channels.size() - 1);
+            double[] offsets = new double[channels.size()];
+            double at = (frameWidth - inner) / 2;
+            for (int k = 0; k < channels.size(); k++) {
+                offsets[k] = at;
+                at += boxWidth(channels.get(k)) + GAP_X;
+            }
+            out.add(new Block(channels, g, frameWidth, offsets));
+        }
+        return out;
+    }
+
+    /**
+     * Moves the blocks of one band towards the boxes they are wired to in the neighbouring bands, keeping
+     * their order, the gap between them and the band's bounds; if that cannot be done the band stays as it is.
+     */
+    private static void align(Row row, Map<Row, List<Block>> blocks, Map<Row, double[]> xs, GraphPicture picture,
+            double minX, double maxX) {
+        Map<String, Double> centres = new HashMap<>();
+        Map<String, Row> rowOf = new HashMap<>();
+        for (Map.Entry<Row, List<Block>> e : blocks.entrySet()) {
+            double[] x = xs.get(e.getKey());
+            for (int i = 0; i < e.getValue().size(); i++) {
+                Block b = e.getValue().get(i);
+                for (int k = 0; k < b.nodes().size(); k++) {
+                    Node n = b.nodes().get(k);
+                    centres.put(n.key(), x[i] + b.offsets()[k] + boxWidth(n) / 2);
+                    rowOf.put(n.key(), e.getKey());
+                }
+            }
+        }
+        List<Block> bs = blocks.get(row);
+        double[] current = xs.get(row);
+        double[] x = new double[bs.size()];
+        for (int i = 0; i < bs.size(); i++) {
+            Block b = bs.get(i);
+            double sum = 0;
+            int count = 0;
+            for (int k = 0; k < b.nodes().size(); k++) {
+                Node n = b.nodes().get(k);
+                double ownOffset = b.offsets()[k] + boxWidth(n) / 2;
+                for (Edge e : picture.edges()) {
+                    String other = e.from().equals(n.key()) ? e.to() : e.to().equals(n.key()) ? e.from() : null;
+                    if (other != null && rowOf.get(other) != row && centres.containsKey(other)) {
+                        sum += centres.get(other) - ownOffset;
+                        count++;
+                    }
+                }
+            }
+            x[i] = count == 0 ? current[i] : sum / count;
+        }
+        for (int i = 0; i < x.length; i++) {
+            x[i] = Math.max(x[i], i == 0 ? minX : x[i - 1] + bs.get(i - 1).width() + GAP_X);
+        }
+        for (int i = x.length - 1; i >= 0; i--) {
+            x[i] = Math.min(x[i], i == x.length - 1 ? maxX - bs.get(i).width() : x[i + 1] - GAP_X - bs.get(i).width());
+        }
+        for (int i = 0; i < x.length; i++) {
+            boolean fits = x[i] >= minX - 1e-6 && (i == 0 || x[i - 1] + bs.get(i - 1).width() + GAP_X <= x[i] + 1e-6);
+            if (!fits) {
+                return;
+            }
+        }
+        xs.put(row, x);
     }
 
     /** The x where the band titles end and the boxes may start. */

@@ -1,6 +1,7 @@
 package org.habla.draw;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
 
 import java.io.ByteArrayInputStream;
 import java.nio.charset.StandardCharsets;
@@ -141,9 +142,46 @@ class DrawingTest {
     }
 
     @Test
+    void aGraphTheSizeOfFigureThreeKeepsEveryBoxInItsBandAndFrameWithoutOverlaps() {
+        GraphPicture p = PioneerPicture.build();
+        Layout layout = Layout.of(p);
+
+        Document svg = parse(SvgWriter.write(p));
+
+        assertThat(rects(svg, "node")).hasSize(p.nodes().size());
+        assertNoOverlap(rects(svg, "node"));
+        assertNoOverlap(rects(svg, "interface"));
+        for (Node n : p.nodes()) {
+            Box b = layout.nodes().get(n.key());
+            Box band = layout.bands().get(n.row());
+            assertThat(b.y()).as(n.key()).isGreaterThanOrEqualTo(band.y());
+            assertThat(b.bottom()).as(n.key()).isLessThanOrEqualTo(band.bottom());
+            assertThat(b.x()).as(n.key()).isGreaterThanOrEqualTo(Layout.MARGIN + Layout.BAND_PAD + Layout.titleColumn());
+            assertThat(b.right()).as(n.key()).isLessThanOrEqualTo(band.right());
+            if (n.row() == Row.INTERFACES) {
+                Box frame = layout.frames().get(n.group());
+                assertThat(b.x()).as(n.key()).isGreaterThanOrEqualTo(frame.x());
+                assertThat(b.right()).as(n.key()).isLessThanOrEqualTo(frame.right());
+            }
+        }
+    }
+
+    @Test
+    void aBoxWiredStraightUpIsDrawnAboveTheBoxItComesFrom() {
+        GraphPicture p = PioneerPicture.build();
+        Layout layout = Layout.of(p);
+
+        // microphone has one wire down (the audio channel) and one up (audio-processing): nothing pulls it aside.
+        double mic = layout.nodes().get("method:microphone").centerX();
+        assertThat(layout.nodes().get("@mic.audio").centerX()).isCloseTo(mic, within(1.0));
+        assertThat(layout.nodes().get("method:audio").centerX()).isCloseTo(mic, within(1.0));
+    }
+
+    @Test
     void everyFormatIsTheSameTextEachTime() throws Exception {
         for (DrawingFormat f : DrawingFormat.values()) {
             assertThat(f.write(pioneerLike())).as(f.name()).isEqualTo(f.write(pioneerLike()));
+            assertThat(f.write(PioneerPicture.build())).as(f.name()).isEqualTo(f.write(PioneerPicture.build()));
         }
     }
 
