@@ -47,6 +47,17 @@ class PythonInterfaceExampleTest {
     }
 
     @Test
+    void theConfigReferenceShowsTheShippedConfigAsItsCompleteExample() throws Exception {
+        String doc = Files.readString(EXAMPLE.resolve("../../docs/config.md").normalize());
+        int start = doc.indexOf("```json\n{\n  \"$schema\"");
+        assertThat(start).as("docs/config.md has the complete example").isNotNegative();
+        int from = doc.indexOf('\n', start) + 1;
+        String documented = doc.substring(from, doc.indexOf("```", from));
+
+        assertThat(JSON.readTree(documented)).isEqualTo(JSON.readTree(EXAMPLE.resolve("habla.json").toFile()));
+    }
+
+    @Test
     void theRoverIsReadAndDrivenThroughTheDaemon(@TempDir Path tmp) throws Exception {
         int[] ports = DaemonProcess.freePorts(4);
         Path cfg = tmp.resolve("habla.json");
