@@ -80,6 +80,8 @@ public final class ConfigLoader {
                     .toString();
         } catch (CharacterCodingException e) {
             throw new ConfigException(List.of(new ConfigError("$", "cannot read " + file + ": not UTF-8 text")));
+        } catch (java.nio.file.NoSuchFileException e) {
+            throw new ConfigException(List.of(new ConfigError("$", "cannot read " + file + ": no such file")));
         } catch (IOException e) {
             throw new ConfigException(List.of(new ConfigError("$", "cannot read " + file + ": " + e)));
         }
