@@ -11,6 +11,7 @@ import java.io.IOException;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -82,6 +83,8 @@ public final class ConfigLoader {
                     .toString();
         } catch (CharacterCodingException e) {
             throw new ConfigException(List.of(new ConfigError("$", "cannot read " + file + ": not UTF-8 text")));
+        } catch (NoSuchFileException e) {
+            throw new ConfigException(List.of(new ConfigError("$", "cannot read " + file + ": no such file")));
         } catch (IOException e) {
             throw new ConfigException(List.of(new ConfigError("$", "cannot read " + file + ": " + e)));
         }
