@@ -103,6 +103,49 @@ class PioneerChainTest {
         }
     }
 
+    @Test
+    void theLinkSocketTellsWhenTheRobotGoesAway() throws Exception {
+        String hello = "{\"type\":\"hello\",\"protocol\":\"habla-interface/1\",\"robot\":\"rover\",\"channels\":"
+                + CHANNELS + "}";
+        InterfaceRobot robot = new InterfaceRobot(hello.replaceAll("\\s+", " "), 3.0, 2.0, 4.0);
+        String json = """
+                {"system": "link-test", "safety": {"watchdogMs": 0}, "status": {"port": 0},
+                 "interfaces": [{"id": "robot", "driver": "habla", "address": "127.0.0.1:%d",
+                                 "reconnect": {"initialMs": 100, "maxMs": 200},
+                                 "params": {"channels": %s}}],
+                 "methods": [
+                  {"id": "link-raw", "type": "channel", "layer": "sensors_actuators", "inputs": {"in": "@robot.link"},
+                   "params": {"kind": "record"}},
+                  {"id": "link-up", "type": "pass-through", "layer": "processing", "inputs": {"in": "link-raw.out"}},
+                  {"id": "link", "type": "link-state", "layer": "virtual", "inputs": {"link": "link-up.out"},
+                   "expose": {"port": %d, "name": "link"}}]}
+                """.formatted(robot.port(), CHANNELS, freePort());
+        PluginRegistry registry = PluginRegistry.discover();
+        try (robot; Daemon daemon = Daemon.start(new ConfigLoader(registry).parse(json), registry, EngineClock.system());
+                Socket link = new Socket("127.0.0.1", daemon.port("link"))) {
+            link.setSoTimeout(5_000);
+            BufferedReader in = new BufferedReader(new InputStreamReader(link.getInputStream(), UTF_8));
+            JsonNode up = nextLink(in, true);
+            assertThat(up.path("interface").asText()).isEqualTo("robot");
+            robot.close();
+            JsonNode down = nextLink(in, false);
+            assertThat(down.path("sinceMs").asLong()).isLessThan(5_000);
+            assertThat(down.path("detail").asText()).isNotEmpty();
+        }
+    }
+
+    /** The next link record with {@code connected} as given (at most 100 lines, each within 5 s). */
+    private static JsonNode nextLink(BufferedReader in, boolean connected) throws Exception {
+        for (int i = 0; i < 100; i++) {
+            JsonNode n = JSON.readTree(in.readLine());
+            if (n.path("type").asText().equals("sample") && n.path("value").path("connected").asBoolean() == connected
+                    && n.path("value").has("connected")) {
+                return n.path("value");
+            }
+        }
+        throw new AssertionError("no link record with connected " + connected + " in 100 lines");
+    }
+
     private static JsonNode nextSample(BufferedReader in) throws Exception {
         for (int i = 0; i < 100; i++) {
             JsonNode n = JSON.readTree(in.readLine());
