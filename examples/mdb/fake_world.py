@@ -44,7 +44,9 @@ class _Client:
         self.alive = True
 
     def send(self, obj):
-        data = (json.dumps(obj) + "\n").encode("utf-8")
+        return self.send_raw((json.dumps(obj) + "\n").encode("utf-8"))
+
+    def send_raw(self, data):
         with self.lock:
             if not self.alive:
                 return False

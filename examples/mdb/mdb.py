@@ -379,6 +379,9 @@ class Runner:
             da = link.distance_angle
             if da is None or (command is None and da.number <= used_sample):
                 continue
+            if da.stale:  # the daemon says the robot's link is down: this is old news, wait for fresh
+                used_sample = da.number
+                continue
             used_sample = da.number
             self._step(Perception(da.distance_m, da.angle_rad, da.seen, command), da.number, start)
 

@@ -256,6 +256,20 @@ class EndToEndTest(unittest.TestCase):
               % (len(reached), summary), file=sys.stderr)
         self.assertGreaterEqual(len(reached), 8, summary)
 
+    def test_a_malformed_line_from_the_daemon_costs_a_reconnect_and_nothing_else(self):
+        with FakeWorld(seed=4, speed=5.0) as world:
+            link = ContractLink("127.0.0.1", world.ports, retry_s=0.1).start()
+            try:
+                self.assertTrue(link.wait_until(lambda: link.samples_seen > 0, 5.0))
+                for client in list(world.servers["distance_angle"].clients):
+                    client.send_raw(b"{this is not json\n")
+                self.assertTrue(link.wait_until(lambda: link.connections == 2, 5.0))
+                seen = link.samples_seen
+                self.assertTrue(link.wait_until(lambda: link.samples_seen > seen, 5.0))
+                self.assertTrue(link.act("back"))
+            finally:
+                link.close()
+
     def test_the_link_reconnects_when_the_daemon_restarts(self):
         world = FakeWorld(seed=2, speed=5.0).start()
         ports = {"command": world.ports["command"], "distance_angle": world.ports["distance_angle"],

@@ -109,7 +109,12 @@ final class RawCamServer implements TekkotsuSocket.Client {
                     }
                 }
             } catch (IOException e) {
-                // the client left; the frame loop notices on its next write
+                // the client left
+            }
+            try {
+                socket.close();
+            } catch (IOException e) {
+                // closing anyway: the frame loop ends on its next write
             }
         }
     }
