@@ -76,20 +76,16 @@ class PioneerChainTest {
 
                 action.getOutputStream().write("{\"value\": \"forward\"}\n".getBytes(UTF_8));
                 List<Double> speeds = new ArrayList<>();
-                long firstNanos = 0;
                 for (int i = 0; i < 200 && (speeds.isEmpty() || speeds.get(speeds.size() - 1) < 0.3 - 1e-9); i++) {
                     JsonNode cmd = robot.next("command", 5_000);
                     assertThat(cmd).as("a motion command reaches the robot").isNotNull();
-                    firstNanos = speeds.isEmpty() ? System.nanoTime() : firstNanos;
                     speeds.add(cmd.path("value").get(0).asDouble());
                 }
-                long rampMs = (System.nanoTime() - firstNanos) / 1_000_000;
                 assertThat(speeds.get(speeds.size() - 1)).as("the channel's top speed, not the asked 0.5")
                         .isCloseTo(0.3, within(1e-9));
-                assertThat(speeds.get(0)).as("the first step of the ramp").isCloseTo(0.025, within(1e-9));
-                assertThat(speeds).isSorted();
-                // 0.3 m/s at 0.5 m/s² takes 0.6 s; a loaded machine can only make it slower
-                assertThat(rampMs).as("ramped, not jumped").isGreaterThanOrEqualTo(450);
+                // 12 steps of 0.025 m/s normally; a busy machine may conflate a few (the newest motion wins)
+                assertThat(speeds).as("ramped, not jumped: " + speeds).hasSizeGreaterThanOrEqualTo(4).isSorted();
+                assertThat(speeds.get(0)).as("the ramp starts low").isLessThan(0.1);
 
                 robot.ranges(0.2, 2.0, 4.0);
                 double last = 0.3;
