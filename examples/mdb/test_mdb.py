@@ -209,8 +209,8 @@ class FakeWorldTest(unittest.TestCase):
 
 
 class EndToEndTest(unittest.TestCase):
-    SPEED = 15.0
-    TEACHER_COMMANDS = 30
+    SPEED = 12.0
+    TEACHER_COMMANDS = 40
     COMMAND_EVERY_S = 2.0
     APPROACH_LIMIT_S = 60.0  # world seconds after the teacher leaves
 
@@ -223,7 +223,7 @@ class EndToEndTest(unittest.TestCase):
                                      "--speed", str(self.SPEED), "--absent-after-s", str(4.5 / self.SPEED),
                                      "--max-seconds", "40", "--log", log] + ports_args(world))
             try:
-                deadline = time.monotonic() + 40
+                deadline = time.monotonic() + 30
                 while time.monotonic() < deadline:
                     r = world.results()
                     if r["reachedAfterS"] is not None or (
@@ -234,12 +234,14 @@ class EndToEndTest(unittest.TestCase):
                 proc.terminate()
                 proc.wait(timeout=10)
             r = world.results()
-            with open(log) as f:
-                r["decisions"] = sum(1 for line in f if '"step"' in line)
+            r["decisions"] = 0
+            if os.path.exists(log):
+                with open(log) as f:
+                    r["decisions"] = sum(1 for line in f if '"step"' in line)
             return r
 
     def test_after_the_teacher_leaves_the_robot_reaches_the_object_in_most_seeded_episodes(self):
-        with tempfile.TemporaryDirectory() as tmp, concurrent.futures.ThreadPoolExecutor(3) as pool:
+        with tempfile.TemporaryDirectory() as tmp, concurrent.futures.ThreadPoolExecutor(5) as pool:
             results = list(pool.map(lambda s: self.episode(s, tmp), range(1, 11)))
         summary = [(r["teacherLeftAt"] is not None, r["reachedAfterS"], round(r["distanceM"], 2)) for r in results]
         for r in results:
