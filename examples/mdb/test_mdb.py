@@ -272,6 +272,45 @@ class EndToEndTest(unittest.TestCase):
             finally:
                 link.close()
 
+    def test_the_mdb_program_keeps_deciding_across_a_daemon_restart(self):
+        world = FakeWorld(seed=5, speed=10.0, teacher_commands=0).start()
+        ports = dict(world.ports)
+        with tempfile.TemporaryDirectory() as tmp:
+            log = os.path.join(tmp, "restart.jsonl")
+            proc = subprocess.Popen([sys.executable, os.path.join(HERE, "mdb.py"), "--speed", "10",
+                                     "--absent-after-s", "0.3", "--max-seconds", "30", "--log", log]
+                                    + ports_args(world))
+
+            def decisions():
+                if not os.path.exists(log):
+                    return 0
+                with open(log) as f:
+                    return sum(1 for line in f if '"step"' in line)
+
+            def wait_for(predicate, seconds):
+                deadline = time.monotonic() + seconds
+                while not predicate() and time.monotonic() < deadline:
+                    time.sleep(0.05)
+                return predicate()
+
+            try:
+                self.assertTrue(wait_for(lambda: decisions() >= 3, 15))
+                world.stop()
+                time.sleep(0.5)
+                before = decisions()
+                world = FakeWorld(seed=6, speed=10.0, teacher_commands=0, ports=ports).start()
+                self.assertTrue(wait_for(lambda: decisions() >= before + 3, 15), "no decisions after the restart")
+                self.assertIsNone(proc.poll())
+                self.assertGreater(world.results()["actions"], 0)
+            finally:
+                proc.terminate()
+                proc.wait(timeout=10)
+                world.stop()
+            with open(log) as f:
+                events = [json.loads(line).get("event") for line in f]
+            self.assertEqual(2, events.count("connected"), events)
+            self.assertEqual("stopped", events[-1])
+
     def test_the_link_reconnects_when_the_daemon_restarts(self):
         world = FakeWorld(seed=2, speed=5.0).start()
         ports = {"command": world.ports["command"], "distance_angle": world.ports["distance_angle"],
