@@ -87,11 +87,14 @@ public final class SphinxDecoder extends AbstractSpeechRecognizer {
         config.setGrammarName(grammarName);
         config.setUseGrammar(true);
         config.setSampleRate(16_000);
-        Context context = new Context(quietSphinxConfig(), config);
         try {
-            SphinxDecoder d = new SphinxDecoder(context);
-            d.warmUp();
-            return d;
+            // A first decoder is run over a few seconds of noise and dropped, so the first real utterance is
+            // decoded by compiled code (without this the teacher's first command comes seconds late); the
+            // decoder kept is a fresh one, because decoding adapts state (the cepstral mean) to what it heard.
+            SphinxDecoder warm = new SphinxDecoder(new Context(quietSphinxConfig(), config));
+            warm.warmUp();
+            warm.recognizer.deallocate();
+            return new SphinxDecoder(new Context(quietSphinxConfig(), config));
         } catch (RuntimeException e) {
             throw new IOException("Sphinx-4 could not load (grammar " + grammarLocation + grammarName + ".gram): "
                     + e.getMessage(), e);
@@ -117,10 +120,7 @@ public final class SphinxDecoder extends AbstractSpeechRecognizer {
         return file.toUri().toURL().toString();
     }
 
-    /**
-     * Decodes a few seconds of quiet noise once while loading, so the first real utterance is decoded
-     * by compiled code: without this the teacher's first command comes seconds late.
-     */
+    /** Decodes a few seconds of quiet noise, to have the decoding code compiled. */
     private void warmUp() {
         java.util.Random noise = new java.util.Random(16_000);
         byte[] pcm = new byte[16_000 * 2];
