@@ -5,7 +5,6 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
-import org.habla.config.ConfigError;
 import org.habla.config.ConfigException;
 import org.habla.config.ConfigLoader;
 import org.habla.config.HablaConfig;
@@ -14,6 +13,7 @@ import org.habla.graph.EngineClock;
 import org.habla.plugin.PluginRegistry;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
@@ -31,25 +31,41 @@ public final class RunCommand implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "CONFIG", description = "The JSON config file.")
     private Path config;
 
+    @Option(names = "--time-scale", paramLabel = "S", defaultValue = "1",
+            description = "Run the engine's clock S times faster than the wall clock (watchdog, periodic work, "
+                    + "action durations), to drive a simulated robot sped up by the same factor. Never for a real robot.")
+    private double timeScale;
+    private final PluginRegistry plugins;
+
+    public RunCommand() {
+        this(null);
+    }
+
+    /** A run with exactly these plugins instead of the ones on the class path. */
+    public RunCommand(PluginRegistry plugins) {
+        this.plugins = plugins;
+    }
+
     @Override
     public Integer call() throws InterruptedException {
         PrintWriter err = spec.commandLine().getErr();
-        PluginRegistry registry = PluginRegistry.discover(Thread.currentThread().getContextClassLoader());
+        PluginRegistry registry = plugins != null ? plugins
+                : PluginRegistry.discover(Thread.currentThread().getContextClassLoader());
         HablaConfig cfg;
         try {
             cfg = new ConfigLoader(registry).load(config);
         } catch (ConfigException e) {
-            err.println(config + ": " + e.errors().size() + (e.errors().size() == 1 ? " error" : " errors")
-                    + "; the daemon does not start:");
-            for (ConfigError ce : e.errors()) {
-                err.println("  " + ce.path() + ": " + ce.message());
-            }
+            ConfigReport.errors(err, config, e.errors(), "the daemon does not start");
+            return ExitCodes.USAGE_OR_CONFIG;
+        }
+        if (!(timeScale >= 1) || !Double.isFinite(timeScale)) {
+            err.println("habla run: --time-scale must be 1 or more, was " + timeScale);
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
         }
         Daemon daemon;
         try {
-            daemon = Daemon.start(cfg, registry, EngineClock.system());
+            daemon = Daemon.start(cfg, registry, timeScale == 1 ? EngineClock.system() : EngineClock.scaled(timeScale));
         } catch (IOException e) {
             err.println("habla run: " + e.getMessage());
             err.flush();

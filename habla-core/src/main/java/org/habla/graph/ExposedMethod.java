@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.habla.config.Expose;
 import org.habla.method.Input;
@@ -109,6 +110,10 @@ final class ExposedMethod implements ControlPoint {
         if (!input.accepts(value)) {
             throw new Rejected("bad_value", "input '" + input.name() + "' takes " + input.kind().wireName()
                     + ", got " + value.kind().wireName());
+        }
+        Optional<String> refused = input.refusal(value);
+        if (refused.isPresent()) {
+            throw new Rejected("bad_value", refused.get());
         }
         MethodState state = runner.method().state();
         if (state != MethodState.RUNNING) {

@@ -137,6 +137,10 @@ public final class MethodGraph implements AutoCloseable {
             Output<?> out = runner.method().output(e.getKey()).orElseThrow();
             InterfaceLink link = links.get(e.getValue().interfaceId());
             String channel = e.getValue().channel();
+            ChannelDescriptor descriptor = link.channel(channel);
+            if (descriptor != null) {
+                runner.bindCommandChannel(out, descriptor);
+            }
             runner.port(out).subscribe(sample -> link.command(channel, sample));
         }
         mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner,

@@ -44,6 +44,7 @@ final class MethodRunner implements MethodContext {
     private final Map<Input<?>, InputSlot> slotByInput = new HashMap<>();
     private final Map<Output<?>, OutputPort> ports = new HashMap<>();
     private final Map<Input<?>, ChannelDescriptor> channels = new HashMap<>();
+    private final Map<Output<?>, ChannelDescriptor> commandChannels = new HashMap<>();
     private final ConcurrentLinkedQueue<Runnable> turns = new ConcurrentLinkedQueue<>();
     private final AtomicBoolean signalled = new AtomicBoolean();
     private final AtomicBoolean tickPending = new AtomicBoolean();
@@ -95,6 +96,10 @@ final class MethodRunner implements MethodContext {
 
     void bindChannel(Input<?> input, ChannelDescriptor channel) {
         channels.put(input, channel);
+    }
+
+    void bindCommandChannel(Output<?> output, ChannelDescriptor channel) {
+        commandChannels.put(output, channel);
     }
 
     void stale(boolean isStale) {
@@ -218,6 +223,11 @@ final class MethodRunner implements MethodContext {
     @Override
     public Optional<ChannelDescriptor> channelOf(Input<?> input) {
         return Optional.ofNullable(channels.get(input));
+    }
+
+    @Override
+    public Optional<ChannelDescriptor> commandChannelOf(Output<?> output) {
+        return Optional.ofNullable(commandChannels.get(output));
     }
 
     @Override

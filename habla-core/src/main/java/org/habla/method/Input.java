@@ -1,6 +1,8 @@
 package org.habla.method;
 
 import java.util.Objects;
+import java.util.Optional;
+import java.util.function.Function;
 import org.habla.sample.Payload;
 import org.habla.sample.PayloadKind;
 import org.habla.sample.Sample;
@@ -17,13 +19,20 @@ public final class Input<P extends Payload> {
     private final Delivery delivery;
     private final InputHandler<P> handler;
     private final boolean optional;
+    private final Function<? super P, String> refusal;
 
     Input(String name, Class<P> type, Delivery delivery, InputHandler<P> handler, boolean optional) {
+        this(name, type, delivery, handler, optional, null);
+    }
+
+    Input(String name, Class<P> type, Delivery delivery, InputHandler<P> handler, boolean optional,
+            Function<? super P, String> refusal) {
         this.name = PortNames.check(name);
         this.type = Objects.requireNonNull(type, "type");
         this.delivery = Objects.requireNonNull(delivery, "delivery");
         this.handler = handler;
         this.optional = optional;
+        this.refusal = refusal;
     }
 
     public String name() {
@@ -55,6 +64,18 @@ public final class Input<P extends Payload> {
     /** Whether {@code payload} fits this input. */
     public boolean accepts(Payload payload) {
         return type.isInstance(payload);
+    }
+
+    /**
+     * Why the method would refuse {@code payload} written by a control client, or empty if it takes it.
+     * The engine asks before it queues a control write, so the client gets an error line at once
+     * instead of a value that silently does nothing. Only a payload this input {@link #accepts} is checked.
+     */
+    public Optional<String> refusal(Payload payload) {
+        if (refusal == null || !accepts(payload)) {
+            return Optional.empty();
+        }
+        return Optional.ofNullable(refusal.apply(type.cast(payload)));
     }
 
     InputHandler<P> handler() {

@@ -8,6 +8,7 @@ import java.util.Objects;
 import java.util.Optional;
 import java.util.concurrent.Callable;
 import java.util.function.Consumer;
+import java.util.function.Function;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.sample.Payload;
 import org.habla.sample.Sample;
@@ -72,6 +73,19 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
     protected final <P extends Payload> Input<P> input(String name, Class<P> type, Delivery delivery,
             InputHandler<P> handler) {
         return addInput(new Input<>(name, type, delivery, Objects.requireNonNull(handler, "handler"), false));
+    }
+
+    /**
+     * Declares an input whose values a control client may write, with a check that names why a value is
+     * refused ({@code null} when it is taken). The check runs on the client's thread before the value is
+     * queued, so it must look only at the value and at fields fixed at construction (params), never at
+     * state the handler changes. The handler still sees only values the check let through from control,
+     * but must treat values from wired methods on its own.
+     */
+    protected final <P extends Payload> Input<P> input(String name, Class<P> type, Delivery delivery,
+            InputHandler<P> handler, Function<? super P, String> refusal) {
+        return addInput(new Input<>(name, type, delivery, Objects.requireNonNull(handler, "handler"), false,
+                Objects.requireNonNull(refusal, "refusal")));
     }
 
     /** Declares an input the config may leave unwired. */
@@ -171,6 +185,14 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
     /** The interface channel an input is wired to, with its metadata (e.g. sonar poses). */
     protected final Optional<ChannelDescriptor> channelOf(Input<?> input) {
         return context().channelOf(input);
+    }
+
+    /**
+     * The interface command channel an output is written to (the config's {@code commands}), with its
+     * metadata (e.g. a base's speed limits); empty when the output goes to methods only.
+     */
+    protected final Optional<ChannelDescriptor> commandChannelOf(Output<?> output) {
+        return context().commandChannelOf(output);
     }
 
     /** Reports whether the method can do its work yet. */

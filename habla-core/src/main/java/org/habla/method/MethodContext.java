@@ -25,6 +25,11 @@ public interface MethodContext {
     /** The descriptor of the interface channel an input is wired to, if it is wired to one. */
     Optional<ChannelDescriptor> channelOf(Input<?> input);
 
+    /** The descriptor of the interface command channel an output writes, if it writes one. */
+    default Optional<ChannelDescriptor> commandChannelOf(Output<?> output) {
+        return Optional.empty();
+    }
+
     /** Tells the status whether the method can do its work yet (e.g. a model still loading). */
     void readiness(boolean ready, String detail);
 

@@ -31,6 +31,7 @@ public final class MethodHarness {
     private final String id;
     private final Map<String, List<Sample>> emitted = new HashMap<>();
     private final Map<String, ChannelDescriptor> channels = new HashMap<>();
+    private final Map<String, ChannelDescriptor> commandChannels = new HashMap<>();
     private final ArrayDeque<Runnable> pendingBackground = new ArrayDeque<>();
     private final Map<String, Long> sequences = new HashMap<>();
     private long nowMicros = 1_700_000_000_000_000L;
@@ -60,6 +61,13 @@ public final class MethodHarness {
     public MethodHarness wireChannel(String input, ChannelDescriptor channel) {
         requireInput(input);
         channels.put(input, channel);
+        return this;
+    }
+
+    /** Describes the interface command channel an output writes (before {@link #start()}). */
+    public MethodHarness wireCommand(String output, ChannelDescriptor channel) {
+        requireOutput(output);
+        commandChannels.put(output, channel);
         return this;
     }
 
@@ -102,6 +110,18 @@ public final class MethodHarness {
         long seq = sequences.merge("in:" + input, 1L, Long::sum);
         method.deliver(in, new Sample(value, "harness." + input, seq, sourceMicros, false));
         return this;
+    }
+
+    /**
+     * Writes a value to an input as a control client would: a value the input's check refuses throws
+     * {@link IllegalArgumentException} with the message the client would get, and is not delivered.
+     */
+    public MethodHarness write(String input, Payload value) {
+        Input<?> in = requireInput(input);
+        in.refusal(value).ifPresent(why -> {
+            throw new IllegalArgumentException(why);
+        });
+        return push(input, value);
     }
 
     /** Moves the clock forward, running every tick that falls due on the way. */
@@ -201,6 +221,11 @@ public final class MethodHarness {
         @Override
         public Optional<ChannelDescriptor> channelOf(Input<?> input) {
             return Optional.ofNullable(channels.get(input.name()));
+        }
+
+        @Override
+        public Optional<ChannelDescriptor> commandChannelOf(Output<?> output) {
+            return Optional.ofNullable(commandChannels.get(output.name()));
         }
 
         @Override

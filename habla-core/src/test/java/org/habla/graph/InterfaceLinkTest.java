@@ -95,6 +95,30 @@ class InterfaceLinkTest {
         }
     }
 
+    /** The driver's session is up once the link says so, a moment after the robot accepted the connection. */
+    private static void awaitUp(MethodGraph g) throws InterruptedException {
+        long end = System.nanoTime() + 5_000_000_000L;
+        while (!g.status().path("interfaces").get(0).path("up").asBoolean() && System.nanoTime() < end) {
+            Thread.sleep(5);
+        }
+        assertThat(g.status().path("interfaces").get(0).path("up").asBoolean()).as("link up").isTrue();
+    }
+
+    /**
+     * Waits until the exposed method's staleness is the wanted one: told by a notice, or already so when the
+     * change happened before the recorder subscribed.
+     */
+    private static void awaitStaleness(ControlPoint p, Recorder rec, boolean wanted) throws InterruptedException {
+        long end = System.nanoTime() + 5_000_000_000L;
+        while (System.nanoTime() < end) {
+            Boolean next = rec.staleness.poll(20, TimeUnit.MILLISECONDS);
+            if ((next != null && next == wanted) || (next == null && p.stale() == wanted)) {
+                return;
+            }
+        }
+        throw new AssertionError("no staleness notice " + wanted + " within 5 s");
+    }
+
     private static void write(ControlPoint p, double value) throws ControlPoint.Rejected {
         p.write(p.controlInputs().get(0), new NumberValue(value));
     }
@@ -105,8 +129,37 @@ class InterfaceLinkTest {
         toClose.add(robot);
         MethodGraph g = start(robot.port(), 0);
         assertThat(robot.awaitClient(5_000)).isTrue();
+        awaitUp(g);
         write(point(g, "cmd"), 0.25);
         assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.25");
+    }
+
+    @Test
+    void aControlValueTheMethodRefusesIsAnsweredAtOnceAndNeverReachesTheRobot() throws Exception {
+        FakeLineRobot robot = new FakeLineRobot(0);
+        toClose.add(robot);
+        MethodGraph g = start(robot.port(), 0);
+        assertThat(robot.awaitClient(5_000)).isTrue();
+        ControlPoint.Rejected rejected = org.assertj.core.api.Assertions.catchThrowableOfType(
+                ControlPoint.Rejected.class, () -> write(point(g, "cmd"), 500));
+        assertThat(rejected).isNotNull();
+        assertThat(rejected.code()).isEqualTo("bad_value");
+        assertThat(rejected.getMessage()).contains("within ±100");
+        write(point(g, "cmd"), 0.75);
+        assertThat(robot.next(5_000)).as("the refused value was never queued").isEqualTo("cmd motor 0.75");
+    }
+
+    @Test
+    void anActuatorSeesTheCommandChannelItsOutputWrites() {
+        MethodGraph g = start(1, 0);
+        JsonNode act = null;
+        for (JsonNode m : g.status().path("methods")) {
+            if (m.path("id").asText().equals("act")) {
+                act = m;
+            }
+        }
+        assertThat(act).isNotNull();
+        assertThat(act.path("readiness").asText()).isEqualTo("writes motor in m/s");
     }
 
     @Test
@@ -115,6 +168,7 @@ class InterfaceLinkTest {
         toClose.add(robot);
         MethodGraph g = start(robot.port(), 300);
         assertThat(robot.awaitClient(5_000)).isTrue();
+        awaitUp(g);
         long t0 = System.nanoTime();
         write(point(g, "cmd"), 0.5);
         assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.5");
@@ -135,6 +189,7 @@ class InterfaceLinkTest {
         toClose.add(robot);
         MethodGraph g = start(robot.port(), 0);
         assertThat(robot.awaitClient(5_000)).isTrue();
+        awaitUp(g);
         write(point(g, "cmd"), 0.5);
         assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.5");
         point(g, "cmd").writerLeft();
@@ -149,14 +204,15 @@ class InterfaceLinkTest {
         Recorder rec = new Recorder();
         point(g, "v").subscribe(rec);
         assertThat(robot.awaitClient(5_000)).isTrue();
-        assertThat(rec.staleness.poll(5, TimeUnit.SECONDS)).isFalse();
+        awaitUp(g);
+        awaitStaleness(point(g, "v"), rec, false);
         robot.send("value 1");
         Sample fresh = rec.samples.poll(5, TimeUnit.SECONDS);
         assertThat(fresh.payload()).isEqualTo(new NumberValue(4));
         assertThat(fresh.stale()).isFalse();
 
         robot.close();
-        assertThat(rec.staleness.poll(5, TimeUnit.SECONDS)).isTrue();
+        awaitStaleness(point(g, "v"), rec, true);
         assertThat(point(g, "v").stale()).isTrue();
         // While the robot is away, a motion command is dropped, not queued.
         write(point(g, "cmd"), 0.7);
@@ -169,7 +225,8 @@ class InterfaceLinkTest {
         FakeLineRobot again = new FakeLineRobot(port);
         toClose.add(again);
         assertThat(again.awaitClient(5_000)).isTrue();
-        assertThat(rec.staleness.poll(5, TimeUnit.SECONDS)).isFalse();
+        awaitUp(g);
+        awaitStaleness(point(g, "v"), rec, false);
         again.send("value 2");
         Sample after = rec.samples.poll(5, TimeUnit.SECONDS);
         assertThat(after.payload()).isEqualTo(new NumberValue(5));
@@ -188,6 +245,7 @@ class InterfaceLinkTest {
         Recorder rec = new Recorder();
         point(g, "v").subscribe(rec);
         assertThat(robot.awaitClient(5_000)).isTrue();
+        awaitUp(g);
         robot.send("value not-a-number");
         robot.send("nosuchchannel 3");
         robot.send("value 7");

@@ -1,0 +1,104 @@
+package org.habla.methods.virtual;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.time.Duration;
+import org.habla.method.Delivery;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.method.Shape;
+import org.habla.method.VirtualMethod;
+import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.sample.RecordValue;
+import org.habla.sample.Sample;
+
+/**
+ * The distance-angle method, type {@code distance-angle}: where the target is, for the control
+ * architecture, as {@code {"distanceM", "angleRad", "seen"}} in the robot frame (angle positive to the
+ * left) at a steady {@code rateHz}. It reads either a {@code nearest} record (from {@code nearest-distance},
+ * the nearest thing the range sensors see) or a {@code position} record (from {@code coordinate-translation},
+ * the target the camera sees); whichever is wired. While the target is not perceived — the input says so,
+ * or nothing fresh came for {@code lostAfterMs} — {@code seen} is false and the distance and angle are those
+ * of the last sighting (zero before the first). Nothing is emitted before the first input arrives.
+ */
+public final class DistanceAngle extends VirtualMethod {
+
+    private final DistanceAngleParams params;
+    private final Output<RecordValue> out = output("distance_angle", RecordValue.class,
+            Shape.record("the target in the robot frame: distance (m), bearing (rad, + left), whether it is perceived",
+                    "distanceM", "angleRad", "seen"));
+
+    private boolean started;
+    private boolean seen;
+    private double distanceM;
+    private double angleRad;
+    private long lastSeenMicros;
+    private long lastSourceMicros;
+    private long malformed;
+
+    DistanceAngle(DistanceAngleParams params) {
+        this.params = params;
+        optionalInput("nearest", RecordValue.class, Delivery.latest(), this::onNearest);
+        optionalInput("position", RecordValue.class, Delivery.latest(), this::onPosition);
+        tickEvery(Duration.ofNanos(Math.round(1e9 / params.rateHz())));
+    }
+
+    private void onNearest(RecordValue value, Sample sample) {
+        JsonNode valid = value.get("valid");
+        update(value, !valid.isBoolean() || valid.booleanValue(), sample);
+    }
+
+    private void onPosition(RecordValue value, Sample sample) {
+        JsonNode s = value.get("seen");
+        update(value, s.isBoolean() && s.booleanValue(), sample);
+    }
+
+    private void update(RecordValue value, boolean perceived, Sample sample) {
+        started = true;
+        lastSourceMicros = sample.sourceMicros();
+        if (!perceived) {
+            seen = false;
+            return;
+        }
+        double d = finite(value.get("distanceM"));
+        double a = finite(value.get("angleRad"));
+        if (Double.isNaN(d) || Double.isNaN(a) || d < 0) {
+            if (malformed++ == 0) {
+                log().warn("{}: a record without finite distanceM >= 0 and angleRad was ignored: {}", id(), value);
+            }
+            return;
+        }
+        seen = true;
+        distanceM = d;
+        angleRad = a;
+        lastSeenMicros = nowMicros();
+    }
+
+    @Override
+    protected void onTick(long nowMicros) {
+        if (!started) {
+            return;
+        }
+        if (seen && nowMicros - lastSeenMicros > params.lostAfterMs() * 1000L) {
+            seen = false;
+        }
+        emit(out, RecordValue.builder().put("distanceM", distanceM).put("angleRad", angleRad).put("seen", seen).build(),
+                lastSourceMicros);
+    }
+
+    /** Input records that lacked a finite distance or angle, since start. */
+    public long malformed() {
+        return malformed;
+    }
+
+    private static double finite(JsonNode n) {
+        return n.isNumber() && Double.isFinite(n.doubleValue()) ? n.doubleValue() : Double.NaN;
+    }
+
+    /** Makes {@code distance-angle} methods. */
+    public static final class Provider extends SimpleMethodProvider<DistanceAngleParams> {
+        public Provider() {
+            super("distance-angle", "The target's distance and bearing with a seen flag, at a steady rate",
+                    DistanceAngleParams.class, (layer, p) -> new DistanceAngle(p), Layer.VIRTUAL);
+        }
+    }
+}

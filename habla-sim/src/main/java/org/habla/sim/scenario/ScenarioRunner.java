@@ -1,0 +1,226 @@
+package org.habla.sim.scenario;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+
+/**
+ * Runs a scenario as a user would deploy it: the simulated robot, the daemon with the robot's config
+ * and the control program, each its own process, talking over loopback. The runner drives the episodes
+ * through the simulator's ground truth — put the robot at its start, let the teacher teach, send the
+ * teacher away, watch whether the robot still reaches the object — and measures them. It never talks to
+ * the daemon or the control program: what it measures is what the robot did in the simulated world.
+ */
+final class ScenarioRunner {
+
+    /** How a run is set up. */
+    record Options(ScenarioFile scenario, int episodes, double speed, long seed, Path reportDir, int portOffset,
+            Path home) {
+    }
+
+    private final Options o;
+    private final PrintWriter out;
+
+    ScenarioRunner(Options options, PrintWriter out) {
+        this.o = options;
+        this.out = out;
+    }
+
+    List<EpisodeLog> run() throws IOException, InterruptedException {
+        ScenarioFile sc = o.scenario();
+        Files.createDirectories(o.reportDir());
+        Path robotConfig = o.home().resolve(sc.config());
+        Path mdb = o.home().resolve("examples/mdb/mdb.py");
+        if (!Files.isRegularFile(robotConfig)) {
+            throw new IOException("no robot config at " + robotConfig);
+        }
+        if (!Files.isRegularFile(mdb)) {
+            throw new IOException("no control program at " + mdb);
+        }
+        Path derived = DerivedConfig.write(robotConfig, o.speed(), o.portOffset(), o.reportDir().resolve("daemon-config.json"));
+        int truthPort = (sc.robot().equals("pioneer") ? 8199 : 10199) + o.portOffset();
+        List<EpisodeLog> episodes = new ArrayList<>();
+        try (Children children = new Children()) {
+            Children.Child sim = children.start("simulator", simCommand(truthPort), o.home(), o.reportDir().resolve("simulator.log"));
+            say("simulated %s started (speed %sx); waiting for its ground truth on port %d", sc.robot(), fmt(o.speed()), truthPort);
+            try (TruthLink truth = TruthLink.connect(truthPort, 60_000)) {
+                truth.send(TruthLink.op("teacher").put("present", false));
+                Children.Child daemon = children.start("daemon",
+                        Children.habla("run", derived.toString(), "--time-scale", fmt(o.speed())), o.home(),
+                        o.reportDir().resolve("daemon.log"));
+                int[] ports = new int[4];
+                String[] names = {"command", "distance_angle", "reward", "action"};
+                for (int i = 0; i < 4; i++) {
+                    ports[i] = DerivedConfig.exposedPort(derived, names[i]);
+                    if (ports[i] < 0) {
+                        throw new IOException(robotConfig + " does not expose the control contract's '" + names[i] + "' socket");
+                    }
+                }
+                awaitPort(ports[1], 120_000, daemon);
+                say("daemon up: command %d, distance_angle %d, reward %d, action %d", ports[0], ports[1], ports[2], ports[3]);
+                Children.Child control = children.start("control", List.of("python3", "-u", mdb.toString(),
+                        "--host", "127.0.0.1", "--command-port", "" + ports[0], "--distance-angle-port", "" + ports[1],
+                        "--reward-port", "" + ports[2], "--action-port", "" + ports[3], "--seed", "" + o.seed(),
+                        "--speed", fmt(o.speed()), "--step-s", fmt(sc.stepS() / o.speed()), "--log", o.reportDir().resolve("control.jsonl").toString()),
+                        o.home(), o.reportDir().resolve("control.log"));
+                for (int e = 1; e <= o.episodes(); e++) {
+                    episodes.add(episode(e, truth, List.of(sim, daemon, control)));
+                }
+            }
+        }
+        summary(episodes);
+        return episodes;
+    }
+
+    private List<String> simCommand(int truthPort) {
+        ScenarioFile sc = o.scenario();
+        List<String> args = new ArrayList<>(List.of("sim", sc.robot(), "--world", sc.world(), "--speed", fmt(o.speed()),
+                "--seed", "" + o.seed(), "--truth-port", "" + truthPort, "--teacher", "off"));
+        if (sc.robot().equals("pioneer")) {
+            args.addAll(List.of("--port", "" + (8101 + o.portOffset()), "--mic-port", "" + (8110 + o.portOffset()),
+                    "--keys-port", "" + (8111 + o.portOffset())));
+        } else {
+            args.addAll(List.of("--port-base", "" + (10000 + o.portOffset())));
+        }
+        return Children.habla(args.toArray(String[]::new));
+    }
+
+    private EpisodeLog episode(int n, TruthLink truth, List<Children.Child> procs) throws IOException, InterruptedException {
+        ScenarioFile sc = o.scenario();
+        ScenarioFile.StartPose start = sc.starts().get((n - 1) % sc.starts().size());
+        ObjectNode reset = TruthLink.op("reset");
+        reset.putObject("robot").put("xM", start.xM()).put("yM", start.yM()).put("thetaRad", start.thetaRad());
+        truth.send(reset);
+        JsonNode first = next(truth, Double.NEGATIVE_INFINITY, procs);
+        double t0 = first.path("t").asDouble();
+        truth.send(TruthLink.op("teacher").put("present", true));
+        say("episode %d/%d: teacher present for %ss, robot at (%.2f, %.2f)", n, o.episodes(), fmt(sc.teacherS()),
+                start.xM(), start.yM());
+        List<double[]> distance = new ArrayList<>();
+        int[][] counts = new int[3][];
+        double[] thirds = {t0 + sc.teacherS() / 3, t0 + 2 * sc.teacherS() / 3, t0 + sc.teacherS()};
+        int third = 0;
+        double lastSay = t0;
+        JsonNode s = first;
+        while (third < 3) {
+            s = next(truth, s.path("t").asDouble(), procs);
+            double t = s.path("t").asDouble();
+            distance.add(new double[] {t - t0, s.path("distanceM").asDouble()});
+            while (third < 3 && t >= thirds[third]) {
+                JsonNode tch = s.path("teacher");
+                counts[third++] = new int[] {tch.path("commands").asInt(), tch.path("plus").asInt(), tch.path("minus").asInt()};
+            }
+            if (t - lastSay >= 15) {
+                lastSay = t;
+                JsonNode tch = s.path("teacher");
+                say("  episode %d  taught  t=%5.1fs  distance %.2f m  rewards +%d −%d", n, t - t0,
+                        s.path("distanceM").asDouble(), tch.path("plus").asInt(), tch.path("minus").asInt());
+            }
+        }
+        truth.send(TruthLink.op("teacher").put("present", false));
+        double left = s.path("t").asDouble();
+        say("  episode %d  teacher left at t=%.1fs; distance %.2f m", n, left - t0, s.path("distanceM").asDouble());
+        boolean reached = false;
+        double reachAfter = Double.NaN;
+        while (s.path("t").asDouble() < left + sc.aloneS()) {
+            s = next(truth, s.path("t").asDouble(), procs);
+            double t = s.path("t").asDouble();
+            double d = s.path("distanceM").asDouble();
+            distance.add(new double[] {t - t0, d});
+            if (d <= sc.reachM()) {
+                reached = true;
+                reachAfter = t - left;
+                break;
+            }
+            if (t - lastSay >= 15) {
+                lastSay = t;
+                say("  episode %d  alone   t=%5.1fs  distance %.2f m", n, t - t0, d);
+            }
+        }
+        double[] obedience = new double[3];
+        int[] prev = {0, 0, 0};
+        for (int i = 0; i < 3; i++) {
+            int plus = counts[i][1] - prev[1];
+            int minus = counts[i][2] - prev[2];
+            obedience[i] = plus + minus == 0 ? Double.NaN : (double) plus / (plus + minus);
+            prev = counts[i];
+        }
+        EpisodeLog log = new EpisodeLog(n, start, obedience, counts[2][0], counts[2][1], counts[2][2], distance,
+                left - t0, reached, reachAfter, s.path("distanceM").asDouble());
+        say("  episode %d: obedience %s; %s", n, pct(log.overallObedience()),
+                reached ? String.format(Locale.ROOT, "reached the object %.1fs after the teacher left", reachAfter)
+                        : String.format(Locale.ROOT, "did not reach the object (%.2f m left)", log.finalDistanceM()));
+        return log;
+    }
+
+    /** The next state line after simulated time {@code after}; fails if a process died or the world stalled. */
+    private JsonNode next(TruthLink truth, double after, List<Children.Child> procs) throws IOException, InterruptedException {
+        long end = System.nanoTime() + 20_000_000_000L;
+        while (System.nanoTime() < end) {
+            for (Children.Child c : procs) {
+                if (!c.alive()) {
+                    throw new IOException("the " + c.name() + " stopped (exit " + c.process().exitValue() + "); see " + c.log());
+                }
+            }
+            JsonNode n = truth.awaitTime(Math.nextUp(after), 200);
+            if (n != null) {
+                return n;
+            }
+            if (!truth.alive()) {
+                throw new IOException("the simulator closed its ground truth");
+            }
+        }
+        throw new IOException("the simulated world did not advance for 20 s");
+    }
+
+    private static void awaitPort(int port, long timeoutMs, Children.Child owner) throws IOException, InterruptedException {
+        long end = System.nanoTime() + timeoutMs * 1_000_000L;
+        while (System.nanoTime() < end) {
+            if (!owner.alive()) {
+                throw new IOException("the " + owner.name() + " stopped (exit " + owner.process().exitValue() + "); see " + owner.log());
+            }
+            try (Socket s = new Socket()) {
+                s.connect(new InetSocketAddress("127.0.0.1", port), 500);
+                return;
+            } catch (IOException e) {
+                Thread.sleep(200);
+            }
+        }
+        throw new IOException("port " + port + " did not open within " + timeoutMs + " ms; see " + owner.log());
+    }
+
+    private void summary(List<EpisodeLog> eps) {
+        say("");
+        say("%-8s %-10s %-10s %-10s %-10s %-9s %s", "episode", "obey 1/3", "obey 2/3", "obey 3/3", "commands", "reached", "after");
+        int reached = 0;
+        for (EpisodeLog e : eps) {
+            reached += e.reached() ? 1 : 0;
+            say("%-8d %-10s %-10s %-10s %-10d %-9s %s", e.episode(), pct(e.obedience()[0]), pct(e.obedience()[1]),
+                    pct(e.obedience()[2]), e.commands(), e.reached() ? "yes" : "no",
+                    e.reached() ? String.format(Locale.ROOT, "%.1fs", e.reachAfterS()) : "-");
+        }
+        say("reached after the teacher left: %d of %d episodes (%s)", reached, eps.size(),
+                pct(eps.isEmpty() ? Double.NaN : (double) reached / eps.size()));
+    }
+
+    static String pct(double x) {
+        return Double.isNaN(x) ? "-" : String.format(Locale.ROOT, "%.0f%%", 100 * x);
+    }
+
+    static String fmt(double x) {
+        return x == Math.rint(x) ? String.valueOf((long) x) : String.valueOf(x);
+    }
+
+    private void say(String format, Object... args) {
+        out.println(String.format(Locale.ROOT, format, args));
+        out.flush();
+    }
+}

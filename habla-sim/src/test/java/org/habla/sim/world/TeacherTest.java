@@ -1,0 +1,86 @@
+package org.habla.sim.world;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.util.ArrayList;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+class TeacherTest {
+
+    /** A voice that writes down what the teacher gives. */
+    static final class Transcript implements TeacherVoice {
+        final List<String> said = new ArrayList<>();
+
+        @Override
+        public synchronized void giveCommand(String label) {
+            said.add(label);
+        }
+
+        @Override
+        public synchronized void giveReward(double value) {
+            said.add(value > 0 ? "+" : "-");
+        }
+    }
+
+    private final Transcript voice = new Transcript();
+    private final Target target = new Target(4, 1, 0.15, "pink");
+    private final Teacher teacher = new Teacher(TeacherSettings.DEFAULTS, voice);
+
+    @Test
+    void theCommandPointsTheRobotTowardsTheTarget() {
+        assertThat(teacher.commandTowards(new Pose2(1, 1, 0), target)).isEqualTo("forward");
+        assertThat(teacher.commandTowards(new Pose2(1, 1, -Math.PI / 2), target)).isEqualTo("left");
+        assertThat(teacher.commandTowards(new Pose2(1, 1, Math.PI / 2), target)).isEqualTo("right");
+        assertThat(teacher.commandTowards(new Pose2(1, 1, 0.3), target)).isEqualTo("forward");
+        assertThat(teacher.commandTowards(new Pose2(1, 1, 0.4), target)).isEqualTo("right");
+    }
+
+    @Test
+    void aRobotThatTurnsAsToldIsRewardedAndOneThatDoesNotIsPunished() {
+        Pose2 facingAway = new Pose2(1, 1, Math.PI / 2);
+        teacher.step(2.99, facingAway, target);
+        assertThat(voice.said).isEmpty();
+        teacher.step(3.0, facingAway, target);
+        assertThat(voice.said).containsExactly("right");
+        teacher.step(4.0, facingAway, target);
+        teacher.step(4.5, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        assertThat(voice.said).containsExactly("right", "+");
+        assertThat(teacher.lastReward()).isEqualTo(1.0);
+        // Next command at 6.0; the robot stays put, so it is punished at 7.5.
+        teacher.step(6.0, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        teacher.step(7.5, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        assertThat(voice.said).containsExactly("right", "+", "right", "-");
+        assertThat(teacher.lastCommand()).isEqualTo("right");
+        assertThat(teacher.lastReward()).isEqualTo(-1.0);
+    }
+
+    @Test
+    void forwardAndBackAreJudgedByDisplacementAlongTheHeading() {
+        Pose2 from = new Pose2(1, 1, Math.PI / 4);
+        assertThat(teacher.obeyed("forward", from, from.moved(0.1, 0, 0))).isTrue();
+        assertThat(teacher.obeyed("forward", from, from.moved(-0.1, 0, 0))).isFalse();
+        assertThat(teacher.obeyed("forward", from, from.moved(0, 0.1, 0))).isFalse();
+        assertThat(teacher.obeyed("back", from, from.moved(-0.1, 0, 0))).isTrue();
+        assertThat(teacher.obeyed("left", from, from.moved(0, 0, 0.2))).isTrue();
+        assertThat(teacher.obeyed("left", from, from.moved(0, 0, -0.2))).isFalse();
+    }
+
+    @Test
+    void anAbsentTeacherSaysNothingUntilAskedAndCanStillBeMadeToSpeak() {
+        teacher.setPresent(false);
+        for (int i = 1; i <= 100; i++) {
+            teacher.step(i * 0.1, new Pose2(1, 1, 0), target);
+        }
+        assertThat(voice.said).isEmpty();
+        teacher.commandNow("back", new Pose2(1, 1, 0));
+        teacher.step(11.6, new Pose2(0.8, 1, 0), target);
+        teacher.rewardNow(-0.5);
+        assertThat(voice.said).containsExactly("back", "+", "-");
+        assertThat(teacher.commandCount()).isEqualTo(1);
+        assertThat(teacher.rewardCount()).isEqualTo(2);
+        assertThatThrownBy(() -> teacher.commandNow("sideways", Pose2.ORIGIN)).hasMessageContaining("sideways");
+        assertThatThrownBy(() -> teacher.rewardNow(2)).hasMessageContaining("[-1, 1]");
+    }
+}
