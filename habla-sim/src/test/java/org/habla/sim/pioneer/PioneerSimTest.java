@@ -95,8 +95,8 @@ class PioneerSimTest {
             assertThat(odo.number("xM")).isCloseTo(end.xM() - start.xM(), within(0.005));
             assertThat(odo.number("yM")).isCloseTo(end.yM() - start.yM(), within(0.005));
             assertThat(stopped.number("thetaRad")).isCloseTo(0, within(0.002));
-            // 1 s ramp to 0.3 m/s (0.15 m), ≥ 2 s cruising (0.6 m), 1 s ramp down (0.15 m).
-            assertThat(odo.number("xM")).isBetween(0.85, 1.3);
+            // At least 2 s of cruising at 0.3 m/s plus the two ramps (how much more depends on the test's latency).
+            assertThat(odo.number("xM")).isGreaterThan(0.6 + 0.15 + 0.15 - 0.01);
         }
     }
 
@@ -172,15 +172,27 @@ class PioneerSimTest {
             h.command("motion", VectorValue.of(0.3, 0));
             h.await("odometry", RecordValue.class, o -> o.number("vMps") > 0.29, WAIT_MS);
             h.keepAlive(false);
+            h.pulse(); // the last packet
             double silentFrom = sim.clock().nowS();
-            waitSim(1.5);
-            assertThat(odometry(h).number("vMps")).as("still driving 1.5 s into the silence").isGreaterThan(0.29);
-            h.await("odometry", RecordValue.class, o -> o.number("vMps") == 0, WAIT_MS);
-            // Tripped 2 s after the last PULSE (sent up to 0.5 s before the silence began), then 1 s to brake.
-            assertThat(sim.clock().nowS() - silentFrom).isBetween(2.9, 4.3);
+            // Follow the robot in sim time through the ground truth, immune to the test's own latency.
+            java.util.List<double[]> track = new java.util.ArrayList<>();
+            while (track.isEmpty() || track.get(track.size() - 1)[0] < silentFrom + 4.5) {
+                JsonNode line = truth.next(n -> n.has("t") && n.get("t").doubleValue() >= silentFrom, 1_000);
+                track.add(new double[] {line.get("t").doubleValue(), line.at("/robot/xM").doubleValue()});
+            }
+            for (int i = 1; i < track.size(); i++) {
+                double t = track.get(i)[0] - silentFrom;
+                double speed = (track.get(i)[1] - track.get(i - 1)[1]) / (track.get(i)[0] - track.get(i - 1)[0]);
+                if (t > 0.2 && t < 1.7) {
+                    assertThat(speed).as("speed %.2f s into the silence", t).isCloseTo(0.3, within(0.01));
+                }
+                if (t > 3.4) {
+                    assertThat(speed).as("speed %.2f s into the silence", t).isZero();
+                }
+            }
             assertThat(sim.scene().body().stalled()).isFalse();
             double stoppedAt = odometry(h).number("xM");
-            waitSim(1);
+            waitSim(0.5);
             assertThat(odometry(h).number("xM")).isCloseTo(stoppedAt, within(0.002));
             h.pulse();
             h.await("odometry", RecordValue.class, o -> o.number("vMps") > 0.29, WAIT_MS);
