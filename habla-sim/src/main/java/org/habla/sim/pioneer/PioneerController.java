@@ -203,6 +203,9 @@ final class PioneerController implements SimClock.Stepper {
         }
         boolean drive = motorsEnabled && !watchdogTripped && !eStopped;
         body.command(drive ? vMps : 0, 0, drive ? wRadps : 0);
+        if (nextFireS < nowS - P2dx.SONAR_FIRE_PERIOD_S) {
+            nextFireS = nowS; // the ring was off: start firing afresh, without a burst of catch-up
+        }
         if (sonarOn && nowS + 1e-9 >= nextFireS) {
             nextFireS += P2dx.SONAR_FIRE_PERIOD_S;
             fire(frontNext);
