@@ -119,6 +119,33 @@ class PioneerSimTest {
     }
 
     @Test
+    void aRobotCarriedElsewhereByAResetKeepsItsOdometry() throws Exception {
+        try (DriverHarness h = connect()) {
+            h.command("motion", VectorValue.of(0.3, 0));
+            h.await("odometry", RecordValue.class, o -> o.number("xM") > 0.2, WAIT_MS);
+            h.command("motion", VectorValue.of(0, 0));
+            h.await("odometry", RecordValue.class, o -> o.number("vMps") == 0, WAIT_MS);
+            waitSim(0.3);
+            RecordValue before = odometry(h);
+            placeRobot(3, 3, 1.0);
+            waitSim(0.5);
+            RecordValue after = odometry(h);
+            assertThat(after.number("xM")).isCloseTo(before.number("xM"), within(0.002));
+            assertThat(after.number("yM")).isCloseTo(before.number("yM"), within(0.002));
+            assertThat(after.number("thetaRad")).isCloseTo(before.number("thetaRad"), within(0.002));
+            // Driving on from the new place continues the old odometry along the old heading.
+            h.command("motion", VectorValue.of(0.3, 0));
+            RecordValue onward = h.await("odometry", RecordValue.class,
+                    o -> o.number("xM") > before.number("xM") + 0.2, WAIT_MS);
+            assertThat(onward.number("yM")).isCloseTo(before.number("yM"), within(0.005));
+            Pose2 p = sim.scene().body().pose();
+            assertThat(Math.hypot(p.xM() - 3, p.yM() - 3)).isGreaterThan(0.19);
+            assertThat(p.thetaRad()).isCloseTo(1.0, within(0.002));
+            h.command("motion", VectorValue.of(0, 0));
+        }
+    }
+
+    @Test
     void sonarRangesMatchTheRayCastWorldWithinTheNoise() throws Exception {
         placeRobot(1.2, 4.8, 0.3);
         try (DriverHarness h = connect()) {
