@@ -206,10 +206,9 @@ final class PioneerController implements SimClock.Stepper {
         }
         boolean drive = motorsEnabled && !watchdogTripped && !eStopped;
         body.command(drive ? vMps : 0, 0, drive ? wRadps : 0);
-        if (nextFireS < nowS - P2dx.SONAR_FIRE_PERIOD_S) {
-            nextFireS = nowS; // the ring was off: start firing afresh, without a burst of catch-up
-        }
-        if (sonarOn && nowS + 1e-9 >= nextFireS) {
+        if (!sonarOn) {
+            nextFireS = nowS + dtS; // once switched on, the ring starts firing at its own pace
+        } else if (nowS + 1e-9 >= nextFireS) {
             nextFireS += P2dx.SONAR_FIRE_PERIOD_S;
             fire(frontNext);
             fire(8 + rearNext);
