@@ -95,8 +95,9 @@ class PioneerSimTest {
             assertThat(odo.number("xM")).isCloseTo(end.xM() - start.xM(), within(0.005));
             assertThat(odo.number("yM")).isCloseTo(end.yM() - start.yM(), within(0.005));
             assertThat(stopped.number("thetaRad")).isCloseTo(0, within(0.002));
-            // At least 2 s of cruising at 0.3 m/s plus the two ramps (how much more depends on the test's latency).
-            assertThat(odo.number("xM")).isGreaterThan(0.6 + 0.15 + 0.15 - 0.01);
+            // The ramp up at 0.3 m/s² (0.15 m), at least 2 s cruising at 0.3 m/s (0.6 m), braking at 0.6 m/s²
+            // (0.075 m); how much more depends on the test's own latency.
+            assertThat(odo.number("xM")).isGreaterThan(0.15 + 0.6 + 0.075 - 0.01);
         }
     }
 
