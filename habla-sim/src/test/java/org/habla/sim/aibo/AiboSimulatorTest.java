@@ -195,6 +195,21 @@ class AiboSimulatorTest {
                 .isTrue();
     }
 
+    @Test
+    void aPresentTeacherCommandsByVoiceAndRewardsByTouch() throws Exception {
+        start("");
+        place(0.6, 0.6, 0);
+        assertThat(truth.op("{\"op\":\"teacher\",\"present\":true}").has("ok")).isTrue();
+        // the robot stands still, so the first command is judged a failure: pain, a touch on the head
+        JsonNode judged = truth.next(n -> n.has("t") && !n.path("teacher").path("lastReward").isNull(), 200);
+        assertThat(judged.path("teacher").path("lastCommand").asText()).isIn("forward", "left", "right");
+        assertThat(judged.path("teacher").path("lastReward").asDouble()).isEqualTo(-1.0);
+        assertThat(judged.path("aibo").path("lastPhrase").asText()).isIn("go forward", "turn left", "turn right");
+        assertThat(DriverLink.await(LIMIT, () -> sink.on("buttons").stream()
+                .anyMatch(b -> ((RecordValue) b).number("headTouch") > 0.5))).isTrue();
+        assertThat(loudest(0)).as("the spoken command on the microphone").isGreaterThan(0.02);
+    }
+
     private double loudest(int from) {
         double max = 0;
         var audio = sink.on("audio");
