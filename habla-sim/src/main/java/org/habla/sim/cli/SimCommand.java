@@ -1,32 +1,21 @@
 package org.habla.sim.cli;
 
-import org.habla.cli.CommandExtension;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Spec;
 
-/** {@code habla sim}: runs a simulated robot behind its real wire protocols on loopback. */
+/** {@code habla sim ROBOT}: runs a simulated robot behind its real protocol's sockets, with its world and teacher. */
 @Command(name = "sim", mixinStandardHelpOptions = true,
-        description = "Run a simulated robot: its own servers on loopback, its world and its teacher, and a "
-                + "ground-truth server. Stops on Ctrl-C or SIGTERM.",
+        description = "Run a simulated robot in its world, behind the same sockets as the real robot.",
         subcommands = {SimAiboCommand.class})
 public final class SimCommand implements Runnable {
 
+    @Spec
+    private CommandSpec spec;
+
     @Override
     public void run() {
-        CommandLine.usage(this, System.out);
-    }
-
-    /** Registers {@code sim} with {@code habla}. */
-    public static final class Extension implements CommandExtension {
-
-        @Override
-        public String name() {
-            return "sim";
-        }
-
-        @Override
-        public Object command() {
-            return new SimCommand();
-        }
+        spec.commandLine().usage(spec.commandLine().getOut());
     }
 }

@@ -1,2 +1,2 @@
-/** The simulator's command line: {@code habla sim pioneer} and {@code habla sim aibo}. */
+/** The {@code habla sim} command: runs a simulated robot and its world from the command line. */
 package org.habla.sim.cli;
