@@ -8,7 +8,7 @@ import picocli.CommandLine.Spec;
 /** {@code habla sim ROBOT}: runs a simulated robot behind its real protocol's sockets, with its world and teacher. */
 @Command(name = "sim", mixinStandardHelpOptions = true,
         description = "Run a simulated robot in its world, behind the same sockets as the real robot.",
-        subcommands = {SimAiboCommand.class})
+        subcommands = {SimPioneerCommand.class, SimAiboCommand.class})
 public final class SimCommand implements Runnable {
 
     @Spec
