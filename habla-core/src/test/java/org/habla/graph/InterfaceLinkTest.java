@@ -135,6 +135,34 @@ class InterfaceLinkTest {
     }
 
     @Test
+    void aControlValueTheMethodRefusesIsAnsweredAtOnceAndNeverReachesTheRobot() throws Exception {
+        FakeLineRobot robot = new FakeLineRobot(0);
+        toClose.add(robot);
+        MethodGraph g = start(robot.port(), 0);
+        assertThat(robot.awaitClient(5_000)).isTrue();
+        ControlPoint.Rejected rejected = org.assertj.core.api.Assertions.catchThrowableOfType(
+                ControlPoint.Rejected.class, () -> write(point(g, "cmd"), 500));
+        assertThat(rejected).isNotNull();
+        assertThat(rejected.code()).isEqualTo("bad_value");
+        assertThat(rejected.getMessage()).contains("within ±100");
+        write(point(g, "cmd"), 0.75);
+        assertThat(robot.next(5_000)).as("the refused value was never queued").isEqualTo("cmd motor 0.75");
+    }
+
+    @Test
+    void anActuatorSeesTheCommandChannelItsOutputWrites() {
+        MethodGraph g = start(1, 0);
+        JsonNode act = null;
+        for (JsonNode m : g.status().path("methods")) {
+            if (m.path("id").asText().equals("act")) {
+                act = m;
+            }
+        }
+        assertThat(act).isNotNull();
+        assertThat(act.path("readiness").asText()).isEqualTo("writes motor in m/s");
+    }
+
+    @Test
     void theWatchdogStopsTheRobotWhenControlGoesSilentAndDropsLateCommands() throws Exception {
         FakeLineRobot robot = new FakeLineRobot(0);
         toClose.add(robot);

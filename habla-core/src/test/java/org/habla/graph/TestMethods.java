@@ -51,10 +51,11 @@ final class TestMethods {
         }
     }
 
-    /** Takes a value from control and sends it down as a command. */
+    /** Takes a value from control and sends it down as a command; refuses values beyond ±100. */
     static final class CommandVirtual extends VirtualMethod {
         final Output<NumberValue> out = output("out", NumberValue.class);
-        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(64), this::on);
+        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(64), this::on,
+                v -> Math.abs(v.value()) <= 100 ? null : "a command must be within ±100, was " + v.value());
 
         private void on(NumberValue v, Sample s) {
             emit(out, v);
@@ -70,9 +71,15 @@ final class TestMethods {
         }
     }
 
+    /** Hands values to its command channel; tells in its readiness which channel that is. */
     static final class ForwardActuator extends SensorActuatorMethod {
         final Output<NumberValue> out = output("out", NumberValue.class);
         final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(64), this::on);
+
+        @Override
+        protected void onStart() {
+            readiness(true, commandChannelOf(out).map(c -> "writes " + c.name() + " in " + c.unit()).orElse("writes nothing"));
+        }
 
         private void on(NumberValue v, Sample s) {
             emit(out, v);

@@ -51,7 +51,9 @@ class MethodProvidersTest {
             assertThat(typeByClass).as("discovered: " + className).containsKey(className);
             assertThat(names.add(typeByClass.get(className))).as("unique type name " + typeByClass.get(className)).isTrue();
         }
-        assertThat(names).contains("sonar", "infrared", "microphone", "action");
+        assertThat(names).contains("sonar", "infrared", "microphone", "keyboard", "odometry", "wheels",
+                "nearest-distance", "motion-composition", "movement-safety", "distance-angle", "command", "reward",
+                "action", "robot-pose", "link-state");
     }
 
     @Test
@@ -75,7 +77,7 @@ class MethodProvidersTest {
                 made++;
             }
         }
-        assertThat(made).isGreaterThanOrEqualTo(4);
+        assertThat(made).isGreaterThanOrEqualTo(15);
     }
 
     @SuppressWarnings({"unchecked", "rawtypes"})

@@ -64,7 +64,9 @@ public final class CoordinateTranslation extends ProcessingMethod {
         CameraModel fromRecord = CameraModel.fromJson(record.json(), null).orElse(null);
         if (fromRecord == null) {
             rejected++;
-            log().warn("{}: camera record {} is not a camera; ignored", id(), record);
+            if (rejected == 1 || rejected % 1000 == 0) {
+                log().warn("{}: camera record {} is not a camera; ignored ({} rejected so far)", id(), record, rejected);
+            }
             return;
         }
         camera = new CameraModel(

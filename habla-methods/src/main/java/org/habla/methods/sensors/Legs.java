@@ -38,7 +38,10 @@ public final class Legs extends SensorActuatorMethod {
         sentAny = true;
         if (cmd == null) {
             rejected++;
-            log().warn("{}: walk command {} is not [forward, strafe, rotate] of finite numbers; stopping instead", id(), value);
+            if (rejected == 1 || rejected % 1000 == 0) {
+                log().warn("{}: walk command {} is not [forward, strafe, rotate] of finite numbers; stopping instead "
+                        + "({} so far)", id(), value, rejected);
+            }
             emit(walk, HALT);
             return;
         }

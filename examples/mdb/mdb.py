@@ -1,0 +1,482 @@
+"""A control architecture in the manner of the Multilevel Darwinist Brain, over HABLA's control contract.
+
+It knows four sockets and nothing of the robot behind them: the teacher's `command` labels, the
+`distance_angle` to a target object, the teacher's `reward` and the `action` it writes. Everything it
+knows about what those mean it learns:
+
+* a short-term memory of experiences: perception before, action, perception after, reward;
+* a world model that predicts, for each action, the next perception: how distance and angle change,
+  and the *relevance* of the action to the command heard (the reward the teacher is expected to give);
+* a satisfaction model that predicts the reward from perceptions: while a command is heard,
+  satisfaction is the reward, so the predicted relevance gives it; the induced model gives it from the
+  non-command sensors (the change of distance and of |angle|, and the |angle| after);
+* an evolutionary search per model (a population of parameter vectors, crossover, self-adaptive
+  Gaussian mutation, selection on the error over the memory), run after each experience;
+* action selection: for every candidate action, predict with the world model, score with the
+  satisfaction model, take the best, with an exploration rate that decays.
+
+While a teacher is present (commands keep coming) the robot acts once per command and the relevance
+drives it; the induced model learns on the side that the rewards came with getting closer and facing
+the target. When no command has come for `--absent-after-s`, the induced model drives the robot, which
+keeps approaching the object on its own.
+
+    python3 mdb.py --host 127.0.0.1 --seed 7 --log decisions.jsonl --max-seconds 600
+
+One JSON line per decision goes to `--log` (stderr by default).
+"""
+
+import argparse
+import collections
+import json
+import math
+import random
+import signal
+import sys
+import time
+
+from habla_contract import ContractLink
+
+ACTIONS = ("forward", "left", "right", "back")
+COMMANDS = ("forward", "left", "right", "back")  # labels the teacher may use; their meaning is learned
+
+
+JUMP = 4.0  # a distance change beyond JUMP * distance scale is not the robot's doing
+OUTLIER = 4.0  # cap on one experience's squared error (in scale units): a target moved, a wheel slipped
+
+
+def wrap(angle):
+    """The angle in (-pi, pi]."""
+    return math.atan2(math.sin(angle), math.cos(angle))
+
+
+def clamp(x, lo, hi):
+    return lo if x < lo else hi if x > hi else x
+
+
+class Perception(collections.namedtuple("Perception", "distance_m angle_rad seen command")):
+    """What the robot senses at one instant: target distance (m) and angle (rad, + left), whether the
+    target is perceived now, and the command just heard (a label, or None)."""
+
+
+class Experience(collections.namedtuple("Experience", "before action after reward")):
+    """One step: the perception before, the action taken, the perception after, and the reward heard
+    for it (None when no reward came)."""
+
+    @property
+    def delta_distance(self):
+        return self.after.distance_m - self.before.distance_m
+
+    @property
+    def delta_angle(self):
+        return wrap(self.after.angle_rad - self.before.angle_rad)
+
+    @property
+    def delta_abs_angle(self):
+        return abs(self.after.angle_rad) - abs(self.before.angle_rad)
+
+    @property
+    def sighted(self):
+        return self.before.seen and self.after.seen
+
+
+def usable(experience, distance_scale_m):
+    """Whether an experience can teach the models: the target was seen before and after, and the distance
+    did not jump by more than JUMP steps' worth (the target was moved, or another object taken for it)."""
+    return experience.sighted and abs(experience.delta_distance) <= JUMP * distance_scale_m
+
+
+class ShortTermMemory:
+    """The last experiences, bounded. When full it forgets the oldest experience of the most crowded
+    kind (action and sign of the reward), so rare lessons such as a punishment outlive routine ones."""
+
+    def __init__(self, capacity=80):
+        if capacity < 4:
+            raise ValueError("memory capacity must be at least 4, got %r" % capacity)
+        self.capacity = capacity
+        self._items = []
+
+    def __len__(self):
+        return len(self._items)
+
+    @staticmethod
+    def _kind(e):
+        sign = None if e.reward is None else (e.reward > 0) - (e.reward < 0)
+        return e.action, sign
+
+    def add(self, experience):
+        self._items.append(experience)
+        if len(self._items) > self.capacity:
+            counts = collections.Counter(self._kind(e) for e in self._items)
+            crowded = max(counts.values())
+            for i, e in enumerate(self._items):
+                if counts[self._kind(e)] == crowded:
+                    del self._items[i]
+                    break
+
+    def experiences(self):
+        return list(self._items)
+
+    def rewarded(self):
+        return [e for e in self._items if e.reward is not None]
+
+
+class Evolution:
+    """A population of parameter vectors improved against an error function (lower is better).
+
+    Each generation keeps the `elite` best, and breeds the rest from the better half: uniform crossover
+    of two tournament winners, then Gaussian mutation whose step size each individual carries and
+    mutates itself (log-normal). The whole population is re-scored at every run, because the memory it
+    is scored on has changed since the last."""
+
+    def __init__(self, dim, rng, size=16, elite=4, init_scale=0.1, sigma=0.3):
+        if dim < 1 or size < 4 or not 1 <= elite < size:
+            raise ValueError("need dim >= 1, size >= 4 and 1 <= elite < size")
+        self.dim, self.size, self.elite, self._rng = dim, size, elite, rng
+        self._tau = 1.0 / math.sqrt(2.0 * dim)
+        self._gene_rate = min(1.0, 3.0 / dim)
+        self.population = [([rng.gauss(0.0, init_scale) for _ in range(dim)], sigma) for _ in range(size)]
+        self.best = list(self.population[0][0])
+        self.best_error = None
+        self.generations = 0
+
+    def _tournament(self, scored):
+        a, b = self._rng.choice(scored), self._rng.choice(scored)
+        return a if a[0] <= b[0] else b
+
+    def _child(self, parents):
+        rng = self._rng
+        _, pa, sa = self._tournament(parents)
+        _, pb, sb = self._tournament(parents)
+        genes = [x if rng.random() < 0.5 else y for x, y in zip(pa, pb)]
+        sigma = clamp(math.sqrt(sa * sb) * math.exp(self._tau * rng.gauss(0.0, 1.0)), 1e-3, 2.0)
+        forced = rng.randrange(self.dim)
+        return [g + sigma * rng.gauss(0.0, 1.0) if i == forced or rng.random() < self._gene_rate else g
+                for i, g in enumerate(genes)], sigma
+
+    def run(self, error, generations=1):
+        """Runs some generations against `error(params) -> float`; returns the best error."""
+        scored = sorted(((error(p), p, s) for p, s in self.population), key=lambda t: t[0])
+        for _ in range(generations):
+            parents = scored[:max(self.elite, self.size // 2)]
+            children = []
+            for _ in range(self.size - self.elite):
+                params, sigma = self._child(parents)
+                children.append((error(params), params, sigma))
+            scored = sorted(scored[:self.elite] + children, key=lambda t: t[0])
+            self.generations += 1
+        self.population = [(p, s) for _, p, s in scored]
+        self.best_error, self.best = scored[0][0], list(scored[0][1])
+        return self.best_error
+
+
+def motion_features(distance_m, angle_rad):
+    """The inputs of a motion model: what a move does to distance and angle depends on where the target is."""
+    return (1.0, math.cos(angle_rad), math.sin(angle_rad), math.sin(angle_rad) / max(distance_m, 0.25))
+
+
+class Prediction(collections.namedtuple("Prediction", "distance_m angle_rad relevance")):
+    """The world model's next perception for one action: distance, angle and command relevance."""
+
+
+class WorldModel:
+    """Predicts the next perception from the current one and an action.
+
+    Per action a motion model (8 parameters): the change of distance and of angle are each a linear
+    function of `motion_features`, in units of `distance_scale_m` and `angle_scale_rad`. One relevance
+    table (actions x commands): the reward the teacher is expected to give for an action after a command.
+    Each part is its own evolving population, scored on the experiences it can explain."""
+
+    MOTION_DIM = 8
+    RELEVANCE_DECAY = 0.05  # pulls untried entries of the table towards 0: neither good nor bad
+    RELEVANCE_GENERATIONS = 3  # the table gets this many times the generations: commands are few and precious
+
+    def __init__(self, rng, distance_scale_m=0.2, angle_scale_rad=0.5, population=16):
+        self.ds, self.as_ = distance_scale_m, angle_scale_rad
+        self.motion = {a: Evolution(self.MOTION_DIM, rng, size=population) for a in ACTIONS}
+        self.relevance = Evolution(len(ACTIONS) * len(COMMANDS), rng, size=population, init_scale=0.05)
+
+    def _motion(self, params, distance_m, angle_rad):
+        f = motion_features(distance_m, angle_rad)
+        dd = self.ds * sum(w * x for w, x in zip(params[:4], f))
+        da = self.as_ * sum(w * x for w, x in zip(params[4:], f))
+        return dd, da
+
+    @staticmethod
+    def _relevance(params, action, command):
+        if command not in COMMANDS:
+            return 0.0
+        return clamp(params[ACTIONS.index(action) * len(COMMANDS) + COMMANDS.index(command)], -1.0, 1.0)
+
+    def predict(self, perception, action):
+        dd, da = self._motion(self.motion[action].best, perception.distance_m, perception.angle_rad)
+        return Prediction(max(0.0, perception.distance_m + dd), wrap(perception.angle_rad + da),
+                          self._relevance(self.relevance.best, action, perception.command))
+
+    def relevance_of(self, action, command):
+        return self._relevance(self.relevance.best, action, command)
+
+    def motion_error(self, params, experiences):
+        total = 0.0
+        for e in experiences:
+            dd, da = self._motion(params, e.before.distance_m, e.before.angle_rad)
+            total += min(OUTLIER, ((dd - e.delta_distance) / self.ds) ** 2 + (wrap(da - e.delta_angle) / self.as_) ** 2)
+        return total / len(experiences)
+
+    def relevance_error(self, params, experiences):
+        total = sum((e.reward - self._relevance(params, e.action, e.before.command)) ** 2 for e in experiences)
+        return total / len(experiences) + self.RELEVANCE_DECAY * sum(p * p for p in params) / len(params)
+
+    def learn(self, memory, generations):
+        """Evolves every part that has experiences to learn from; returns the errors by part."""
+        errors = {}
+        sighted = [e for e in memory.experiences() if usable(e, self.ds)]
+        for action, population in self.motion.items():
+            mine = [e for e in sighted if e.action == action]
+            if mine:
+                errors["motion." + action] = population.run(lambda p: self.motion_error(p, mine), generations)
+        commanded = [e for e in memory.rewarded() if e.before.command in COMMANDS]
+        if commanded:
+            errors["relevance"] = self.relevance.run(lambda p: self.relevance_error(p, commanded),
+                                                   generations * self.RELEVANCE_GENERATIONS)
+        return errors
+
+
+class SatisfactionModel:
+    """Predicts satisfaction (the reward to come) from a perception and its predicted successor.
+
+    While a command is heard, satisfaction is the reward, so the predicted satisfaction is the command
+    relevance the world model predicts. Without one, the induced model — fitted to the same rewards but
+    over the other sensors only — gives it, linear in the change of distance, the change of |angle| and
+    the |angle| after (each in scale units, clipped to +-2), and clipped to [-1, 1] when fitted. It is
+    what remains useful once the teacher has gone."""
+
+    DIM = 4
+    DECAY = 0.001
+
+    def __init__(self, rng, distance_scale_m=0.2, angle_scale_rad=0.5, population=16):
+        self.ds, self.as_ = distance_scale_m, angle_scale_rad
+        self.induced = Evolution(self.DIM, rng, size=population)
+
+    def sensed(self, before, after_distance_m, after_angle_rad):
+        """The induced model's inputs for a move from `before` to the given distance and angle."""
+        return (clamp((after_distance_m - before.distance_m) / self.ds, -2.0, 2.0),
+                clamp((abs(after_angle_rad) - abs(before.angle_rad)) / self.as_, -2.0, 2.0),
+                clamp(abs(after_angle_rad) / self.as_, 0.0, 2.0 * math.pi))
+
+    @staticmethod
+    def _induced(params, x):
+        return params[0] + params[1] * x[0] + params[2] * x[1] + params[3] * x[2]
+
+    @staticmethod
+    def of_command(relevance):
+        return relevance
+
+    def induced_of(self, before, after_distance_m, after_angle_rad):
+        """The induced satisfaction of going from `before` to the given distance and angle (unclipped, so
+        that it still ranks actions where the clipped value would be a tie)."""
+        return self._induced(self.induced.best, self.sensed(before, after_distance_m, after_angle_rad))
+
+    def induced_error(self, params, examples):
+        """Mean squared error over (inputs, reward) pairs, plus a little weight decay."""
+        return (sum((r - clamp(self._induced(params, x), -1.0, 1.0)) ** 2 for x, r in examples) / len(examples)
+                + self.DECAY * sum(p * p for p in params))
+
+    def learn(self, memory, generations):
+        examples = [(self.sensed(e.before, e.after.distance_m, e.after.angle_rad), e.reward)
+                    for e in memory.rewarded() if usable(e, self.ds)]
+        if not examples:
+            return {}
+        return {"satisfaction.induced": self.induced.run(lambda p: self.induced_error(p, examples), generations)}
+
+
+class Brain:
+    """Memory, models and action selection; the part of the architecture that knows no sockets."""
+
+    def __init__(self, seed=0, memory=80, population=16, generations=3, epsilon=0.2, epsilon_decay=0.97,
+                 epsilon_min=0.02, distance_scale_m=0.2, angle_scale_rad=0.5):
+        self.rng = random.Random(seed)
+        self.memory = ShortTermMemory(memory)
+        self.world = WorldModel(self.rng, distance_scale_m, angle_scale_rad, population)
+        self.satisfaction = SatisfactionModel(self.rng, distance_scale_m, angle_scale_rad, population)
+        self.generations = generations
+        self.epsilon0, self.epsilon_decay, self.epsilon_min = epsilon, epsilon_decay, epsilon_min
+        self.decisions = 0
+        self.errors = {}
+        self.predictions = {}
+
+    @property
+    def epsilon(self):
+        return max(self.epsilon_min, self.epsilon0 * self.epsilon_decay ** self.decisions)
+
+    def score(self, perception, action):
+        """The satisfaction predicted for taking `action` now."""
+        predicted = self.world.predict(perception, action)
+        if perception.command in COMMANDS:
+            return self.satisfaction.of_command(predicted.relevance)
+        return self.satisfaction.induced_of(perception, predicted.distance_m, predicted.angle_rad)
+
+    def decide(self, perception):
+        """Chooses an action; returns (action, explored, scores by action)."""
+        self.predictions = {a: self.world.predict(perception, a) for a in ACTIONS}
+        scores = {a: self.score(perception, a) for a in ACTIONS}
+        explored = self.rng.random() < self.epsilon
+        if explored:
+            action = self.rng.choice(ACTIONS)
+        else:
+            top = max(scores.values())
+            action = self.rng.choice([a for a in ACTIONS if scores[a] >= top - 1e-9])
+        self.decisions += 1
+        return action, explored, scores
+
+    def remember(self, experience):
+        self.memory.add(experience)
+
+    def learn(self, generations=None):
+        """One round of evolution of every model on the memory; returns the errors by model."""
+        g = self.generations if generations is None else generations
+        errors = self.world.learn(self.memory, g)
+        errors.update(self.satisfaction.learn(self.memory, g))
+        self.errors.update(errors)
+        return errors
+
+
+class Runner:
+    """The decision loop over a `ContractLink`: wait for a fresh perception (or a command), decide, write
+    the action, learn while it takes effect, then record the experience with the reward it earned."""
+
+    def __init__(self, link, brain, step_s=1.2, reward_wait_s=1.0, absent_after_s=8.0, log=None, clock=time.monotonic):
+        self.link, self.brain = link, brain
+        self.step_s, self.reward_wait_s, self.absent_after_s = step_s, reward_wait_s, absent_after_s
+        self.log = log or (lambda record: None)
+        self.clock = clock
+        self.steps = 0
+
+    def run(self, max_seconds=None):
+        link, start = self.link, self.clock()
+        deadline = None if max_seconds is None else start + max_seconds
+        heard_command = 0
+        used_sample = 0
+        last_command_at = start  # wait for a teacher a while before acting alone
+        while deadline is None or self.clock() < deadline:
+            if not link.wait_connected(0.5):
+                continue
+            present = self.clock() - last_command_at < self.absent_after_s
+            if present:
+                link.wait_until(lambda: link.commands_heard > heard_command, 0.25)
+            else:
+                link.wait_until(lambda: link.commands_heard > heard_command or (
+                    link.distance_angle is not None and link.distance_angle.number > used_sample), 0.5)
+            fresh = link.commands_after(heard_command)
+            command = None
+            if fresh:
+                heard_command = fresh[-1].number
+                last_command_at = fresh[-1].arrived
+                command = fresh[-1].value if fresh[-1].value in COMMANDS else None
+                if command is None:
+                    self.log({"event": "unknown_command", "label": fresh[-1].value})
+            elif present:
+                continue  # a teacher is around: act when told
+            da = link.distance_angle
+            if da is None or (command is None and da.number <= used_sample):
+                continue
+            if da.stale:  # the daemon says the robot's link is down: this is old news, wait for fresh
+                used_sample = da.number
+                continue
+            used_sample = da.number
+            self._step(Perception(da.distance_m, da.angle_rad, da.seen, command), da.number, start)
+
+    def _step(self, before, sample_number, start):
+        link, brain = self.link, self.brain
+        action, explored, scores = brain.decide(before)
+        rewards_mark = link.rewards_heard
+        if not link.act(action):
+            self.log({"event": "not_written", "action": action})
+            return
+        written_at = self.clock()
+        errors = brain.learn()
+        link.wait_until(lambda: False, written_at + self.step_s - self.clock())
+        link.wait_until(lambda: link.distance_angle is not None and link.distance_angle.number > sample_number, 0.5)
+        if before.command is not None:
+            link.wait_until(lambda: link.rewards_heard > rewards_mark,
+                            written_at + self.step_s + self.reward_wait_s - self.clock())
+        rewards = link.rewards_after(rewards_mark)
+        reward = rewards[-1].value if rewards else None
+        da = link.distance_angle
+        after = Perception(da.distance_m, da.angle_rad, da.seen, None)
+        brain.remember(Experience(before, action, after, reward))
+        self.steps += 1
+        self.log({"t": round(self.clock() - start, 3), "step": self.steps, "command": before.command,
+                  "distanceM": round(before.distance_m, 4), "angleRad": round(before.angle_rad, 4),
+                  "seen": before.seen, "action": action, "explored": explored,
+                  "epsilon": round(brain.epsilon, 4), "scores": {a: round(s, 4) for a, s in scores.items()},
+                  "after": {"distanceM": round(after.distance_m, 4), "angleRad": round(after.angle_rad, 4)},
+                  "reward": reward,
+                  "predicted": {a: [round(p.distance_m, 4), round(p.angle_rad, 4)] for a, p in brain.predictions.items()},
+                  "errors": {k: round(v, 5) for k, v in errors.items()}})
+
+
+def parse_args(argv):
+    p = argparse.ArgumentParser(description="Multilevel-Darwinist-Brain-style control over HABLA's control contract.")
+    p.add_argument("--host", default="127.0.0.1")
+    p.add_argument("--command-port", type=int, default=7001)
+    p.add_argument("--distance-angle-port", type=int, default=7002)
+    p.add_argument("--reward-port", type=int, default=7003)
+    p.add_argument("--action-port", type=int, default=7004)
+    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--log", help="file for the JSON decision lines (default: stderr)")
+    p.add_argument("--max-seconds", type=float, help="stop after this long (default: run until killed)")
+    p.add_argument("--speed", type=float, default=1.0,
+                   help="divides the default times below, for a world that runs S times faster")
+    p.add_argument("--step-s", type=float, help="how long an action is given to take effect (default 1.2)")
+    p.add_argument("--reward-wait-s", type=float, help="extra wait for the reward after a command (default 1.0)")
+    p.add_argument("--absent-after-s", type=float, help="no command for this long: the teacher has gone (default 8)")
+    p.add_argument("--memory", type=int, default=80, help="experiences kept in short-term memory")
+    p.add_argument("--population", type=int, default=16, help="individuals per evolving model")
+    p.add_argument("--generations", type=int, default=3, help="generations per model after each experience")
+    p.add_argument("--epsilon", type=float, default=0.2, help="initial exploration rate")
+    p.add_argument("--epsilon-decay", type=float, default=0.97, help="exploration rate factor per decision")
+    p.add_argument("--epsilon-min", type=float, default=0.02)
+    args = p.parse_args(argv)
+    if args.speed < 1.0:
+        p.error("--speed must be at least 1")
+    for name, default in (("step_s", 1.2), ("reward_wait_s", 1.0), ("absent_after_s", 8.0)):
+        if getattr(args, name) is None:
+            setattr(args, name, default / args.speed)
+    return args
+
+
+def _interrupt(signum, frame):
+    raise KeyboardInterrupt()
+
+
+def main(argv=None):
+    args = parse_args(sys.argv[1:] if argv is None else argv)
+    out = open(args.log, "a", buffering=1) if args.log else sys.stderr
+
+    def log(record):
+        out.write(json.dumps(record) + "\n")
+        out.flush()
+
+    ports = {"command": args.command_port, "distance_angle": args.distance_angle_port,
+             "reward": args.reward_port, "action": args.action_port}
+    link = ContractLink(args.host, ports, on_event=lambda kind, detail: log({"event": kind, "detail": detail}))
+    brain = Brain(seed=args.seed, memory=args.memory, population=args.population, generations=args.generations,
+                  epsilon=args.epsilon, epsilon_decay=args.epsilon_decay, epsilon_min=args.epsilon_min)
+    runner = Runner(link, brain, args.step_s, args.reward_wait_s, args.absent_after_s, log)
+    signal.signal(signal.SIGTERM, _interrupt)
+    link.start()
+    try:
+        runner.run(args.max_seconds)
+    except KeyboardInterrupt:
+        pass
+    finally:
+        link.act("stop")
+        link.close()
+        log({"event": "stopped", "steps": runner.steps})
+        if out is not sys.stderr:
+            out.close()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

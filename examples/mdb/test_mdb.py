@@ -1,0 +1,300 @@
+"""Tests of the MDB control architecture: its parts on synthetic data, then whole runs against fake_world
+over loopback. Run with `python3 -m unittest` in this directory."""
+
+import concurrent.futures
+import json
+import math
+import os
+import random
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+
+import mdb  # noqa: E402
+from fake_world import FakeWorld  # noqa: E402
+from habla_contract import ContractLink  # noqa: E402
+
+RADII_M = 0.3  # robot + target radius in the synthetic world below
+SPEEDS = {"forward": (0.2, 0.0), "back": (-0.15, 0.0), "left": (0.0, 0.6), "right": (0.0, -0.6)}
+
+
+def move(distance_m, angle_rad, action, seconds=1.0):
+    """Where a target at (distance, angle) appears after a point robot performs `action` (exact geometry)."""
+    v, w = SPEEDS[action]
+    centre = distance_m + RADII_M
+    tx, ty = centre * math.cos(angle_rad), centre * math.sin(angle_rad)
+    tx -= v * seconds
+    heading = w * seconds
+    rx = tx * math.cos(-heading) - ty * math.sin(-heading)
+    ry = tx * math.sin(-heading) + ty * math.cos(-heading)
+    return max(0.0, math.hypot(rx, ry) - RADII_M), math.atan2(ry, rx)
+
+
+def teacher_command(angle_rad):
+    return "forward" if abs(angle_rad) <= 0.35 else "left" if angle_rad > 0 else "right"
+
+
+def experience(rng, action, command=None, reward=None):
+    d, a = rng.uniform(0.5, 3.0), rng.uniform(-math.pi, math.pi)
+    d2, a2 = move(d, a, action)
+    return mdb.Experience(mdb.Perception(d, a, True, command), action, mdb.Perception(d2, a2, True, None), reward)
+
+
+def taught(rng, n, meaning=None, obedience=0.7):
+    """n experiences of a teacher who asks with the contract's rule; `meaning` maps each command to the
+    action it wants (itself by default); the pupil obeys with probability `obedience`."""
+    meaning = meaning or {c: c for c in mdb.COMMANDS}
+    out = []
+    for _ in range(n):
+        d, a = rng.uniform(0.5, 3.0), rng.uniform(-math.pi, math.pi)
+        command = teacher_command(a)
+        wanted = meaning[command]
+        action = wanted if rng.random() < obedience else rng.choice(mdb.ACTIONS)
+        d2, a2 = move(d, a, action)
+        out.append(mdb.Experience(mdb.Perception(d, a, True, command), action,
+                                  mdb.Perception(d2, a2, True, None), 1.0 if action == wanted else -1.0))
+    return out
+
+
+class EvolutionTest(unittest.TestCase):
+
+    def test_evolution_improves_fitness_and_the_elite_never_gets_worse(self):
+        rng = random.Random(3)
+        xs = [(rng.uniform(-1, 1), rng.uniform(-1, 1)) for _ in range(40)]
+        ys = [0.7 - 1.3 * x + 0.4 * y for x, y in xs]
+
+        def error(p):
+            return sum((p[0] + p[1] * x + p[2] * y - t) ** 2 for (x, y), t in zip(xs, ys)) / len(xs)
+
+        evolution = mdb.Evolution(3, rng)
+        history = [evolution.run(error, 1) for _ in range(60)]
+        self.assertTrue(all(b <= a + 1e-12 for a, b in zip(history, history[1:])), history)
+        self.assertLess(history[-1], history[0] / 20)
+        self.assertLess(history[-1], 0.01)
+        for got, want in zip(evolution.best, (0.7, -1.3, 0.4)):
+            self.assertAlmostEqual(got, want, delta=0.1)
+
+    def test_a_population_refuses_impossible_sizes(self):
+        with self.assertRaises(ValueError):
+            mdb.Evolution(3, random.Random(0), size=4, elite=4)
+
+
+class WorldModelTest(unittest.TestCase):
+
+    def test_the_world_model_learns_what_each_action_does_to_distance_and_angle(self):
+        rng = random.Random(5)
+        brain = mdb.Brain(seed=5, memory=200)
+        for _ in range(160):
+            brain.remember(experience(rng, rng.choice(mdb.ACTIONS)))
+        held_out = [experience(rng, a) for a in mdb.ACTIONS for _ in range(10)]
+
+        def mean_error():
+            total = 0.0
+            for e in held_out:
+                p = brain.world.predict(e.before, e.action)
+                total += abs(p.distance_m - e.after.distance_m) + abs(mdb.wrap(p.angle_rad - e.after.angle_rad))
+            return total / len(held_out)
+
+        before = mean_error()
+        for _ in range(40):
+            brain.learn()
+        after = mean_error()
+        self.assertLess(after, before / 4)
+        self.assertLess(after, 0.08)
+        ahead = mdb.Perception(2.0, 0.0, True, None)
+        self.assertLess(brain.world.predict(ahead, "forward").distance_m, 1.9)
+        self.assertGreater(brain.world.predict(ahead, "back").distance_m, 2.05)
+        self.assertLess(brain.world.predict(ahead, "left").angle_rad, -0.4)
+        self.assertGreater(brain.world.predict(ahead, "right").angle_rad, 0.4)
+
+    def test_a_jump_of_the_target_teaches_nothing(self):
+        rng = random.Random(1)
+        brain = mdb.Brain(seed=1)
+        for _ in range(30):
+            brain.remember(experience(rng, "forward"))
+        before = mdb.Perception(0.1, 0.0, True, None)
+        brain.remember(mdb.Experience(before, "forward", mdb.Perception(2.5, 1.0, True, None), 1.0))
+        for _ in range(30):
+            brain.learn()
+        self.assertLess(brain.world.predict(mdb.Perception(1.0, 0.0, True, None), "forward").distance_m, 0.95)
+
+
+class ActionChoiceTest(unittest.TestCase):
+
+    def test_action_choice_follows_the_command_mapping_it_learned(self):
+        meaning = {"forward": "back", "left": "right", "right": "forward", "back": "left"}  # not the labels' own
+        rng = random.Random(11)
+        brain = mdb.Brain(seed=11, epsilon=0.0, epsilon_min=0.0)
+        for command in mdb.COMMANDS:
+            for action in mdb.ACTIONS:
+                d, a = rng.uniform(0.5, 3), rng.uniform(-3, 3)
+                d2, a2 = move(d, a, action)
+                brain.remember(mdb.Experience(mdb.Perception(d, a, True, command), action,
+                                              mdb.Perception(d2, a2, True, None),
+                                              1.0 if meaning[command] == action else -1.0))
+        for _ in range(25):
+            brain.learn()
+        for command, wanted in meaning.items():
+            for angle in (-2.0, 0.0, 1.0):
+                chosen, explored, scores = brain.decide(mdb.Perception(1.5, angle, True, command))
+                self.assertFalse(explored)
+                self.assertEqual(wanted, chosen, "command %s: %s" % (command, scores))
+
+    def test_without_a_teacher_the_induced_model_approaches_the_target(self):
+        rng = random.Random(4)
+        brain = mdb.Brain(seed=4, memory=200, epsilon=0.0, epsilon_min=0.0)
+        for e in taught(rng, 120):
+            brain.remember(e)
+        for _ in range(60):
+            brain.learn()
+        self.assertEqual("forward", brain.decide(mdb.Perception(2.0, 0.05, True, None))[0])
+        self.assertEqual("left", brain.decide(mdb.Perception(2.0, 1.4, True, None))[0])
+        self.assertEqual("right", brain.decide(mdb.Perception(2.0, -1.4, True, None))[0])
+        # and it gets there: follow its choices through the exact geometry
+        d, a = 2.0, 2.5
+        for _ in range(40):
+            if d <= 0.1:
+                break
+            d, a = move(d, a, brain.decide(mdb.Perception(d, a, True, None))[0])
+        self.assertLessEqual(d, 0.1)
+
+
+class MemoryTest(unittest.TestCase):
+
+    def test_a_full_memory_forgets_routine_before_rare_lessons(self):
+        memory = mdb.ShortTermMemory(capacity=10)
+        rng = random.Random(0)
+        memory.add(experience(rng, "back", "forward", -1.0))
+        for _ in range(30):
+            memory.add(experience(rng, "forward", "forward", 1.0))
+        self.assertEqual(10, len(memory))
+        self.assertIn(("back", -1.0), [(e.action, e.reward) for e in memory.experiences()])
+
+
+def ports_args(world):
+    p = world.ports
+    return ["--command-port", str(p["command"]), "--distance-angle-port", str(p["distance_angle"]),
+            "--reward-port", str(p["reward"]), "--action-port", str(p["action"])]
+
+
+class FakeWorldTest(unittest.TestCase):
+
+    def test_the_fake_world_answers_bad_lines_with_errors_and_keeps_serving(self):
+        with FakeWorld(seed=1, speed=5.0) as world:
+            with socket.create_connection(("127.0.0.1", world.ports["action"]), timeout=5) as s:
+                f = s.makefile("rwb")
+                self.assertEqual("hello", json.loads(f.readline())["type"])
+                for bad, code in ((b"{nope\n", "bad_json"), (b'{"value":"fly"}\n', "bad_value"),
+                                  (b'{"op":"dance"}\n', "unknown_op")):
+                    f.write(bad)
+                    f.flush()
+                    line = json.loads(f.readline())
+                    while line["type"] == "sample":
+                        line = json.loads(f.readline())
+                    self.assertEqual(("error", code), (line["type"], line["code"]))
+                f.write(b'{"op":"write","value":"forward","id":7}\n')
+                f.flush()
+                seen = [json.loads(f.readline()) for _ in range(2)]
+                self.assertIn({"type": "ok", "id": 7}, seen)
+            deadline = time.monotonic() + 5
+            while world.results()["actions"] < 1 and time.monotonic() < deadline:
+                time.sleep(0.01)
+            self.assertEqual(1, world.results()["actions"])
+
+
+class EndToEndTest(unittest.TestCase):
+    SPEED = 15.0
+    TEACHER_COMMANDS = 30
+    COMMAND_EVERY_S = 2.0
+    APPROACH_LIMIT_S = 60.0  # world seconds after the teacher leaves
+
+    def episode(self, seed, log_dir):
+        """One episode: a fresh world and a fresh brain with this seed; returns the world's results."""
+        with FakeWorld(seed=seed, speed=self.SPEED, command_every_s=self.COMMAND_EVERY_S,
+                       teacher_commands=self.TEACHER_COMMANDS) as world:
+            log = os.path.join(log_dir, "episode-%d.jsonl" % seed)
+            proc = subprocess.Popen([sys.executable, os.path.join(HERE, "mdb.py"), "--seed", str(seed),
+                                     "--speed", str(self.SPEED), "--absent-after-s", str(4.5 / self.SPEED),
+                                     "--max-seconds", "40", "--log", log] + ports_args(world))
+            try:
+                deadline = time.monotonic() + 40
+                while time.monotonic() < deadline:
+                    r = world.results()
+                    if r["reachedAfterS"] is not None or (
+                            r["teacherLeftAt"] is not None and r["now"] - r["teacherLeftAt"] > self.APPROACH_LIMIT_S):
+                        break
+                    time.sleep(0.05)
+            finally:
+                proc.terminate()
+                proc.wait(timeout=10)
+            r = world.results()
+            with open(log) as f:
+                r["decisions"] = sum(1 for line in f if '"step"' in line)
+            return r
+
+    def test_after_the_teacher_leaves_the_robot_reaches_the_object_in_most_seeded_episodes(self):
+        with tempfile.TemporaryDirectory() as tmp, concurrent.futures.ThreadPoolExecutor(3) as pool:
+            results = list(pool.map(lambda s: self.episode(s, tmp), range(1, 11)))
+        summary = [(r["teacherLeftAt"] is not None, r["reachedAfterS"], round(r["distanceM"], 2)) for r in results]
+        for r in results:
+            self.assertIsNotNone(r["teacherLeftAt"], summary)
+            self.assertGreater(r["decisions"], self.TEACHER_COMMANDS // 2, summary)
+        first = [v for r in results for _, _, v in r["rewards"][:10]]
+        last = [v for r in results for _, _, v in r["rewards"][-10:]]
+        self.assertGreater(last.count(1), 0.7 * len(last), "obedience at the end of teaching")
+        self.assertGreater(last.count(1), first.count(1) + 20, "obedience grows while taught")
+        reached = [r for r in results if r["reachedAfterS"] is not None and r["reachedAfterS"] <= self.APPROACH_LIMIT_S]
+        print("\nMDB end to end: obedience %d/%d in the first 10 commands, %d/%d in the last 10"
+              % (first.count(1), len(first), last.count(1), len(last)), file=sys.stderr)
+        print("MDB end to end: %d of 10 episodes reached the object after the teacher left; %s"
+              % (len(reached), summary), file=sys.stderr)
+        self.assertGreaterEqual(len(reached), 8, summary)
+
+    def test_a_malformed_line_from_the_daemon_costs_a_reconnect_and_nothing_else(self):
+        with FakeWorld(seed=4, speed=5.0) as world:
+            link = ContractLink("127.0.0.1", world.ports, retry_s=0.1).start()
+            try:
+                self.assertTrue(link.wait_until(lambda: link.samples_seen > 0, 5.0))
+                for client in list(world.servers["distance_angle"].clients):
+                    client.send_raw(b"{this is not json\n")
+                self.assertTrue(link.wait_until(lambda: link.connections == 2, 5.0))
+                seen = link.samples_seen
+                self.assertTrue(link.wait_until(lambda: link.samples_seen > seen, 5.0))
+                self.assertTrue(link.act("back"))
+            finally:
+                link.close()
+
+    def test_the_link_reconnects_when_the_daemon_restarts(self):
+        world = FakeWorld(seed=2, speed=5.0).start()
+        ports = {"command": world.ports["command"], "distance_angle": world.ports["distance_angle"],
+                 "reward": world.ports["reward"], "action": world.ports["action"]}
+        events = []
+        link = ContractLink("127.0.0.1", ports, retry_s=0.1, on_event=lambda k, d: events.append(k)).start()
+        try:
+            self.assertTrue(link.wait_connected(5.0))
+            self.assertTrue(link.wait_until(lambda: link.samples_seen > 0, 5.0))
+            world.stop()
+            self.assertTrue(link.wait_until(lambda: not link._connected, 5.0))
+            self.assertFalse(link.act("forward"))
+            world = FakeWorld(seed=3, speed=5.0, ports=ports).start()
+            self.assertTrue(link.wait_until(lambda: link.connections == 2, 10.0), events)
+            seen = link.samples_seen
+            self.assertTrue(link.wait_until(lambda: link.samples_seen > seen, 5.0))
+            self.assertTrue(link.act("left"))
+            deadline = time.monotonic() + 5
+            while world.results()["actions"] < 1 and time.monotonic() < deadline:
+                time.sleep(0.01)
+            self.assertEqual(1, world.results()["actions"])
+        finally:
+            link.close()
+            world.stop()
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,66 @@
+package org.habla.methods.emotion;
+
+import java.util.Locale;
+import java.util.Map;
+import java.util.TreeMap;
+import org.habla.methods.ParamRules;
+import org.habla.plugin.Param;
+
+/** The params of the {@code emotion-recognition} method: the word lists, the touch meanings and the rule thresholds. */
+public record EmotionRecognitionParams(
+        @Param(value = "Valence in [-1, 1] of words and phrases; longer phrases match first",
+                defaultValue = "{\"good dog\":1,\"well done\":1,\"good\":0.8,\"great\":0.8,\"yes\":0.5,"
+                        + "\"bad dog\":-1,\"bad\":-0.8,\"no\":-0.7,\"stop\":-0.3}")
+        Map<String, Double> valence,
+        @Param(value = "Valence in [-1, 1] of a touch event, by button name",
+                defaultValue = "{\"backMiddle\":1,\"backFront\":0.6,\"backRear\":0.6,\"chin\":0.5,\"headTouch\":-1}")
+        Map<String, Double> touchValence,
+        @Param(value = "How long before the words the voice's frames count for them", unit = "ms", defaultValue = "3000")
+        Integer utteranceWindowMs,
+        @Param(value = "Share of each utterance's level and pitch that moves the running baseline", defaultValue = "0.2")
+        Double baselineWeight,
+        @Param(value = "Level above the baseline that counts as fully loud", unit = "dB", defaultValue = "12")
+        Double loudRangeDb,
+        @Param(value = "Pitch rise above the baseline that counts as fully high", unit = "octaves", defaultValue = "0.5")
+        Double pitchRangeOctaves,
+        @Param(value = "Valence from which the emotion is positive (happy or excited)", defaultValue = "0.3")
+        Double positiveValence,
+        @Param(value = "Arousal from which a positive emotion is excited", defaultValue = "0.7") Double excitedArousal,
+        @Param(value = "Arousal from which a negative emotion is angry rather than sad", defaultValue = "0.5")
+        Double angryArousal) {
+
+    public EmotionRecognitionParams {
+        valence = lowerCased(valence == null ? Map.of("good dog", 1.0, "well done", 1.0, "good", 0.8, "great", 0.8,
+                "yes", 0.5, "bad dog", -1.0, "bad", -0.8, "no", -0.7, "stop", -0.3) : valence, "valence");
+        touchValence = checked(touchValence == null ? Map.of("backMiddle", 1.0, "backFront", 0.6, "backRear", 0.6,
+                "chin", 0.5, "headTouch", -1.0) : touchValence, "touchValence");
+        utteranceWindowMs = ParamRules.within("utteranceWindowMs", utteranceWindowMs, 3000, 100, 60_000);
+        baselineWeight = ParamRules.within("baselineWeight", baselineWeight, 0.2, 0, 1);
+        loudRangeDb = ParamRules.within("loudRangeDb", loudRangeDb, 12, 0.1, 100);
+        pitchRangeOctaves = ParamRules.within("pitchRangeOctaves", pitchRangeOctaves, 0.5, 0.01, 4);
+        positiveValence = ParamRules.within("positiveValence", positiveValence, 0.3, 0, 1);
+        excitedArousal = ParamRules.within("excitedArousal", excitedArousal, 0.7, 0, 1);
+        angryArousal = ParamRules.within("angryArousal", angryArousal, 0.5, 0, 1);
+    }
+
+    /** Every parameter at its default. */
+    public static EmotionRecognitionParams defaults() {
+        return new EmotionRecognitionParams(null, null, null, null, null, null, null, null, null);
+    }
+
+    private static Map<String, Double> lowerCased(Map<String, Double> in, String name) {
+        Map<String, Double> out = new TreeMap<>();
+        checked(in, name).forEach((k, v) -> out.put(k.trim().toLowerCase(Locale.ROOT).replaceAll("\\s+", " "), v));
+        return Map.copyOf(out);
+    }
+
+    private static Map<String, Double> checked(Map<String, Double> in, String name) {
+        for (Map.Entry<String, Double> e : in.entrySet()) {
+            if (e.getKey().isBlank() || e.getValue() == null || !(e.getValue() >= -1 && e.getValue() <= 1)) {
+                throw new IllegalArgumentException(name + " entry '" + e.getKey() + "' needs a value within [-1, 1], was "
+                        + e.getValue());
+            }
+        }
+        return Map.copyOf(in);
+    }
+}

@@ -1,0 +1,147 @@
+package org.habla.methods.gaze;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.time.Duration;
+import org.habla.method.Delivery;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.method.ProcessingMethod;
+import org.habla.method.Shape;
+import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.methods.geometry.CameraModel;
+import org.habla.sample.RecordValue;
+import org.habla.sample.Sample;
+import org.habla.sample.VectorValue;
+
+/**
+ * The head control method, type {@code head-control}: it keeps a head-mounted camera on the target.
+ * Each {@code blobs} record (from image segmentation) with a blob of the {@code label} turns the head
+ * towards it: the blob's angular offset from the image centre (from the camera's field of view, input
+ * {@code camera} or params) times {@code gain} is added to the head's pan and tilt, and output
+ * {@code head} sends the vector {@code [tiltRad, panRad, nodRad]} within the joint limits. The offset
+ * is taken from the head's measured pose (input {@code head}) when wired, as the image was taken
+ * there, else from the last command. When the target has been out of sight for {@code lostAfterMs}
+ * the head scans: the tilt goes to {@code scanTiltRad} and the pan sweeps between
+ * ±{@code scanPanRad} at {@code scanSpeedRadps}, one step every {@code periodMs}, until the target
+ * shows again.
+ */
+public final class HeadControl extends ProcessingMethod {
+
+    private final HeadControlParams params;
+    private final HeadLimits limits;
+    private final Output<VectorValue> head = output("head", VectorValue.class,
+            Shape.vector("rad", "[tiltRad, panRad, nodRad] that keeps the target in view"));
+
+    private CameraModel camera;
+    private HeadPose measured;
+    private HeadPose commanded;
+    private long lastSeenMicros = Long.MIN_VALUE;
+    private double scanDirection = 1;
+    private boolean scanning;
+    private boolean warnedNoCamera;
+
+    HeadControl(HeadControlParams params) {
+        this.params = params;
+        this.limits = HeadLimits.resolve(params, null);
+        this.commanded = limits.clamp(new HeadPose(params.scanTiltRad(), 0, params.nodRad()));
+        input("blobs", RecordValue.class, Delivery.latest(), this::onBlobs);
+        optionalInput("camera", RecordValue.class, Delivery.latest(), this::onCamera);
+        optionalInput("head", RecordValue.class, Delivery.latest(), this::onHead);
+        tickEvery(Duration.ofMillis(params.periodMs()));
+    }
+
+    @Override
+    protected void onStart() {
+        lastSeenMicros = nowMicros();
+        if (params.hfovRad() != null && params.vfovRad() != null) {
+            camera = new CameraModel(params.hfovRad(), params.vfovRad(), 1, 1, 0);
+        }
+    }
+
+    private void onCamera(RecordValue record, Sample sample) {
+        CameraModel.fromJson(record.json(), null).ifPresent(c -> camera = new CameraModel(
+                params.hfovRad() != null ? params.hfovRad() : c.hfovRad(),
+                params.vfovRad() != null ? params.vfovRad() : c.vfovRad(), c.width(), c.height(), c.heightM()));
+    }
+
+    private void onHead(RecordValue record, Sample sample) {
+        HeadPose.fromRecord(record).ifPresent(p -> measured = p);
+    }
+
+    private void onBlobs(RecordValue record, Sample sample) {
+        JsonNode blob = target(record.get("blobs"));
+        if (blob == null) {
+            return;
+        }
+        JsonNode w = record.get("width");
+        JsonNode h = record.get("height");
+        if (camera == null || !w.isInt() || !h.isInt() || w.intValue() <= 0 || h.intValue() <= 0) {
+            if (!warnedNoCamera) {
+                warnedNoCamera = true;
+                log().warn("{}: cannot aim without the image size and field of view; wire input camera or set "
+                        + "hfovRad and vfovRad", id());
+            }
+            return;
+        }
+        CameraModel cam = camera.withSize(w.intValue(), h.intValue());
+        double[] ray = cam.ray(blob.get("cx").doubleValue(), blob.get("cy").doubleValue());
+        double left = Math.atan(ray[1]);
+        double up = Math.atan(ray[2]);
+        HeadPose base = measured != null ? measured : commanded;
+        double pan = base.panRad() + (Math.abs(left) > params.deadbandRad() ? params.gain() * left : 0);
+        double tilt = base.tiltRad() + (Math.abs(up) > params.deadbandRad() ? params.gain() * up : 0);
+        lastSeenMicros = nowMicros();
+        scanning = false;
+        command(new HeadPose(tilt, pan, params.nodRad()));
+    }
+
+    @Override
+    protected void onTick(long nowMicros) {
+        if (nowMicros - lastSeenMicros < params.lostAfterMs() * 1000L) {
+            return;
+        }
+        if (!scanning) {
+            scanning = true;
+            scanDirection = commanded.panRad() >= 0 ? 1 : -1;
+        }
+        double step = params.scanSpeedRadps() * params.periodMs() / 1000.0;
+        double pan = commanded.panRad() + scanDirection * step;
+        if (Math.abs(pan) >= params.scanPanRad()) {
+            pan = Math.copySign(params.scanPanRad(), pan);
+            scanDirection = -scanDirection;
+        }
+        command(new HeadPose(params.scanTiltRad(), pan, params.nodRad()));
+    }
+
+    private void command(HeadPose wanted) {
+        commanded = limits.clamp(wanted);
+        emit(head, commanded.toVector());
+    }
+
+    private JsonNode target(JsonNode blobs) {
+        if (!blobs.isArray()) {
+            return null;
+        }
+        for (JsonNode b : blobs) {
+            boolean labelled = params.label().isEmpty() || params.label().equals(b.path("label").asText());
+            if (labelled && b.path("cx").isNumber() && b.path("cy").isNumber()
+                    && Double.isFinite(b.get("cx").doubleValue()) && Double.isFinite(b.get("cy").doubleValue())) {
+                return b;
+            }
+        }
+        return null;
+    }
+
+    /** Whether the head is scanning for a lost target. */
+    public boolean scanning() {
+        return scanning;
+    }
+
+    /** Makes {@code head-control} methods. */
+    public static final class Provider extends SimpleMethodProvider<HeadControlParams> {
+        public Provider() {
+            super("head-control", "Turns the head to keep the target's blob in the middle of the image; scans when it is lost",
+                    HeadControlParams.class, (layer, p) -> new HeadControl(p), Layer.PROCESSING);
+        }
+    }
+}

@@ -1,0 +1,52 @@
+package org.habla.methods.gaze;
+
+import org.habla.methods.ParamRules;
+import org.habla.plugin.Param;
+
+/** The params of the {@code head-control} method: what to follow, how briskly, how to search, and the joint limits. */
+public record HeadControlParams(
+        @Param(value = "Blob label to keep in view; empty follows the largest blob of any label", defaultValue = "\"pink\"")
+        String label,
+        @Param(value = "Share of the angular error corrected per image", defaultValue = "0.6") Double gain,
+        @Param(value = "Errors smaller than this are left alone", unit = "rad", defaultValue = "0.02") Double deadbandRad,
+        @Param(value = "Horizontal field of view; overrides the camera record", unit = "rad", defaultValue = "camera record")
+        Double hfovRad,
+        @Param(value = "Vertical field of view; overrides the camera record", unit = "rad", defaultValue = "camera record")
+        Double vfovRad,
+        @Param(value = "Time without the target after which the head starts scanning", unit = "ms", defaultValue = "1000")
+        Integer lostAfterMs,
+        @Param(value = "Pan speed of the scan", unit = "rad/s", defaultValue = "0.6") Double scanSpeedRadps,
+        @Param(value = "The scan sweeps the pan between minus and plus this", unit = "rad", defaultValue = "1.2")
+        Double scanPanRad,
+        @Param(value = "Neck tilt held during the scan", unit = "rad", defaultValue = "-0.35") Double scanTiltRad,
+        @Param(value = "Nod held while tracking and scanning", unit = "rad", defaultValue = "0") Double nodRad,
+        @Param(value = "Period of the scan steps", unit = "ms", defaultValue = "100") Integer periodMs,
+        @Param(value = "Lowest neck tilt", unit = "rad", defaultValue = "-1.31") Double tiltMinRad,
+        @Param(value = "Highest neck tilt", unit = "rad", defaultValue = "0.05") Double tiltMaxRad,
+        @Param(value = "Pan furthest to the right", unit = "rad", defaultValue = "-1.62") Double panMinRad,
+        @Param(value = "Pan furthest to the left", unit = "rad", defaultValue = "1.62") Double panMaxRad,
+        @Param(value = "Lowest nod", unit = "rad", defaultValue = "-0.26") Double nodMinRad,
+        @Param(value = "Highest nod", unit = "rad", defaultValue = "0.79") Double nodMaxRad)
+        implements HeadLimits.HeadLimitsOverride {
+
+    public HeadControlParams {
+        label = label == null ? "pink" : label;
+        gain = ParamRules.within("gain", gain, 0.6, 0, 1);
+        deadbandRad = ParamRules.within("deadbandRad", deadbandRad, 0.02, 0, 1);
+        hfovRad = hfovRad == null ? null : ParamRules.within("hfovRad", hfovRad, 1, 0.01, 3.1);
+        vfovRad = vfovRad == null ? null : ParamRules.within("vfovRad", vfovRad, 1, 0.01, 3.1);
+        lostAfterMs = ParamRules.within("lostAfterMs", lostAfterMs, 1000, 0, 600_000);
+        scanSpeedRadps = ParamRules.within("scanSpeedRadps", scanSpeedRadps, 0.6, 0, 10);
+        scanPanRad = ParamRules.within("scanPanRad", scanPanRad, 1.2, 0, Math.PI);
+        scanTiltRad = ParamRules.within("scanTiltRad", scanTiltRad, -0.35, -Math.PI, Math.PI);
+        nodRad = ParamRules.within("nodRad", nodRad, 0, -Math.PI, Math.PI);
+        periodMs = ParamRules.within("periodMs", periodMs, 100, 10, 10_000);
+        new HeadLimits(tiltMinRad, tiltMaxRad, panMinRad, panMaxRad, nodMinRad, nodMaxRad);
+    }
+
+    /** Every parameter at its default. */
+    public static HeadControlParams defaults() {
+        return new HeadControlParams(null, null, null, null, null, null, null, null, null, null, null,
+                null, null, null, null, null, null);
+    }
+}

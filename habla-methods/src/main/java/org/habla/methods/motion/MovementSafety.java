@@ -1,0 +1,162 @@
+package org.habla.methods.motion;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.time.Duration;
+import java.util.List;
+import java.util.Locale;
+import java.util.Optional;
+import org.habla.method.Delivery;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.method.ProcessingMethod;
+import org.habla.method.Shape;
+import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.sample.PayloadKind;
+import org.habla.sample.RecordValue;
+import org.habla.sample.Sample;
+import org.habla.sample.TextValue;
+import org.habla.sample.VectorValue;
+
+/**
+ * The movement-safety method, type {@code movement-safety}: keeps a mobile base from driving into what
+ * its range sensors see. Input {@code motion} {@code [vMps, wRadps]} goes out on output {@code motion}
+ * within the top speeds (params, else the optional {@code limits} input), except that forward motion is
+ * vetoed — its speed set to zero, turning still allowed — while the nearest obstacle ahead is closer than
+ * {@code stopDistanceM}, and backward motion likewise for an obstacle behind. Ahead and behind come from
+ * the {@code nearest} record's {@code aheadM} and {@code behindM} (from {@code nearest-distance}), or, when
+ * it lacks them, from its {@code distanceM} and {@code angleRad} and the cones of {@code coneRad}. A motion
+ * being held is checked again on every nearest record, so an obstacle that comes close stops it. With no
+ * nearest record for {@code maxAgeMs}, translation is vetoed too. Output {@code veto} says why, once
+ * each time a veto begins.
+ */
+public final class MovementSafety extends ProcessingMethod {
+
+    private final MovementSafetyParams params;
+    private final Output<VectorValue> out = output("motion", VectorValue.class,
+            new Shape(PayloadKind.VECTOR, "m/s, rad/s", List.of("vMps", "wRadps"), "the motion that is safe to make"));
+    private final Output<TextValue> vetoOut = output("veto", TextValue.class,
+            Shape.text("why a motion was stopped, once each time a veto begins"));
+
+    private MotionLimits limits;
+    private double wantedV;
+    private double wantedW;
+    private boolean wanted;
+    private double aheadM = Double.POSITIVE_INFINITY;
+    private double behindM = Double.POSITIVE_INFINITY;
+    private long nearestMicros = Long.MIN_VALUE;
+    private double[] lastSent;
+    private String veto = "";
+    private long vetoes;
+    private long malformed;
+
+    MovementSafety(MovementSafetyParams params) {
+        this.params = params;
+        this.limits = MotionLimits.NONE.overriddenBy(params.maxVelMps(), params.maxRotVelRadps());
+        input("motion", VectorValue.class, Delivery.latest(), this::onMotion);
+        input("nearest", RecordValue.class, Delivery.latest(), this::onNearest);
+        optionalInput("limits", RecordValue.class, Delivery.latest(), this::onLimits);
+        tickEvery(Duration.ofMillis(100));
+    }
+
+    private void onLimits(RecordValue value, Sample sample) {
+        limits = MotionLimits.fromJson(value.json()).orElse(MotionLimits.NONE)
+                .overriddenBy(params.maxVelMps(), params.maxRotVelRadps());
+        if (wanted) {
+            decide(false);
+        }
+    }
+
+    private void onMotion(VectorValue value, Sample sample) {
+        Optional<double[]> m = MotionLimits.motionOf(value);
+        if (m.isEmpty()) {
+            if (malformed++ == 0) {
+                log().warn("{}: a motion that is not [vMps, wRadps] of finite numbers is taken as zero: {}", id(), value);
+            }
+        }
+        wantedV = m.map(a -> a[0]).orElse(0.0);
+        wantedW = m.map(a -> a[1]).orElse(0.0);
+        wanted = true;
+        decide(true);
+    }
+
+    private void onNearest(RecordValue value, Sample sample) {
+        double ahead = finite(value.get("aheadM"));
+        double behind = finite(value.get("behindM"));
+        if (Double.isNaN(ahead) || Double.isNaN(behind) || ahead < 0 || behind < 0) {
+            double d = finite(value.get("distanceM"));
+            double a = finite(value.get("angleRad"));
+            JsonNode valid = value.get("valid");
+            if (Double.isNaN(d) || Double.isNaN(a) || d < 0) {
+                if (malformed++ == 0) {
+                    log().warn("{}: a nearest record without finite aheadM/behindM or distanceM/angleRad was ignored",
+                            id());
+                }
+                return;
+            }
+            boolean real = !valid.isBoolean() || valid.booleanValue();
+            ahead = real && Math.abs(a) <= params.coneRad() ? d : Double.POSITIVE_INFINITY;
+            behind = real && Math.PI - Math.abs(a) <= params.coneRad() ? d : Double.POSITIVE_INFINITY;
+        }
+        aheadM = ahead;
+        behindM = behind;
+        nearestMicros = nowMicros();
+        if (wanted) {
+            decide(false);
+        }
+    }
+
+    @Override
+    protected void onTick(long nowMicros) {
+        if (wanted && !fresh(nowMicros)) {
+            decide(false);
+        }
+    }
+
+    private boolean fresh(long now) {
+        return nearestMicros != Long.MIN_VALUE && now - nearestMicros <= params.maxAgeMs() * 1000L;
+    }
+
+    /** Works out the safe motion; emits it when asked for anew or when it changed. */
+    private void decide(boolean always) {
+        double[] vw = limits.clamp(wantedV, wantedW);
+        String why = "";
+        if (vw[0] != 0 && !fresh(nowMicros())) {
+            why = (vw[0] > 0 ? "forward" : "backward") + " motion vetoed: no fresh range data";
+        } else if (vw[0] > 0 && aheadM < params.stopDistanceM()) {
+            why = String.format(Locale.ROOT, "forward motion vetoed: obstacle %.2f m ahead (stop distance %.2f m)",
+                    aheadM, params.stopDistanceM());
+        } else if (vw[0] < 0 && behindM < params.stopDistanceM()) {
+            why = String.format(Locale.ROOT, "backward motion vetoed: obstacle %.2f m behind (stop distance %.2f m)",
+                    behindM, params.stopDistanceM());
+        }
+        if (!why.isEmpty()) {
+            vw[0] = 0;
+            if (veto.isEmpty()) {
+                vetoes++;
+                emit(vetoOut, new TextValue(why));
+            }
+        }
+        veto = why;
+        if (always || lastSent == null || lastSent[0] != vw[0] || lastSent[1] != vw[1]) {
+            lastSent = vw;
+            emit(out, VectorValue.wrap(vw.clone()));
+        }
+    }
+
+    /** Vetoes begun since start. */
+    public long vetoes() {
+        return vetoes;
+    }
+
+    private static double finite(JsonNode n) {
+        return n.isNumber() && Double.isFinite(n.doubleValue()) ? n.doubleValue() : Double.NaN;
+    }
+
+    /** Makes {@code movement-safety} methods. */
+    public static final class Provider extends SimpleMethodProvider<MovementSafetyParams> {
+        public Provider() {
+            super("movement-safety", "Vetoes motion towards an obstacle nearer than a stop distance, within top speeds",
+                    MovementSafetyParams.class, (layer, p) -> new MovementSafety(p), Layer.PROCESSING);
+        }
+    }
+}

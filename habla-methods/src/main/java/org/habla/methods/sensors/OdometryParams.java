@@ -1,0 +1,18 @@
+package org.habla.methods.sensors;
+
+import org.habla.plugin.Param;
+
+/** The params of the {@code odometry} method. */
+public record OdometryParams(
+        @Param(value = "Report the pose relative to where the robot was at the first reading", defaultValue = "false")
+        Boolean fromFirstReading) {
+
+    public OdometryParams {
+        fromFirstReading = fromFirstReading != null && fromFirstReading;
+    }
+
+    /** Every parameter at its default. */
+    public static OdometryParams defaults() {
+        return new OdometryParams(null);
+    }
+}

@@ -1,0 +1,171 @@
+package org.habla.methods.speech;
+
+import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.Optional;
+import org.habla.method.Delivery;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.method.ProcessingMethod;
+import org.habla.method.Shape;
+import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.methods.audio.MonoAudio;
+import org.habla.methods.audio.UtteranceGate;
+import org.habla.sample.AudioChunk;
+import org.habla.sample.AudioFormat;
+import org.habla.sample.RecordValue;
+import org.habla.sample.Sample;
+import org.habla.sample.TextValue;
+
+/**
+ * Speech recognition with Sphinx-4, type {@code speech-recognition}: the paper's way for a teacher
+ * to talk to the Aibo. Wire input {@code segments} to the utterances of {@code audio-processing}
+ * (each chunk one utterance), or input {@code audio} to a microphone stream, which the method then
+ * cuts into utterances itself with the same energy gate; any rate and channel count (resampled to
+ * the 16 kHz mono Sphinx's model needs). Each recognised phrase of the grammar comes out on
+ * {@code words} as text and on {@code result} as a record ({@code phrase}, {@code timeMs} the
+ * decoding time, {@code audioMs} the utterance's length, {@code score} Sphinx's log score of the
+ * best path — not a confidence). An utterance Sphinx hears nothing of the grammar in gives nothing.
+ *
+ * <p>The model loads in the background when the method starts (a few seconds; readiness is
+ * "loading model" until then) and each utterance is decoded in the background, one at a time, so the
+ * engine never waits for Sphinx. Utterances that arrive meanwhile wait, up to {@code maxPending};
+ * beyond that the oldest is dropped and counted.
+ */
+public final class SpeechRecognition extends ProcessingMethod {
+
+    private static final int SPHINX_RATE_HZ = 16_000;
+    private static final double GATE_FRAME_MS = 32;
+    /** Shorter than this no word fits; such audio is not worth a decoder's turn. */
+    private static final int MIN_UTTERANCE_MS = 50;
+
+    /** An utterance waiting for the decoder, with the source time of its last audio. */
+    private record Pending(AudioChunk audio, long sourceMicros) {
+    }
+
+    private final SpeechRecognitionParams params;
+    private final Output<TextValue> words = output("words", TextValue.class,
+            Shape.text("the phrase of the grammar recognised in one utterance"));
+    private final Output<RecordValue> result = output("result", RecordValue.class,
+            Shape.record("the recognised phrase with its decoding time", "phrase", "timeMs", "audioMs", "score"));
+    private final ArrayDeque<Pending> pending = new ArrayDeque<>();
+
+    private SphinxDecoder decoder;
+    private boolean busy;
+    private long dropped;
+    private long recognised;
+    private AudioFormat streamFormat;
+    private UtteranceGate gate;
+    private double[] frame = new double[0];
+    private int frameFill;
+
+    SpeechRecognition(SpeechRecognitionParams params) {
+        this.params = params;
+        optionalInput("segments", AudioChunk.class, Delivery.queue(params.queue()), this::onSegment);
+        optionalInput("audio", AudioChunk.class, Delivery.queue(params.queue()), this::onAudio);
+    }
+
+    @Override
+    protected void onStart() {
+        readiness(false, "loading model");
+        String grammar = params.grammar();
+        background("load the Sphinx-4 model",
+                () -> grammar.isEmpty() ? SphinxDecoder.bundled() : SphinxDecoder.withGrammarFile(Path.of(grammar)),
+                loaded -> {
+                    decoder = loaded;
+                    readiness(true, "model loaded");
+                    decodeNext();
+                });
+    }
+
+    private void onSegment(AudioChunk chunk, Sample sample) {
+        double[] mono = MonoAudio.resample(MonoAudio.mix(chunk), chunk.format().sampleRateHz(), SPHINX_RATE_HZ);
+        enqueue(MonoAudio.chunk(mono, SPHINX_RATE_HZ), sample.sourceMicros());
+    }
+
+    private void onAudio(AudioChunk chunk, Sample sample) {
+        if (!chunk.format().equals(streamFormat)) {
+            streamFormat = chunk.format();
+            int length = Math.max(16, (int) Math.round(GATE_FRAME_MS * streamFormat.sampleRateHz() / 1000));
+            gate = new UtteranceGate(streamFormat.sampleRateHz(), length, params.gate());
+            frame = new double[length];
+            frameFill = 0;
+        }
+        double[] mono = MonoAudio.mix(chunk);
+        int at = 0;
+        while (at < mono.length) {
+            int take = Math.min(frame.length - frameFill, mono.length - at);
+            System.arraycopy(mono, at, frame, frameFill, take);
+            frameFill += take;
+            at += take;
+            if (frameFill == frame.length) {
+                double[] full = frame;
+                frame = new double[full.length];
+                frameFill = 0;
+                Optional<double[]> utterance = gate.offer(full, MonoAudio.dbfs(MonoAudio.rms(full)));
+                if (utterance.isPresent()) {
+                    double[] mono16 = MonoAudio.resample(utterance.get(), streamFormat.sampleRateHz(), SPHINX_RATE_HZ);
+                    enqueue(MonoAudio.chunk(mono16, SPHINX_RATE_HZ), sample.sourceMicros());
+                }
+            }
+        }
+    }
+
+    private void enqueue(AudioChunk utterance, long sourceMicros) {
+        if (utterance.frameCount() < SPHINX_RATE_HZ * MIN_UTTERANCE_MS / 1000) {
+            return;
+        }
+        pending.addLast(new Pending(utterance, sourceMicros));
+        while (pending.size() > params.maxPending()) {
+            pending.removeFirst();
+            dropped++;
+            log().warn("{}: {} utterances dropped so far: more arrive than Sphinx decodes (maxPending {})", id(),
+                    dropped, params.maxPending());
+        }
+        decodeNext();
+    }
+
+    private void decodeNext() {
+        if (decoder == null || busy || pending.isEmpty()) {
+            return;
+        }
+        busy = true;
+        Pending next = pending.removeFirst();
+        SphinxDecoder d = decoder;
+        background("recognise an utterance", () -> d.decode(next.audio()), decoded -> {
+            busy = false;
+            decoded.ifPresent(r -> publish(r, next));
+            decodeNext();
+        });
+    }
+
+    private void publish(SphinxDecoder.Decoded r, Pending utterance) {
+        recognised++;
+        long audioMs = utterance.audio().frameCount() * 1000L / SPHINX_RATE_HZ;
+        emit(words, new TextValue(r.phrase()), utterance.sourceMicros());
+        emit(result, RecordValue.builder()
+                .put("phrase", r.phrase())
+                .put("timeMs", r.decodeMs())
+                .put("audioMs", audioMs)
+                .put("score", r.score())
+                .build(), utterance.sourceMicros());
+    }
+
+    /** Utterances dropped because too many waited. */
+    public long droppedUtterances() {
+        return dropped;
+    }
+
+    /** Utterances in which a phrase was recognised. */
+    public long recognisedUtterances() {
+        return recognised;
+    }
+
+    /** Makes {@code speech-recognition} methods. */
+    public static final class Provider extends SimpleMethodProvider<SpeechRecognitionParams> {
+        public Provider() {
+            super("speech-recognition", "Recognises spoken phrases of a grammar with Sphinx-4",
+                    SpeechRecognitionParams.class, (layer, p) -> new SpeechRecognition(p), Layer.PROCESSING);
+        }
+    }
+}

@@ -1,0 +1,97 @@
+package org.habla.methods.virtual;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.time.Duration;
+import org.habla.method.Delivery;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.method.Shape;
+import org.habla.method.VirtualMethod;
+import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.sample.RecordValue;
+import org.habla.sample.Sample;
+
+/**
+ * The link-state method, type {@code link-state}: whether the robot is connected, for the control
+ * architecture. Input {@code link} takes the record the engine publishes on every interface's {@code link}
+ * channel ({@code {"up", "interface", "detail"}}, on every change and once a second), carried up by a
+ * {@code channel} and a {@code pass-through} method. Output {@code link} is the record
+ *
+ * <pre>{@code {"connected": true, "stale": false, "sinceMs": 5300, "interface": "robot", "detail": "all connections up"}}</pre>
+ *
+ * where {@code sinceMs} is how long the link has been in its present state (as seen here) and {@code stale}
+ * says the news is doubtful: the sample came marked stale, or no link record came for {@code staleAfterMs}.
+ * It is emitted on every link record and when the records stop.
+ */
+public final class LinkState extends VirtualMethod {
+
+    private final LinkStateParams params;
+    private final Output<RecordValue> out = output("link", RecordValue.class, Shape.record(
+            "whether the robot's link is up, whether that news is stale, and for how long it has been so",
+            "connected", "stale", "sinceMs", "interface", "detail"));
+
+    private boolean known;
+    private boolean connected;
+    private boolean staleSample;
+    private boolean silent;
+    private long changedMicros;
+    private long lastRecordMicros;
+    private String iface = "";
+    private String detail = "";
+    private long malformed;
+
+    LinkState(LinkStateParams params) {
+        this.params = params;
+        input("link", RecordValue.class, Delivery.latest(), this::onLink);
+        tickEvery(Duration.ofMillis(Math.max(50, params.staleAfterMs() / 4)));
+    }
+
+    private void onLink(RecordValue value, Sample sample) {
+        JsonNode up = value.get("up");
+        if (!up.isBoolean()) {
+            if (malformed++ == 0) {
+                log().warn("{}: a link record without a boolean 'up' was ignored: {}", id(), value);
+            }
+            return;
+        }
+        long now = nowMicros();
+        if (!known || up.booleanValue() != connected) {
+            changedMicros = now;
+        }
+        known = true;
+        connected = up.booleanValue();
+        staleSample = sample.stale();
+        silent = false;
+        lastRecordMicros = now;
+        iface = value.get("interface").isTextual() ? value.get("interface").asText() : "";
+        detail = value.get("detail").isTextual() ? value.get("detail").asText() : "";
+        publish(now);
+    }
+
+    @Override
+    protected void onTick(long nowMicros) {
+        if (known && !silent && nowMicros - lastRecordMicros > params.staleAfterMs() * 1000L) {
+            silent = true;
+            publish(nowMicros);
+        }
+    }
+
+    private void publish(long now) {
+        emit(out, RecordValue.builder().put("connected", connected).put("stale", staleSample || silent)
+                .put("sinceMs", (now - changedMicros) / 1000).put("interface", iface)
+                .put("detail", silent ? "no link news for " + params.staleAfterMs() + " ms" : detail).build());
+    }
+
+    /** Records without a boolean {@code up}, since start. */
+    public long malformed() {
+        return malformed;
+    }
+
+    /** Makes {@code link-state} methods. */
+    public static final class Provider extends SimpleMethodProvider<LinkStateParams> {
+        public Provider() {
+            super("link-state", "Whether the robot's link is up, whether that is stale, and since when",
+                    LinkStateParams.class, (layer, p) -> new LinkState(p), Layer.VIRTUAL);
+        }
+    }
+}

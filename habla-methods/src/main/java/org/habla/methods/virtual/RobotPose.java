@@ -1,0 +1,55 @@
+package org.habla.methods.virtual;
+
+import java.util.Optional;
+import org.habla.method.Delivery;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.method.Shape;
+import org.habla.method.VirtualMethod;
+import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.methods.geometry.PlanarPose;
+import org.habla.plugin.NoParams;
+import org.habla.sample.RecordValue;
+import org.habla.sample.Sample;
+
+/**
+ * The robot-pose method, type {@code robot-pose}: the robot's pose for the control architecture, as the
+ * record {@code {"xM","yM","thetaRad"}} (heading in (-π, π], counter-clockwise). Input {@code pose} takes a
+ * pose record, e.g. the {@code odometry} method's; extra fields are left out and a record without a finite
+ * pose is counted and ignored.
+ */
+public final class RobotPose extends VirtualMethod {
+
+    private final Output<RecordValue> out = output("pose", RecordValue.class,
+            Shape.record("the robot's pose: position (m) and heading (rad, counter-clockwise)", "xM", "yM", "thetaRad"));
+
+    private long malformed;
+
+    RobotPose() {
+        input("pose", RecordValue.class, Delivery.latest(), this::onPose);
+    }
+
+    private void onPose(RecordValue value, Sample sample) {
+        Optional<PlanarPose> pose = PlanarPose.fromJson(value.json());
+        if (pose.isEmpty()) {
+            if (malformed++ == 0) {
+                log().warn("{}: a pose record without finite xM, yM, thetaRad was ignored: {}", id(), value);
+            }
+            return;
+        }
+        emit(out, RecordValue.of(pose.get().toJson()));
+    }
+
+    /** Records without a finite pose, since start. */
+    public long malformed() {
+        return malformed;
+    }
+
+    /** Makes {@code robot-pose} methods. */
+    public static final class Provider extends SimpleMethodProvider<NoParams> {
+        public Provider() {
+            super("robot-pose", "The robot's pose {xM, yM, thetaRad} for the control architecture",
+                    NoParams.class, (layer, p) -> new RobotPose(), Layer.VIRTUAL);
+        }
+    }
+}

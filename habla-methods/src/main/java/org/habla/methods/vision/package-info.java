@@ -1,0 +1,2 @@
+/** Vision methods of the processing layer: colour segmentation of camera frames with OpenCV. */
+package org.habla.methods.vision;

@@ -1,0 +1,77 @@
+package org.habla.methods.motion;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import org.habla.method.MethodHarness;
+import org.habla.sample.RecordValue;
+import org.habla.sample.TextValue;
+import org.habla.sample.VectorValue;
+import org.junit.jupiter.api.Test;
+
+class MovementSafetyTest {
+
+    private static RecordValue nearest(double aheadM, double behindM) {
+        return RecordValue.builder().put("distanceM", Math.min(aheadM, behindM)).put("angleRad", 0.0)
+                .put("aheadM", aheadM).put("behindM", behindM).put("valid", true).build();
+    }
+
+    private static MethodHarness safety() {
+        return MethodHarness.started("safety", new MovementSafety(MovementSafetyParams.defaults()));
+    }
+
+    @Test
+    void aClearPathLetsTheMotionThrough() {
+        MethodHarness h = safety();
+        h.push("nearest", nearest(2.0, 2.0)).push("motion", VectorValue.of(0.2, 0.1));
+        assertThat(h.last("motion")).isEqualTo(VectorValue.of(0.2, 0.1));
+        assertThat(h.values("veto")).isEmpty();
+    }
+
+    @Test
+    void forwardIsVetoedNearAnObstacleAheadButTurningAndBackingAreNot() {
+        MethodHarness h = safety();
+        h.push("nearest", nearest(0.2, 3.0)).push("motion", VectorValue.of(0.2, 0.4));
+        assertThat(h.last("motion")).isEqualTo(VectorValue.of(0, 0.4));
+        assertThat(((TextValue) h.last("veto")).text()).contains("forward motion vetoed", "0.20 m ahead");
+        h.push("motion", VectorValue.of(-0.1, 0));
+        assertThat(h.last("motion")).isEqualTo(VectorValue.of(-0.1, 0));
+        h.push("nearest", nearest(0.2, 0.1));
+        assertThat(h.last("motion")).as("the held backward motion meets a wall behind").isEqualTo(VectorValue.of(0, 0));
+        assertThat(((TextValue) h.last("veto")).text()).contains("backward motion vetoed");
+    }
+
+    @Test
+    void aHeldMotionStopsWhenAnObstacleComesCloseAndGoesOnWhenItIsGone() {
+        MethodHarness h = safety();
+        h.push("nearest", nearest(1.0, 3.0)).push("motion", VectorValue.of(0.2, 0));
+        h.push("nearest", nearest(0.8, 3.0)).push("nearest", nearest(0.25, 3.0)).push("nearest", nearest(0.24, 3.0));
+        assertThat(h.values("motion")).containsExactly(VectorValue.of(0.2, 0), VectorValue.of(0, 0));
+        assertThat(h.values("veto")).as("one veto line per veto").hasSize(1);
+        h.push("nearest", nearest(0.5, 3.0));
+        assertThat(h.last("motion")).isEqualTo(VectorValue.of(0.2, 0));
+    }
+
+    @Test
+    void withoutAheadAndBehindTheNearestBearingDecidesAndWithoutRangeDataTranslationIsVetoed() {
+        MethodHarness h = safety();
+        h.push("motion", VectorValue.of(0.2, 0));
+        assertThat(h.last("motion")).isEqualTo(VectorValue.of(0, 0));
+        assertThat(((TextValue) h.last("veto")).text()).contains("no fresh range data");
+        h.push("nearest", RecordValue.builder().put("distanceM", 0.1).put("angleRad", Math.PI / 2).build());
+        assertThat(h.last("motion")).as("an obstacle to the side does not stop forward motion")
+                .isEqualTo(VectorValue.of(0.2, 0));
+        h.push("nearest", RecordValue.builder().put("distanceM", 0.1).put("angleRad", -0.5).build());
+        assertThat(h.last("motion")).isEqualTo(VectorValue.of(0, 0));
+        h.push("nearest", RecordValue.builder().put("distanceM", 2.0).put("angleRad", 0.0).build());
+        h.advanceMillis(1200);
+        assertThat(h.last("motion")).as("range data went silent").isEqualTo(VectorValue.of(0, 0));
+    }
+
+    @Test
+    void theLimitsInputScalesTheMotion() {
+        MethodHarness h = safety();
+        h.push("limits", RecordValue.builder().put("maxVelMps", 0.1).build());
+        h.push("nearest", nearest(5, 5)).push("motion", VectorValue.of(0.4, 0.4));
+        assertThat(h.last("motion")).isEqualTo(VectorValue.of(0.1, 0.1));
+    }
+}
