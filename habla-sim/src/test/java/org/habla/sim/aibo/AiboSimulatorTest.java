@@ -53,8 +53,8 @@ class AiboSimulatorTest {
 
     /** The arena with the teacher away, the driver connected with every server (the walk re-sent often: 8× time). */
     private void start(String extraParams) throws IOException {
-        sim = new AiboSimulator(new AiboSimulator.Options(World.builtIn("aibo-arena"), SPEED, 3,
-                TekkotsuPorts.ANY_FREE, 0, false));
+        sim = new AiboSimulator(AiboSimulator.Options.defaults(World.builtIn("aibo-arena")).onFreePorts()
+                .withSpeed(SPEED).withSeed(3).withTeacher(false));
         sim.start();
         truth = new TruthClient(sim.truthPort());
         TekkotsuPorts p = sim.ports();
