@@ -14,8 +14,9 @@ class TeacherTest {
         final List<String> said = new ArrayList<>();
 
         @Override
-        public synchronized void giveCommand(String label) {
+        public synchronized double giveCommand(String label) {
             said.add(label);
+            return 0;
         }
 
         @Override
