@@ -42,7 +42,10 @@ public final class GaitComposition extends ProcessingMethod {
         }
         if (!valid) {
             rejected++;
-            log().warn("{}: motion {} is not [vMps, wRadps] of finite numbers; walking stops", id(), motion);
+            if (rejected == 1 || rejected % 1000 == 0) {
+                log().warn("{}: motion {} is not [vMps, wRadps] of finite numbers; walking stops ({} so far)", id(),
+                        motion, rejected);
+            }
             emit(walk, VectorValue.of(0, 0, 0));
             return;
         }

@@ -99,6 +99,9 @@ public final class NearestDistance extends ProcessingMethod {
                 }
             }
         }
+        if (best.found()) {
+            spread(best);
+        }
         RecordValue.Builder b = RecordValue.builder();
         if (best.found()) {
             b.put("distanceM", best.rangeM).put("angleRad", best.bearingRad).put("xM", best.xM).put("yM", best.yM)
@@ -109,6 +112,41 @@ public final class NearestDistance extends ProcessingMethod {
         }
         b.put("aheadM", ahead.found() ? ahead.rangeM : reach).put("behindM", behind.found() ? behind.rangeM : reach);
         emit(nearest, b.build());
+    }
+
+    /**
+     * A ring's sensors are spaced wider than an object is small: an object between two sensors is seen by
+     * both at about the same range. Its bearing is then the mean of the neighbours' points, not the axis
+     * of whichever sensor happened to read a centimetre less.
+     */
+    private void spread(Closest best) {
+        RangeScan s = latest[best.input];
+        if (!s.hasPoses() || params.spreadM() == 0) {
+            return;
+        }
+        double sx = best.xM;
+        double sy = best.yM;
+        int n = 1;
+        for (int dir = -1; dir <= 1; dir += 2) {
+            for (int k = best.sensor + dir; k >= 0 && k < s.size(); k += dir) {
+                double r = s.rangeM(k);
+                if (!s.valid(k) || r < params.minValidM() || r - best.rangeM > params.spreadM()) {
+                    break;
+                }
+                double[] p = s.pose(k).orElse(PlanarPose.ORIGIN).pointAt(r, 0);
+                if (Math.abs(Math.atan2(p[1], p[0]) - best.bearingRad) > Math.PI / 3) {
+                    break;
+                }
+                sx += p[0];
+                sy += p[1];
+                n++;
+            }
+        }
+        if (n > 1) {
+            best.xM = sx / n;
+            best.yM = sy / n;
+            best.bearingRad = Math.atan2(best.yM, best.xM);
+        }
     }
 
     /** Scan records that could not be read, since start. */

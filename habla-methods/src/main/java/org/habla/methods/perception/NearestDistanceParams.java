@@ -13,16 +13,20 @@ public record NearestDistanceParams(
         Double coneRad,
         @Param(value = "A scan older than this is left out when several inputs are combined", unit = "ms",
                 defaultValue = "1000")
-        Integer maxAgeMs) {
+        Integer maxAgeMs,
+        @Param(value = "Neighbouring sensors whose readings are within this of the nearest are taken as seeing the "
+                + "same object: its bearing is the mean of their points", unit = "m", defaultValue = "0.1")
+        Double spreadM) {
 
     public NearestDistanceParams {
         minValidM = ParamRules.nonNegative("minValidM", minValidM, 0.02);
         coneRad = ParamRules.within("coneRad", coneRad, Math.PI / 3, 0.0, Math.PI);
         maxAgeMs = ParamRules.within("maxAgeMs", maxAgeMs, 1000, 1, 600_000);
+        spreadM = ParamRules.nonNegative("spreadM", spreadM, 0.1);
     }
 
     /** Every parameter at its default. */
     public static NearestDistanceParams defaults() {
-        return new NearestDistanceParams(null, null, null);
+        return new NearestDistanceParams(null, null, null, null);
     }
 }

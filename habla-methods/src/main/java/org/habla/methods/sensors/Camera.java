@@ -56,8 +56,10 @@ public final class Camera extends SensorActuatorMethod {
     private void onImage(ImageFrame frame, Sample sample) {
         if (!wellFormed(frame)) {
             malformed++;
-            log().warn("{}: a {} frame of {} bytes does not start as {} does; dropped", id(), frame.encoding(),
-                    frame.byteCount(), frame.encoding());
+            if (malformed == 1 || malformed % 1000 == 0) {
+                log().warn("{}: a {} frame of {} bytes does not start as {} does; dropped ({} so far)", id(),
+                        frame.encoding(), frame.byteCount(), frame.encoding(), malformed);
+            }
             return;
         }
         if (params.maxFps() > 0) {

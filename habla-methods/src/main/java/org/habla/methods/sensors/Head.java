@@ -53,7 +53,10 @@ public final class Head extends SensorActuatorMethod {
         HeadPose wanted = HeadPose.fromVector(command).orElse(null);
         if (wanted == null) {
             rejected++;
-            log().warn("{}: head command {} is not [tilt, pan, nod] of finite numbers; ignored", id(), command);
+            if (rejected == 1 || rejected % 1000 == 0) {
+                log().warn("{}: head command {} is not [tilt, pan, nod] of finite numbers; ignored ({} so far)", id(),
+                        command, rejected);
+            }
             return;
         }
         emit(headOut, limits.clamp(wanted).toVector());

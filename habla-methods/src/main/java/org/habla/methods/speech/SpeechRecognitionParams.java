@@ -9,7 +9,7 @@ import org.habla.plugin.Param;
 public record SpeechRecognitionParams(
         @Param(value = "Path of a JSGF grammar file (.gram) of the phrases to recognise; empty: the bundled "
                 + "commands.gram (go forward, turn left, turn right, go back, stop, good dog, bad dog, well done, no)",
-                defaultValue = "\"\"")
+                defaultValue = "\"\"", file = true)
         String grammar,
         @Param(value = "Utterances kept waiting while one is decoded or the model loads; the oldest is dropped "
                 + "beyond this", defaultValue = "4")

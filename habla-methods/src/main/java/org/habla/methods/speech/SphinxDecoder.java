@@ -90,9 +90,14 @@ public final class SphinxDecoder extends AbstractSpeechRecognizer {
         config.setGrammarName(grammarName);
         config.setUseGrammar(true);
         config.setSampleRate(16_000);
-        Context context = new Context(sphinxConfig(), config);
         try {
-            return new SphinxDecoder(context);
+            // A first decoder is run over a few seconds of noise and dropped, so the first real utterance is
+            // decoded by compiled code (without this the teacher's first command comes seconds late); the
+            // decoder kept is a fresh one, because decoding adapts state (the cepstral mean) to what it heard.
+            SphinxDecoder warm = new SphinxDecoder(new Context(sphinxConfig(), config));
+            warm.warmUp();
+            warm.recognizer.deallocate();
+            return new SphinxDecoder(new Context(sphinxConfig(), config));
         } catch (RuntimeException e) {
             throw new IOException("Sphinx-4 could not load (grammar " + grammarLocation + grammarName + ".gram): "
                     + e.getMessage(), e);
@@ -130,6 +135,20 @@ public final class SphinxDecoder extends AbstractSpeechRecognizer {
         Files.writeString(file, quiet, StandardCharsets.UTF_8);
         file.toFile().deleteOnExit();
         return file.toUri().toURL().toString();
+    }
+
+    /** Decodes a few seconds of quiet noise, to have the decoding code compiled. */
+    private void warmUp() {
+        java.util.Random noise = new java.util.Random(16_000);
+        byte[] pcm = new byte[16_000 * 2];
+        for (int round = 0; round < 3; round++) {
+            for (int i = 0; i < pcm.length; i += 2) {
+                int v = (int) (noise.nextGaussian() * 200);
+                pcm[i] = (byte) v;
+                pcm[i + 1] = (byte) (v >> 8);
+            }
+            decode(AudioChunk.of(org.habla.sample.AudioFormat.MONO_16K, pcm.clone()));
+        }
     }
 
     /**

@@ -42,9 +42,26 @@ class NearestDistanceTest {
     }
 
     @Test
+    void anObjectSeenByTwoNeighbouringSensorsLiesBetweenThem() {
+        // Two front sensors at +10° and -10°: a small object straight ahead reads about the same on both.
+        List<PlanarPose> pair = List.of(new PlanarPose(0.2, 0.03, Math.toRadians(10)),
+                new PlanarPose(0.2, -0.03, Math.toRadians(-10)));
+        MethodHarness h = MethodHarness.started("nearest", new NearestDistance(NearestDistanceParams.defaults()));
+        h.push("scan", new RangeScan(new double[] {1.02, 1.0}, new boolean[] {true, true}, new double[] {5, 5}, pair)
+                .toRecord());
+        RecordValue n = (RecordValue) h.last("nearest");
+        assertThat(n.number("distanceM")).isEqualTo(1.0);
+        assertThat(n.number("angleRad")).isCloseTo(0, within(Math.toRadians(1)));
+        // Far apart in range, they see different things: the nearer one's axis stands.
+        h.push("scan", new RangeScan(new double[] {1.5, 1.0}, new boolean[] {true, true}, new double[] {5, 5}, pair)
+                .toRecord());
+        assertThat(((RecordValue) h.last("nearest")).number("angleRad")).isLessThan(Math.toRadians(-8));
+    }
+
+    @Test
     void readingsBelowMinValidAndNothingSeenAreIgnored() {
         MethodHarness h = MethodHarness.started("nearest",
-                new NearestDistance(new NearestDistanceParams(0.1, null, null)));
+                new NearestDistance(new NearestDistanceParams(0.1, null, null, null)));
         h.push("scan", scan(0.05, 5.0, 5.0, 5.0));
         RecordValue n = (RecordValue) h.last("nearest");
         assertThat(n.get("valid").booleanValue()).isFalse();

@@ -31,6 +31,7 @@ final class MicrophoneServer implements TekkotsuSocket.Client {
 
     @Override
     public void serve(Socket socket) throws IOException, InterruptedException {
+        TekkotsuSocket.closeWhenClientLeaves(socket);
         OutputStream out = socket.getOutputStream();
         long position = samplesAt(clock.nowMs());
         while (!socket.isClosed()) {

@@ -27,6 +27,7 @@ final class WorldStateServer implements TekkotsuSocket.Client {
 
     @Override
     public void serve(Socket socket) throws IOException, InterruptedException {
+        TekkotsuSocket.closeWhenClientLeaves(socket);
         OutputStream out = new BufferedOutputStream(socket.getOutputStream(), Ers7Layout.PACKET_BYTES * 2);
         long update = clock.nowMs() / SENSOR_PERIOD_MS + 1;
         while (!socket.isClosed()) {

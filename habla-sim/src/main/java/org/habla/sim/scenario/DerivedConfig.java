@@ -15,7 +15,7 @@ import java.util.Map;
  * scale (the simulated robot's watchdog runs that much faster). The engine's time is scaled by
  * {@code habla run --time-scale}, not here. The robot's config file itself is never changed.
  */
-final class DerivedConfig {
+public final class DerivedConfig {
 
     /** Driver parameters that are wall-clock periods the simulated robot checks in its own, sped-up time. */
     private static final String[] DRIVER_PERIODS = {"keepAlivePeriodMs", "walkResendMs"};
@@ -28,7 +28,7 @@ final class DerivedConfig {
     private DerivedConfig() {
     }
 
-    static Path write(Path robotConfig, double speed, int portOffset, Path out) throws IOException {
+    public static Path write(Path robotConfig, double speed, int portOffset, Path out) throws IOException {
         ObjectMapper json = new ObjectMapper();
         ObjectNode root = (ObjectNode) json.readTree(Files.readString(robotConfig));
         root.put("description", "Derived by habla scenario from " + robotConfig.getFileName() + " (speed " + speed
@@ -57,7 +57,19 @@ final class DerivedConfig {
                 params.put("walkResendMs", Math.max(100, Math.round(1000 / speed)));
             }
         }
+        Path base = robotConfig.toAbsolutePath().getParent();
         for (JsonNode m : root.path("methods")) {
+            if (m.path("params").isObject()) {
+                // The derived config lives elsewhere: files named relative to the robot's config stay found.
+                ObjectNode params = (ObjectNode) m.get("params");
+                params.properties().forEach(e -> {
+                    if (e.getValue().isTextual() && e.getValue().asText().contains("/")
+                            && !Path.of(e.getValue().asText()).isAbsolute()
+                            && Files.isRegularFile(base.resolve(e.getValue().asText()))) {
+                        params.put(e.getKey(), base.resolve(e.getValue().asText()).normalize().toString());
+                    }
+                });
+            }
             JsonNode expose = m.path("expose");
             if (expose.isObject() && expose.has("port")) {
                 ((ObjectNode) expose).put("port", expose.get("port").asInt() + portOffset);
@@ -74,7 +86,7 @@ final class DerivedConfig {
     }
 
     /** The exposed port of the socket named {@code name} in a config, or -1. */
-    static int exposedPort(Path config, String name) throws IOException {
+    public static int exposedPort(Path config, String name) throws IOException {
         JsonNode root = new ObjectMapper().readTree(Files.readString(config));
         for (Iterator<JsonNode> it = root.path("methods").elements(); it.hasNext(); ) {
             JsonNode m = it.next();

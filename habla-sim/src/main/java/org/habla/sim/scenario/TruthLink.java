@@ -20,7 +20,7 @@ import java.util.concurrent.TimeUnit;
  * off). Replies and state lines arrive on the same stream; replies are told apart by their {@code ok}
  * or {@code error} key.
  */
-final class TruthLink implements AutoCloseable {
+public final class TruthLink implements AutoCloseable {
 
     private static final ObjectMapper JSON = new ObjectMapper();
 
@@ -39,7 +39,7 @@ final class TruthLink implements AutoCloseable {
     }
 
     /** Connects, retrying until {@code timeoutMs} has passed (the simulator may still be starting). */
-    static TruthLink connect(int port, long timeoutMs) throws IOException, InterruptedException {
+    public static TruthLink connect(int port, long timeoutMs) throws IOException, InterruptedException {
         long end = System.nanoTime() + timeoutMs * 1_000_000L;
         IOException last = null;
         while (System.nanoTime() < end) {
@@ -79,12 +79,12 @@ final class TruthLink implements AutoCloseable {
     }
 
     /** The newest state line, or null before the first. */
-    JsonNode latest() {
+    public JsonNode latest() {
         return latest;
     }
 
     /** Sends an operation and waits for its reply; an {@code error} reply becomes an exception. */
-    synchronized JsonNode send(ObjectNode op) throws IOException, InterruptedException {
+    public synchronized JsonNode send(ObjectNode op) throws IOException, InterruptedException {
         replies.clear();
         out.write((JSON.writeValueAsString(op) + "\n").getBytes(StandardCharsets.UTF_8));
         out.flush();
@@ -98,12 +98,12 @@ final class TruthLink implements AutoCloseable {
         return r;
     }
 
-    static ObjectNode op(String name) {
+    public static ObjectNode op(String name) {
         return JSON.createObjectNode().put("op", name);
     }
 
     /** Waits for a state line whose simulated time is at least {@code t}; null if none within {@code timeoutMs}. */
-    JsonNode awaitTime(double t, long timeoutMs) throws InterruptedException {
+    public JsonNode awaitTime(double t, long timeoutMs) throws InterruptedException {
         long end = System.nanoTime() + timeoutMs * 1_000_000L;
         while (System.nanoTime() < end) {
             JsonNode n = latest;

@@ -1,0 +1,41 @@
+package org.habla.bench;
+
+import java.io.IOException;
+import org.habla.config.ConfigException;
+import org.habla.config.ConfigLoader;
+import org.habla.config.HablaConfig;
+import org.habla.daemon.Daemon;
+import org.habla.graph.EngineClock;
+import org.habla.plugin.PluginRegistry;
+import org.habla.testing.DaemonProcess;
+
+/**
+ * The daemon the socket benchmarks measure, started in this JVM from a real config: a {@code habla}
+ * interface to {@link BenchRobot}, then {@code channel} (sensors &amp; actuators) → {@code pass-through}
+ * (processing) → {@code pass-through} (virtual, exposed as socket {@code value}). Every input is a
+ * queue, so every reading reaches the socket and none is conflated away.
+ */
+final class BenchDaemon {
+
+    private BenchDaemon() {
+    }
+
+    static Daemon start(int robotPort) throws IOException, ConfigException {
+        int port = DaemonProcess.freePorts(1)[0];
+        String relay = "\"params\": {\"kind\": \"number\", \"delivery\": \"queue\", \"capacity\": 4096}";
+        String json = """
+                {"system": "bench", "status": {"port": 0},
+                 "interfaces": [{"id": "robot", "driver": "habla", "address": "127.0.0.1:%d",
+                                 "params": {"channels": %s}}],
+                 "methods": [
+                   {"id": "s", "type": "channel", "layer": "sensors_actuators", "inputs": {"in": "@robot.value"}, %s},
+                   {"id": "p", "type": "pass-through", "layer": "processing", "inputs": {"in": "s.out"}, %s},
+                   {"id": "v", "type": "pass-through", "layer": "virtual", "inputs": {"in": "p.out"}, %s,
+                    "expose": {"port": %d, "name": "value"}}
+                 ]}
+                """.formatted(robotPort, BenchRobot.CHANNELS_JSON, relay, relay, relay, port);
+        PluginRegistry registry = PluginRegistry.discover();
+        HablaConfig config = new ConfigLoader(registry).parse(json);
+        return Daemon.start(config, registry, EngineClock.system());
+    }
+}

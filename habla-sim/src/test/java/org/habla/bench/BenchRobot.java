@@ -1,0 +1,92 @@
+package org.habla.bench;
+
+import java.io.BufferedOutputStream;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.util.concurrent.locks.LockSupport;
+import org.habla.graph.EngineClock;
+
+/**
+ * A robot-side interface program for the benchmarks: serves {@code habla-interface/1} on a free loopback
+ * port, announces one reading channel {@code value} (a number), and once a client is connected sends a
+ * reading every {@code periodNanos}, each stamped {@code "t"} with the microsecond it was written. The
+ * line is built by hand so the robot itself costs next to nothing.
+ */
+final class BenchRobot implements AutoCloseable {
+
+    static final String HELLO = "{\"type\":\"hello\",\"protocol\":\"habla-interface/1\",\"robot\":\"bench\","
+            + "\"channels\":[{\"name\":\"value\",\"direction\":\"reading\",\"kind\":\"number\"}]}\n";
+    /** The channels as the config must list them. */
+    static final String CHANNELS_JSON = "[{\"name\":\"value\",\"direction\":\"reading\",\"kind\":\"number\"}]";
+
+    private final ServerSocket server;
+    private final long periodNanos;
+    private final Thread thread;
+    private volatile long sent;
+    private volatile boolean closed;
+
+    BenchRobot(long periodNanos) throws IOException {
+        this.periodNanos = periodNanos;
+        server = new ServerSocket();
+        server.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
+        thread = Thread.ofPlatform().name("bench-robot").daemon().start(this::serve);
+    }
+
+    int port() {
+        return server.getLocalPort();
+    }
+
+    /** Readings written so far. */
+    long sent() {
+        return sent;
+    }
+
+    private void serve() {
+        EngineClock clock = EngineClock.system();
+        while (!closed) {
+            try (Socket s = server.accept()) {
+                s.setTcpNoDelay(true);
+                OutputStream out = new BufferedOutputStream(s.getOutputStream(), 8192);
+                out.write(HELLO.getBytes(StandardCharsets.UTF_8));
+                out.flush();
+                long next = System.nanoTime();
+                long n = 0;
+                while (!closed) {
+                    long wait = next - System.nanoTime();
+                    if (wait > 0) {
+                        LockSupport.parkNanos(wait);
+                        continue;
+                    }
+                    n++;
+                    String line = "{\"type\":\"reading\",\"channel\":\"value\",\"t\":" + clock.nowMicros()
+                            + ",\"value\":" + n + "}\n";
+                    out.write(line.getBytes(StandardCharsets.UTF_8));
+                    out.flush();
+                    sent = n;
+                    next += periodNanos;
+                    if (System.nanoTime() - next > 100_000_000L) {
+                        next = System.nanoTime();   // fell far behind (a pause): do not burst to catch up
+                    }
+                }
+            } catch (IOException e) {
+                // the client went away: accept the next one
+            }
+        }
+    }
+
+    @Override
+    public void close() throws IOException {
+        closed = true;
+        server.close();
+        try {
+            thread.join(2_000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}

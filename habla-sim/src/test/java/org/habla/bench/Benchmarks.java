@@ -1,0 +1,52 @@
+package org.habla.bench;
+
+import java.util.Arrays;
+import java.util.List;
+
+/**
+ * Runs the engine benchmarks and prints their figures: {@code bench/run [latency] [throughput] [fanout]
+ * [vision] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up).
+ */
+public final class Benchmarks {
+
+    private Benchmarks() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        List<String> list = Arrays.asList(args);
+        int seconds = 10;
+        int at = list.indexOf("--seconds");
+        if (at >= 0 && at + 1 < list.size()) {
+            seconds = Integer.parseInt(list.get(at + 1));
+        }
+        boolean all = list.stream().noneMatch(a -> a.equals("latency") || a.equals("throughput") || a.equals("fanout")
+                || a.equals("vision"));
+        System.out.printf("HABLA engine benchmarks: %d cores, %s %s, %s%n", Runtime.getRuntime().availableProcessors(),
+                System.getProperty("java.vm.name"), System.getProperty("java.version"), System.getProperty("os.name"));
+        System.out.println("load average at start (1, 5, 15 min): " + loadAverage());
+        if (all || list.contains("latency")) {
+            new LatencyBench(1_000, 3, seconds).run();
+        }
+        if (all || list.contains("throughput")) {
+            new ThroughputBench(3, seconds).run();
+        }
+        if (all || list.contains("fanout")) {
+            new FanOutBench(2, seconds).run();
+        }
+        if (all || list.contains("vision")) {
+            new VisionBench(2_000).run();
+        }
+        System.out.println("\nload average at end (1, 5, 15 min): " + loadAverage());
+        System.exit(0);
+    }
+
+    /** The first three fields of /proc/loadavg, or "unknown" off Linux. */
+    private static String loadAverage() {
+        try {
+            String[] f = java.nio.file.Files.readString(java.nio.file.Path.of("/proc/loadavg")).split(" ");
+            return f[0] + " " + f[1] + " " + f[2];
+        } catch (java.io.IOException | RuntimeException e) {
+            return "unknown";
+        }
+    }
+}

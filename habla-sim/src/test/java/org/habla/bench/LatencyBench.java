@@ -1,0 +1,91 @@
+package org.habla.bench;
+
+import java.io.IOException;
+import java.util.concurrent.Callable;
+import org.HdrHistogram.Histogram;
+import org.habla.daemon.Daemon;
+
+/**
+ * Benchmark (a): end-to-end latency of one reading through the daemon over loopback, from the moment the
+ * robot stamps it to the moment a control client has parsed it, with readings at a fixed rate; and the
+ * same hops through {@link PlainRelay}, on one thread and with four thread hand-offs (as many as the
+ * daemon's path: link reader → three method threads → the client's writer), the latter also with its
+ * socket reader and writer on virtual threads as in the daemon, as the floor.
+ */
+final class LatencyBench {
+
+    private final int rateHz;
+    private final int warmupS;
+    private final int seconds;
+
+    LatencyBench(int rateHz, int warmupS, int seconds) {
+        this.rateHz = rateHz;
+        this.warmupS = warmupS;
+        this.seconds = seconds;
+    }
+
+    void run() throws Exception {
+        System.out.printf("%n(a) latency, robot stamp -> control client, %d Hz readings, %d s warm-up, %d s measured%n",
+                rateHz, warmupS, seconds);
+        System.out.printf("%-44s %8s %8s %8s %8s %8s %8s%n", "path", "samples", "lost", "p50 µs", "p99 µs",
+                "p99.9 µs", "max µs");
+        measure("daemon: channel -> pass-through x2", robot -> {
+            Daemon d = BenchDaemon.start(robot.port());
+            return new Path(d.port("value"), d::close);
+        });
+        measure("plain relay, 1 thread", robot -> {
+            PlainRelay r = new PlainRelay(robot.port(), 0, false);
+            return new Path(r.port(), r::close);
+        });
+        measure("plain relay, 4 thread hand-offs", robot -> {
+            PlainRelay r = new PlainRelay(robot.port(), 4, false);
+            return new Path(r.port(), r::close);
+        });
+        measure("plain relay, 4 hand-offs, virtual-thread I/O", robot -> {
+            PlainRelay r = new PlainRelay(robot.port(), 4, true);
+            return new Path(r.port(), r::close);
+        });
+    }
+
+    /** What the client connects to, and how to take it down. */
+    record Path(int port, AutoCloseable closer) {
+    }
+
+    interface PathFactory {
+        Path open(BenchRobot robot) throws Exception;
+    }
+
+    private void measure(String name, PathFactory factory) throws Exception {
+        try (BenchRobot robot = new BenchRobot(1_000_000_000L / rateHz)) {
+            Path path = factory.open(robot);
+            try (SampleClient client = new SampleClient(path.port())) {
+                await(() -> client.total() > 0, 20_000, name + ": no sample reached the client");
+                Thread.sleep(warmupS * 1000L);
+                long sentBefore = robot.sent();
+                client.startRecording();
+                Thread.sleep(seconds * 1000L);
+                client.stopRecording();
+                long sent = robot.sent() - sentBefore;
+                Histogram h = client.latencyMicros();
+                System.out.printf("%-44s %8d %8d %8d %8d %8d %8d%n", name, client.samples(), client.missing(),
+                        h.getValueAtPercentile(50), h.getValueAtPercentile(99), h.getValueAtPercentile(99.9),
+                        h.getMaxValue());
+                if (client.samples() < sent * 0.9) {
+                    System.out.printf("  note: the robot sent %d readings in the window%n", sent);
+                }
+            } finally {
+                path.closer().close();
+            }
+        }
+    }
+
+    static void await(Callable<Boolean> condition, long millis, String failure) throws Exception {
+        long end = System.nanoTime() + millis * 1_000_000;
+        while (!condition.call()) {
+            if (System.nanoTime() > end) {
+                throw new IOException(failure);
+            }
+            Thread.sleep(10);
+        }
+    }
+}
