@@ -91,13 +91,12 @@ public final class SphinxDecoder extends AbstractSpeechRecognizer {
         config.setUseGrammar(true);
         config.setSampleRate(16_000);
         try {
-            // A first decoder is run over a few seconds of noise and dropped, so the first real utterance is
-            // decoded by compiled code (without this the teacher's first command comes seconds late); the
-            // decoder kept is a fresh one, because decoding adapts state (the cepstral mean) to what it heard.
-            SphinxDecoder warm = new SphinxDecoder(new Context(sphinxConfig(), config));
-            warm.warmUp();
-            warm.recognizer.deallocate();
-            return new SphinxDecoder(new Context(sphinxConfig(), config));
+            // The decoder is run over a few seconds of noise first, so the first real utterance is decoded by
+            // compiled code (without this the teacher's first command comes seconds late). This leaves no trace
+            // on later utterances: the front end keeps no state between them (no endpointer, batch CMN).
+            SphinxDecoder d = new SphinxDecoder(new Context(sphinxConfig(), config));
+            d.warmUp();
+            return d;
         } catch (RuntimeException e) {
             throw new IOException("Sphinx-4 could not load (grammar " + grammarLocation + grammarName + ".gram): "
                     + e.getMessage(), e);

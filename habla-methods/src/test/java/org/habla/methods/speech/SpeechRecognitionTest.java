@@ -102,6 +102,22 @@ class SpeechRecognitionTest {
     }
 
     @Test
+    void anUtteranceIsHeardTheSameWhateverWasSaidBefore() throws Exception {
+        MethodHarness h = withBundledGrammar();
+        List<Utterances.Utterance> all = Utterances.all();
+        Utterances.Utterance probe = all.get(all.size() - 5);
+        h.push("segments", probe.audio());
+        RecordValue first = (RecordValue) h.last("result");
+        for (int i = 0; i < all.size(); i += 7) {
+            h.push("segments", all.get(i).audio());
+        }
+        h.push("segments", probe.audio());
+        RecordValue again = (RecordValue) h.last("result");
+        assertThat(again.text("phrase")).isEqualTo(first.text("phrase")).isEqualTo(probe.phrase());
+        assertThat(again.number("score")).isEqualTo(first.number("score"));
+    }
+
+    @Test
     void noiseBangsAndWhistledNotesAreNotTakenForWords() throws Exception {
         MethodHarness h = withBundledGrammar();
         Random r = new Random(12);
