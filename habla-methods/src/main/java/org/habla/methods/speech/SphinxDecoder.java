@@ -89,9 +89,7 @@ public final class SphinxDecoder extends AbstractSpeechRecognizer {
         config.setSampleRate(16_000);
         Context context = new Context(quietSphinxConfig(), config);
         try {
-            SphinxDecoder d = new SphinxDecoder(context);
-            d.warmUp();
-            return d;
+            return new SphinxDecoder(context);
         } catch (RuntimeException e) {
             throw new IOException("Sphinx-4 could not load (grammar " + grammarLocation + grammarName + ".gram): "
                     + e.getMessage(), e);
@@ -115,23 +113,6 @@ public final class SphinxDecoder extends AbstractSpeechRecognizer {
         Files.writeString(file, quiet, StandardCharsets.UTF_8);
         file.toFile().deleteOnExit();
         return file.toUri().toURL().toString();
-    }
-
-    /**
-     * Decodes a few seconds of quiet noise once while loading, so the first real utterance is decoded
-     * by compiled code: without this the teacher's first command comes seconds late.
-     */
-    private void warmUp() {
-        java.util.Random noise = new java.util.Random(16_000);
-        byte[] pcm = new byte[16_000 * 2];
-        for (int round = 0; round < 3; round++) {
-            for (int i = 0; i < pcm.length; i += 2) {
-                int v = (int) (noise.nextGaussian() * 200);
-                pcm[i] = (byte) v;
-                pcm[i + 1] = (byte) (v >> 8);
-            }
-            decode(AudioChunk.of(org.habla.sample.AudioFormat.MONO_16K, pcm.clone()));
-        }
     }
 
     /**
