@@ -70,6 +70,7 @@ public final class Scene implements SimClock.Stepper {
         }
         target = t;
         body.placeAt(p);
+        teacher.newEpisode();
         episode++;
     }
 

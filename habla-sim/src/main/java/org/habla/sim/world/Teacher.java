@@ -76,6 +76,12 @@ public final class Teacher {
         reward(value);
     }
 
+    /** A new episode: a command still waiting for its judgement is dropped, the next comes one period from now. */
+    public synchronized void newEpisode() {
+        pendingLabel = null;
+        nextCommandS = nowS + settings.commandEveryS();
+    }
+
     /** The teacher walks in (next command one period from now) or out (a pending judgement is dropped). */
     public synchronized void setPresent(boolean p) {
         if (p && !present) {

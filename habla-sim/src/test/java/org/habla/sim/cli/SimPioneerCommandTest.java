@@ -33,7 +33,7 @@ class SimPioneerCommandTest {
         StringWriter out = new StringWriter();
         CommandLine cli = new CommandLine(new SimCommand()).setOut(new PrintWriter(out, true));
         CompletableFuture<Integer> exit = CompletableFuture.supplyAsync(() -> cli.execute("pioneer", "--port", "0",
-                "--mic-port", "0", "--keys-port", "0", "--truth-port", "0", "--speed", "20", "--duration", "40",
+                "--mic-port", "0", "--keys-port", "0", "--truth-port", "0", "--speed", "20", "--duration", "60",
                 "--teacher", "off"));
         int port = -1;
         for (int i = 0; i < 100 && port < 0; i++) {

@@ -57,6 +57,18 @@ class TeacherTest {
     }
 
     @Test
+    void aNewEpisodeDropsTheJudgementOfTheCommandBeforeIt() {
+        Pose2 facingAway = new Pose2(1, 1, Math.PI / 2);
+        teacher.step(3.0, facingAway, target);
+        teacher.newEpisode();
+        teacher.step(4.5, new Pose2(2, 1, 0), target);
+        teacher.step(5.9, new Pose2(2, 1, 0), target);
+        assertThat(voice.said).containsExactly("right");
+        teacher.step(6.0, new Pose2(2, 1, 0), target);
+        assertThat(voice.said).containsExactly("right", "forward");
+    }
+
+    @Test
     void forwardAndBackAreJudgedByDisplacementAlongTheHeading() {
         Pose2 from = new Pose2(1, 1, Math.PI / 4);
         assertThat(teacher.obeyed("forward", from, from.moved(0.1, 0, 0))).isTrue();
