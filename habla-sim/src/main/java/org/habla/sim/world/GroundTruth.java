@@ -8,9 +8,12 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
  *
  * @param distanceM surface distance from the robot's edge to the target's edge (≥ 0)
  * @param angleRad  bearing of the target's centre in the robot's frame, + left
+ * @param tally     what the teacher gave this episode (the {@code teacher} object's {@code commands},
+ *                  {@code plus} and {@code minus}: the scenario report's obedience comes from them)
  */
 public record GroundTruth(double t, Pose2 robot, Target target, double distanceM, double angleRad, boolean stalled,
-                          boolean teacherPresent, String lastCommand, Double lastReward, int episode) {
+                          boolean teacherPresent, String lastCommand, Double lastReward, Teacher.Tally tally,
+                          int episode) {
 
     /** The contract's JSON shape. */
     public ObjectNode toJson() {
@@ -35,6 +38,7 @@ public record GroundTruth(double t, Pose2 robot, Target target, double distanceM
         } else {
             teacher.put("lastReward", lastReward);
         }
+        teacher.put("commands", tally.commands()).put("plus", tally.plus()).put("minus", tally.minus());
         o.put("episode", episode);
         return o;
     }

@@ -102,6 +102,6 @@ public final class Scene implements SimClock.Stepper {
         Target t = target;
         double distance = Math.max(0, t.surfaceDistance(robot.xM(), robot.yM()) - body.limits().radiusM());
         return new GroundTruth(nowS, robot, t, distance, robot.bearingTo(t.xM(), t.yM()), body.stalled(),
-                teacher.present(), teacher.lastCommand(), teacher.lastReward(), episode);
+                teacher.present(), teacher.lastCommand(), teacher.lastReward(), teacher.episodeTally(), episode);
     }
 }

@@ -27,6 +27,13 @@ public final class Teacher {
     private Double lastReward;
     private int commands;
     private int rewards;
+    private int episodeCommands;
+    private int episodePlus;
+    private int episodeMinus;
+
+    /** What the teacher gave since the episode began: commands, rewards of pleasure (> 0) and of pain (< 0). */
+    public record Tally(int commands, int plus, int minus) {
+    }
 
     public Teacher(TeacherSettings settings, TeacherVoice voice) {
         this.settings = Objects.requireNonNull(settings, "settings");
@@ -79,6 +86,9 @@ public final class Teacher {
     /** A new episode: a command still waiting for its judgement is dropped, the next comes one period from now. */
     public synchronized void newEpisode() {
         pendingLabel = null;
+        episodeCommands = 0;
+        episodePlus = 0;
+        episodeMinus = 0;
         nextCommandS = nowS + settings.commandEveryS();
     }
 
@@ -112,6 +122,11 @@ public final class Teacher {
         return commands;
     }
 
+    /** What the teacher gave since the episode began (the last {@link #newEpisode}, or the start). */
+    public synchronized Tally episodeTally() {
+        return new Tally(episodeCommands, episodePlus, episodeMinus);
+    }
+
     /** How many rewards the teacher has given. */
     public synchronized int rewardCount() {
         return rewards;
@@ -141,12 +156,18 @@ public final class Teacher {
         nextCommandS = nowS + settings.commandEveryS();
         lastCommand = label;
         commands++;
+        episodeCommands++;
         voice.giveCommand(label);
     }
 
     private void reward(double value) {
         lastReward = value;
         rewards++;
+        if (value > 0) {
+            episodePlus++;
+        } else if (value < 0) {
+            episodeMinus++;
+        }
         voice.giveReward(value);
     }
 }
