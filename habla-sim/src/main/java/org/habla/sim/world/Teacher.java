@@ -162,6 +162,15 @@ public final class Teacher {
         episodeMinus = 0;
     }
 
+    /** What the teacher gave since the episode began: commands, rewards of pleasure (> 0) and of pain (< 0). */
+    public record Tally(int commands, int plus, int minus) {
+    }
+
+    /** The episode's counts at once. */
+    public synchronized Tally episodeTally() {
+        return new Tally(episodeCommands, episodePlus, episodeMinus);
+    }
+
     /** Commands given since the episode began. */
     public synchronized int episodeCommands() {
         return episodeCommands;

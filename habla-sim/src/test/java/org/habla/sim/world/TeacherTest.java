@@ -58,6 +58,37 @@ class TeacherTest {
     }
 
     @Test
+    void theEpisodeTallyCountsCommandsPleasureAndPainAndStartsAgainWithEachEpisode() {
+        Pose2 facingAway = new Pose2(1, 1, Math.PI / 2);
+        teacher.step(3.0, facingAway, target);
+        teacher.step(4.5, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        teacher.step(6.0, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        teacher.step(7.5, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        teacher.rewardNow(0.5);
+        assertThat(teacher.episodeTally()).isEqualTo(new Teacher.Tally(2, 2, 1));
+        var json = new GroundTruth(7.5, facingAway, target, 1, 0, false, true, teacher.lastCommand(),
+                teacher.lastReward(), teacher.episodeCommands(), teacher.episodePlus(), teacher.episodeMinus(), 0).toJson();
+        assertThat(json.path("teacher").path("commands").asInt()).isEqualTo(2);
+        assertThat(json.path("teacher").path("plus").asInt()).isEqualTo(2);
+        assertThat(json.path("teacher").path("minus").asInt()).isEqualTo(1);
+        teacher.newEpisode();
+        assertThat(teacher.episodeTally()).isEqualTo(new Teacher.Tally(0, 0, 0));
+        assertThat(teacher.commandCount()).as("the totals keep counting").isEqualTo(2);
+    }
+
+    @Test
+    void aNewEpisodeDropsTheJudgementOfTheCommandBeforeIt() {
+        Pose2 facingAway = new Pose2(1, 1, Math.PI / 2);
+        teacher.step(3.0, facingAway, target);
+        teacher.newEpisode();
+        teacher.step(4.5, new Pose2(2, 1, 0), target);
+        teacher.step(5.9, new Pose2(2, 1, 0), target);
+        assertThat(voice.said).containsExactly("right");
+        teacher.step(6.0, new Pose2(2, 1, 0), target);
+        assertThat(voice.said).containsExactly("right", "forward");
+    }
+
+    @Test
     void forwardAndBackAreJudgedByDisplacementAlongTheHeading() {
         Pose2 from = new Pose2(1, 1, Math.PI / 4);
         assertThat(teacher.obeyed("forward", from, from.moved(0.1, 0, 0))).isTrue();
