@@ -31,6 +31,13 @@ public sealed interface RecordedEvent {
     record Output(long t, String method, String output, Sample sample) implements RecordedEvent {
     }
 
+    /**
+     * The engine's clock ran periodic task number {@code task} (numbered in the order the graph registered
+     * them: method ticks, link heartbeats, the watchdog), so a replay runs it between the same events.
+     */
+    record Tick(long t, int task) implements RecordedEvent {
+    }
+
     /** The recorder had to drop events (its queue was full): {@code total} since the recording began. */
     record Dropped(long t, long total) implements RecordedEvent {
     }
