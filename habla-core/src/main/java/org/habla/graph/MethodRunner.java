@@ -57,14 +57,18 @@ final class MethodRunner implements MethodContext {
     private AutoCloseable ticker;
     private Thread thread;
 
-    MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool) {
+    private final WorkCount work;
+
+    MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
+            WorkCount work) {
+        this.work = work;
         this.id = id;
         this.type = type;
         this.method = method;
         this.clock = clock;
         this.backgroundPool = backgroundPool;
         for (Input<?> in : method.inputs()) {
-            InputSlot slot = new InputSlot(in, this::wake);
+            InputSlot slot = new InputSlot(in, this::wake, work);
             slots.add(slot);
             slotByInput.put(in, slot);
         }
@@ -150,12 +154,17 @@ final class MethodRunner implements MethodContext {
 
     private void requestTick() {
         if (tickPending.compareAndSet(false, true)) {
-            turns.add(() -> {
+            addTurn(() -> {
                 tickPending.set(false);
                 method.tick(clock.nowMicros());
             });
             wake();
         }
+    }
+
+    private void addTurn(Runnable turn) {
+        work.begin();
+        turns.add(turn);
     }
 
     private void wake() {
@@ -186,7 +195,11 @@ final class MethodRunner implements MethodContext {
                 long now = clock.nowMicros();
                 latency.record(now - s.sourceMicros());
                 handled.mark(now);
-                method.deliver(slot.input(), s);
+                try {
+                    method.deliver(slot.input(), s);
+                } finally {
+                    work.end();
+                }
             }
         }
         for (int n = turns.size(); n > 0; n--) {
@@ -195,7 +208,11 @@ final class MethodRunner implements MethodContext {
                 break;
             }
             worked = true;
-            turn.run();
+            try {
+                turn.run();
+            } finally {
+                work.end();
+            }
         }
         return worked;
     }
@@ -242,17 +259,21 @@ final class MethodRunner implements MethodContext {
 
     @Override
     public <T> void background(String what, Callable<T> task, Consumer<T> done) {
+        work.begin();
         try {
             backgroundPool.execute(() -> {
                 try {
                     T result = task.call();
-                    turns.add(() -> method.runTurn(what, () -> done.accept(result)));
+                    addTurn(() -> method.runTurn(what, () -> done.accept(result)));
                 } catch (Exception | LinkageError e) {
-                    turns.add(() -> method.fail(what, e));
+                    addTurn(() -> method.fail(what, e));
+                } finally {
+                    work.end();
                 }
                 wake();
             });
         } catch (RejectedExecutionException e) {
+            work.end();
             LOG.debug("background work '{}' of {} refused: the engine is stopping", what, id);
         }
     }
