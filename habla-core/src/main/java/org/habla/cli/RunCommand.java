@@ -9,6 +9,7 @@ import org.habla.config.ConfigException;
 import org.habla.config.ConfigLoader;
 import org.habla.config.HablaConfig;
 import org.habla.daemon.Daemon;
+import org.habla.daemon.PlacementRefusedException;
 import org.habla.graph.EngineClock;
 import org.habla.plugin.PluginRegistry;
 import picocli.CommandLine.Command;
@@ -66,6 +67,11 @@ public final class RunCommand implements Callable<Integer> {
         Daemon daemon;
         try {
             daemon = Daemon.start(cfg, registry, timeScale == 1 ? EngineClock.system() : EngineClock.scaled(timeScale));
+        } catch (PlacementRefusedException e) {
+            e.refusals().forEach(r -> err.println("habla run: " + r));
+            err.println("habla run: the daemon does not start");
+            err.flush();
+            return ExitCodes.USAGE_OR_CONFIG;
         } catch (IOException e) {
             err.println("habla run: " + e.getMessage());
             err.flush();

@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.util.LinkedHashMap;
+import java.util.List;
 import java.util.Map;
 import org.habla.config.HablaConfig;
 import org.habla.graph.EngineClock;
@@ -22,6 +23,8 @@ import org.slf4j.LoggerFactory;
 public final class Daemon implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(Daemon.class);
+    /** How long a worker may take to say what it runs when the daemon starts. */
+    private static final int WORKER_CHECK_MILLIS = 2_000;
 
     private final HablaConfig config;
     private final MethodGraph graph;
@@ -38,9 +41,14 @@ public final class Daemon implements AutoCloseable {
 
     /**
      * Builds and starts everything; if a port cannot be bound, whatever was started is stopped again
-     * and the exception says which port.
+     * and the exception says which port. A worker that cannot run a method placed on it stops the start
+     * with a {@link PlacementRefusedException}.
      */
     public static Daemon start(HablaConfig config, PluginRegistry registry, EngineClock clock) throws IOException {
+        List<String> refusals = WorkerCheck.refusals(config, WORKER_CHECK_MILLIS);
+        if (!refusals.isEmpty()) {
+            throw new PlacementRefusedException(refusals);
+        }
         Daemon d = new Daemon(config, MethodGraph.build(config, registry, clock), clock);
         try {
             for (ControlPoint point : d.graph.controlPoints()) {
