@@ -27,6 +27,38 @@ class ControlError(Exception):
         self.line = line
 
 
+def _parse(line):
+    """One line as a dict; a line that is not a JSON object becomes an "invalid" report instead."""
+    raw = line.decode("utf-8", errors="replace")
+    try:
+        text = line.decode("utf-8")
+    except UnicodeDecodeError as e:
+        return _invalid("bad_utf8", "the line is not valid UTF-8: %s" % e, raw)
+    try:
+        obj = json.loads(text)
+    except ValueError as e:
+        return _invalid("bad_json", "the line is not JSON: %s" % e, raw)
+    if not isinstance(obj, dict):
+        return _invalid("not_object", "a line must be a JSON object, was %s" % _json_type(obj), raw)
+    return obj
+
+
+def _json_type(value):
+    if isinstance(value, bool):
+        return "a boolean"
+    if isinstance(value, (int, float)):
+        return "a number"
+    if isinstance(value, str):
+        return "a string"
+    if isinstance(value, list):
+        return "an array"
+    return "null"
+
+
+def _invalid(code, message, raw):
+    return {"type": "invalid", "code": code, "message": message, "raw": raw[:200]}
+
+
 class ControlSocket:
     """One connection to one method's control socket."""
 
@@ -34,14 +66,18 @@ class ControlSocket:
         self._sock = socket.create_connection((host, port), timeout=timeout)
         self._buf = b""
         self._max_line = max_line
-        self.events = []  # stale / dropped / error lines seen while waiting for samples
-        self.hello = self.read_line(timeout)
-        if self.hello is None:
-            raise ConnectionError("the daemon closed the connection before its hello")
-        if self.hello.get("type") == "error":
-            raise ControlError(self.hello)
-        if self.hello.get("type") != "hello":
-            raise ConnectionError("expected a hello line, got %r" % (self.hello,))
+        self.events = []  # stale / dropped / error / invalid lines seen while waiting for samples
+        try:
+            self.hello = self.read_line(timeout)
+            if self.hello is None:
+                raise ConnectionError("the daemon closed the connection before its hello")
+            if self.hello.get("type") == "error":
+                raise ControlError(self.hello)
+            if self.hello.get("type") != "hello":
+                raise ConnectionError("expected a hello line, got %r" % (self.hello,))
+        except BaseException:
+            self.close()
+            raise
 
     def __enter__(self):
         return self
@@ -67,7 +103,12 @@ class ControlSocket:
         return True
 
     def read_line(self, timeout=5.0):
-        """The next line as a dict (with its binary block under "_bytes"), or None at end of stream."""
+        """The next line as a dict (with its binary block under "_bytes"), or None at end of stream.
+
+        A line that is not a JSON object (not UTF-8, not JSON, or JSON such as [1, 2] or "x") does not
+        stop the client: it comes back as {"type": "invalid", "code": ..., "message": ..., "raw": ...},
+        with the codes the daemon itself uses (bad_utf8, bad_json, not_object).
+        """
         deadline = time.monotonic() + timeout
         while b"\n" not in self._buf:
             if len(self._buf) > self._max_line:
@@ -75,9 +116,9 @@ class ControlSocket:
             if not self._fill(deadline):
                 return None
         line, self._buf = self._buf.split(b"\n", 1)
-        obj = json.loads(line.decode("utf-8"))
+        obj = _parse(line)
         n = obj.get("bytes")
-        if isinstance(n, int) and n > 0:
+        if type(n) is int and n > 0:  # not bool: True is an int in Python
             while len(self._buf) < n:
                 if not self._fill(deadline):
                     return None
@@ -85,7 +126,7 @@ class ControlSocket:
         return obj
 
     def next_sample(self, timeout=5.0):
-        """The next sample line; other lines (stale, dropped, errors) are kept in self.events."""
+        """The next sample line; other lines (stale, dropped, errors, invalid lines) are kept in self.events."""
         deadline = time.monotonic() + timeout
         while True:
             line = self.read_line(max(0.0, deadline - time.monotonic()))

@@ -11,6 +11,7 @@ import java.io.IOException;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -68,6 +69,8 @@ public final class ConfigLoader {
 
     private final PluginRegistry registry;
 
+    private Path baseDir = Path.of("").toAbsolutePath();
+
     public ConfigLoader(PluginRegistry registry) {
         this.registry = Objects.requireNonNull(registry, "registry");
     }
@@ -80,14 +83,23 @@ public final class ConfigLoader {
                     .toString();
         } catch (CharacterCodingException e) {
             throw new ConfigException(List.of(new ConfigError("$", "cannot read " + file + ": not UTF-8 text")));
+        } catch (NoSuchFileException e) {
+            throw new ConfigException(List.of(new ConfigError("$", "cannot read " + file + ": no such file")));
         } catch (IOException e) {
             throw new ConfigException(List.of(new ConfigError("$", "cannot read " + file + ": " + e)));
         }
-        return parse(text);
+        Path dir = file.toAbsolutePath().getParent();
+        return parse(text, dir == null ? Path.of("").toAbsolutePath() : dir);
     }
 
-    /** Reads and checks a config given as JSON text. */
+    /** Reads and checks a config given as JSON text; relative file params are taken from the working folder. */
     public HablaConfig parse(String json) throws ConfigException {
+        return parse(json, Path.of("").toAbsolutePath());
+    }
+
+    /** Reads and checks a config given as JSON text; relative file params are taken from {@code baseDir}. */
+    public HablaConfig parse(String json, Path baseDir) throws ConfigException {
+        this.baseDir = baseDir;
         JsonNode root;
         try {
             root = JSON.readTree(json);
@@ -122,7 +134,7 @@ public final class ConfigLoader {
         Safety safety = root.object("safety").map(this::safety).orElse(Safety.DEFAULTS);
         StatusConfig status = root.object("status").map(this::status).orElse(StatusConfig.DEFAULTS);
 
-        EntryReader entries = new EntryReader(registry, errors);
+        EntryReader entries = new EntryReader(registry, errors, baseDir);
         List<InterfaceEntry> interfaces = new ArrayList<>();
         List<JsonNode> interfaceNodes = root.array("interfaces");
         for (int i = 0; i < interfaceNodes.size(); i++) {

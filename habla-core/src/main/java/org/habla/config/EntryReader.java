@@ -25,7 +25,10 @@ final class EntryReader {
     private final PluginRegistry registry;
     private final ConfigErrors errors;
 
-    EntryReader(PluginRegistry registry, ConfigErrors errors) {
+    private final java.nio.file.Path baseDir;
+
+    EntryReader(PluginRegistry registry, ConfigErrors errors, java.nio.file.Path baseDir) {
+        this.baseDir = baseDir;
         this.registry = registry;
         this.errors = errors;
     }
@@ -57,7 +60,7 @@ final class EntryReader {
         }).orElse(null);
         Reconnect reconnect = o.object("reconnect").map(this::reconnect).orElse(Reconnect.DEFAULTS);
         Record params = provider == null ? null
-                : ParamsBinder.bind(o.node().get("params"), provider.paramsType(), path.field("params"), errors)
+                : ParamsBinder.bind(o.node().get("params"), provider.paramsType(), path.field("params"), errors, baseDir)
                         .orElse(null);
         Driver made = null;
         if (provider != null && address != null && params != null) {
@@ -102,7 +105,7 @@ final class EntryReader {
                     .map(Layer::configName).sorted().collect(Collectors.joining(", ")) + ")");
         }
         Record params = provider == null ? null
-                : ParamsBinder.bind(o.node().get("params"), provider.paramsType(), path.field("params"), errors)
+                : ParamsBinder.bind(o.node().get("params"), provider.paramsType(), path.field("params"), errors, baseDir)
                         .orElse(null);
         Method made = null;
         if (placeable && params != null) {

@@ -65,6 +65,15 @@ final class ParamsBinder {
      * @param params the {@code params} node, or null when the key is absent
      */
     static Optional<Record> bind(JsonNode params, Class<? extends Record> type, JsonPath path, ConfigErrors errors) {
+        return bind(params, type, path, errors, java.nio.file.Path.of("").toAbsolutePath());
+    }
+
+    /**
+     * As {@link #bind(JsonNode, Class, JsonPath, ConfigErrors)}, with relative paths of file params
+     * ({@link org.habla.plugin.Param#file()}) taken from {@code baseDir}.
+     */
+    static Optional<Record> bind(JsonNode params, Class<? extends Record> type, JsonPath path, ConfigErrors errors,
+            java.nio.file.Path baseDir) {
         JsonNode node = params == null ? JsonNodeFactory.instance.objectNode() : params;
         if (!node.isObject()) {
             errors.add(path, "must be an object, not " + CheckedObject.describe(node));
@@ -85,6 +94,7 @@ final class ParamsBinder {
         if (errors.size() > before) {
             return Optional.empty();
         }
+        node = withFilesResolved(node, type, baseDir);
         try {
             return Optional.of(STRICT.treeToValue(node, type));
         } catch (JsonMappingException e) {
@@ -94,6 +104,23 @@ final class ParamsBinder {
             errors.add(path, "cannot be read: " + e.getMessage());
             return Optional.empty();
         }
+    }
+
+    private static JsonNode withFilesResolved(JsonNode node, Class<? extends Record> type, java.nio.file.Path baseDir) {
+        com.fasterxml.jackson.databind.node.ObjectNode copy = null;
+        for (RecordComponent c : type.getRecordComponents()) {
+            org.habla.plugin.Param p = c.getAnnotation(org.habla.plugin.Param.class);
+            JsonNode v = node.get(jsonName(c));
+            if (p == null || !p.file() || v == null || !v.isTextual() || v.asText().isBlank()) {
+                continue;
+            }
+            java.nio.file.Path given = java.nio.file.Path.of(v.asText());
+            if (!given.isAbsolute()) {
+                copy = copy == null ? ((com.fasterxml.jackson.databind.node.ObjectNode) node).deepCopy() : copy;
+                copy.put(jsonName(c), baseDir.resolve(given).normalize().toString());
+            }
+        }
+        return copy == null ? node : copy;
     }
 
     /** The JSON key of each component of a params record, in declaration order. */

@@ -26,7 +26,8 @@ public final class DotWriter {
         for (Row row : Row.values()) {
             List<Node> nodes = picture.row(row);
             s.append("  subgraph cluster_").append(row.name().toLowerCase(java.util.Locale.ROOT)).append(" {\n");
-            s.append("    label=").append(quote(row.title())).append("; style=filled; fillcolor=")
+            // With rankdir=BT "b" puts a band's title at its top, as in the SVG.
+            s.append("    label=").append(quote(row.title())).append("; labelloc=b; style=filled; fillcolor=")
                     .append(quote(SvgWriter.bandColour(row))).append("; color=\"#999999\";\n");
             if (row == Row.INTERFACES) {
                 for (int g = 0; g < picture.groups().size(); g++) {

@@ -130,6 +130,7 @@ public record GraphPicture(String system, List<Node> nodes, List<Edge> edges, Li
             try {
                 return make(p, m).outputs().stream().map(Output::name).toList();
             } catch (RuntimeException e) {
+                // The loader made it once already; if it cannot be made again the picture just lacks the arrow up.
                 return List.<String>of();
             }
         }).orElse(List.of());

@@ -1,7 +1,6 @@
 package org.habla.draw;
 
 import java.util.ArrayList;
-import java.util.Comparator;
 import java.util.EnumMap;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
@@ -10,10 +9,10 @@ import java.util.Map;
 
 /**
  * Places the boxes of a {@link GraphPicture} for the SVG: one band per {@link Row}, boxes side by side in
- * their band, never overlapping. The order within a band comes from a few barycentre sweeps (each box
- * moves towards the mean position of the boxes it is wired to in the neighbouring bands), which keeps
- * most arrows short and uncrossed; a channel box stays inside its interface's frame. Sizes follow the
- * text in a monospaced font, so the result depends only on the picture.
+ * their band, never overlapping. The order within a band comes from {@link BandOrder}; then each band's
+ * boxes slide sideways towards the boxes they are wired to, keeping their order and gaps, so most arrows
+ * run straight. A channel box stays inside its interface's frame. Sizes follow the text in a monospaced
+ * font, so the result depends only on the picture.
  *
  * @param nodes  every node's box, by key
  * @param frames every interface frame, by interface id
@@ -37,12 +36,12 @@ public record Layout(Map<String, Box> nodes, Map<String, Box> frames, Map<Row, B
     static final double MARGIN = 16;
     static final double TITLE = 44;
     static final double LEGEND = 40;
-    static final int SWEEPS = 4;
+    static final int ALIGN_ROUNDS = 4;
     /** Wide enough for the legend. */
     static final double MIN_WIDTH = 720;
 
     public static Layout of(GraphPicture picture) {
-        Map<Row, List<Node>> order = order(picture);
+        Map<Row, List<Node>> order = BandOrder.of(picture);
         double left = MARGIN + BAND_PAD + titleColumn();
         Map<Row, Double> rowWidths = new EnumMap<>(Row.class);
         Map<Row, Double> rowHeights = new EnumMap<>(Row.class);
@@ -54,6 +53,25 @@ public record Layout(Map<String, Box> nodes, Map<String, Box> frames, Map<Row, B
         double width = Math.max(MIN_WIDTH, left + content + BAND_PAD + MARGIN);
         content = width - left - BAND_PAD - MARGIN;
 
+        Map<Row, List<Block>> blocks = new EnumMap<>(Row.class);
+        Map<Row, double[]> xs = new EnumMap<>(Row.class);
+        for (Row row : Row.values()) {
+            List<Block> bs = blocks(row, order.get(row), picture);
+            blocks.put(row, bs);
+            double[] x = new double[bs.size()];
+            double at = left + (content - rowWidths.get(row)) / 2;
+            for (int i = 0; i < bs.size(); i++) {
+                x[i] = at;
+                at += bs.get(i).width() + GAP_X;
+            }
+            xs.put(row, x);
+        }
+        for (int round = 0; round < ALIGN_ROUNDS; round++) {
+            for (Row row : Row.values()) {
+                align(row, blocks, xs, picture, left, left + content);
+            }
+        }
+
         Map<String, Box> nodes = new LinkedHashMap<>();
         Map<String, Box> frames = new LinkedHashMap<>();
         Map<Row, Box> bands = new EnumMap<>(Row.class);
@@ -61,31 +79,112 @@ public record Layout(Map<String, Box> nodes, Map<String, Box> frames, Map<Row, B
         for (Row row : Row.values()) {
             double bandHeight = rowHeights.get(row) + BAND_PAD * 2;
             bands.put(row, new Box(MARGIN, y, width - 2 * MARGIN, bandHeight));
-            double x = left + (content - rowWidths.get(row)) / 2;
             double top = y + BAND_PAD;
-            if (row == Row.INTERFACES) {
-                for (InterfaceGroup g : groupOrder(order.get(row), picture)) {
-                    List<Node> channels = order.get(row).stream().filter(n -> n.group().equals(g.id())).toList();
-                    double frameWidth = groupWidth(g, channels);
-                    double inner = channels.stream().mapToDouble(Layout::boxWidth).sum() + GAP_X * Math.max(0, channels.size() - 1);
-                    double cx = x + (frameWidth - inner) / 2;
-                    for (Node n : channels) {
-                        nodes.put(n.key(), new Box(cx, top + PAD_Y, boxWidth(n), boxHeight(n)));
-                        cx += boxWidth(n) + GAP_X;
-                    }
-                    frames.put(g.id(), new Box(x, top, frameWidth, rowHeights.get(row)));
-                    x += frameWidth + GAP_X;
+            List<Block> bs = blocks.get(row);
+            for (int i = 0; i < bs.size(); i++) {
+                Block b = bs.get(i);
+                double x = xs.get(row)[i];
+                if (b.group() != null) {
+                    frames.put(b.group().id(), new Box(x, top, b.width(), rowHeights.get(row)));
                 }
-            } else {
-                for (Node n : order.get(row)) {
-                    nodes.put(n.key(), new Box(x, top + (rowHeights.get(row) - boxHeight(n)) / 2, boxWidth(n), boxHeight(n)));
-                    x += boxWidth(n) + GAP_X;
+                for (int k = 0; k < b.nodes().size(); k++) {
+                    Node n = b.nodes().get(k);
+                    double boxTop = b.group() != null ? top + PAD_Y : top + (rowHeights.get(row) - boxHeight(n)) / 2;
+                    nodes.put(n.key(), new Box(x + b.offsets()[k], boxTop, boxWidth(n), boxHeight(n)));
                 }
             }
             y += bandHeight + GAP_Y;
         }
         double height = y - GAP_Y + LEGEND;
         return new Layout(nodes, frames, bands, width, height);
+    }
+
+    /**
+     * What moves as one in a band: a box, or an interface's frame with its channel boxes.
+     *
+     * @param nodes   the boxes, left to right
+     * @param group   the interface, for a frame; null for a single box
+     * @param width   the block's width
+     * @param offsets each box's x from the block's left edge
+     */
+    private record Block(List<Node> nodes, InterfaceGroup group, double width, double[] offsets) {
+    }
+
+    private static List<Block> blocks(Row row, List<Node> ordered, GraphPicture picture) {
+        List<Block> out = new ArrayList<>();
+        if (row != Row.INTERFACES) {
+            for (Node n : ordered) {
+                out.add(new Block(List.of(n), null, boxWidth(n), new double[] {0}));
+            }
+            return out;
+        }
+        for (InterfaceGroup g : BandOrder.groups(ordered, picture)) {
+            List<Node> channels = ordered.stream().filter(n -> n.group().equals(g.id())).toList();
+            double frameWidth = groupWidth(g, channels);
+            double inner = channels.stream().mapToDouble(Layout::boxWidth).sum() + GAP_X * Math.max(0, channels.size() - 1);
+            double[] offsets = new double[channels.size()];
+            double at = (frameWidth - inner) / 2;
+            for (int k = 0; k < channels.size(); k++) {
+                offsets[k] = at;
+                at += boxWidth(channels.get(k)) + GAP_X;
+            }
+            out.add(new Block(channels, g, frameWidth, offsets));
+        }
+        return out;
+    }
+
+    /**
+     * Moves the blocks of one band towards the boxes they are wired to in the neighbouring bands, keeping
+     * their order, the gap between them and the band's bounds; if that cannot be done the band stays as it is.
+     */
+    private static void align(Row row, Map<Row, List<Block>> blocks, Map<Row, double[]> xs, GraphPicture picture,
+            double minX, double maxX) {
+        Map<String, Double> centres = new HashMap<>();
+        Map<String, Row> rowOf = new HashMap<>();
+        for (Map.Entry<Row, List<Block>> e : blocks.entrySet()) {
+            double[] x = xs.get(e.getKey());
+            for (int i = 0; i < e.getValue().size(); i++) {
+                Block b = e.getValue().get(i);
+                for (int k = 0; k < b.nodes().size(); k++) {
+                    Node n = b.nodes().get(k);
+                    centres.put(n.key(), x[i] + b.offsets()[k] + boxWidth(n) / 2);
+                    rowOf.put(n.key(), e.getKey());
+                }
+            }
+        }
+        List<Block> bs = blocks.get(row);
+        double[] current = xs.get(row);
+        double[] x = new double[bs.size()];
+        for (int i = 0; i < bs.size(); i++) {
+            Block b = bs.get(i);
+            double sum = 0;
+            int count = 0;
+            for (int k = 0; k < b.nodes().size(); k++) {
+                Node n = b.nodes().get(k);
+                double ownOffset = b.offsets()[k] + boxWidth(n) / 2;
+                for (Edge e : picture.edges()) {
+                    String other = e.from().equals(n.key()) ? e.to() : e.to().equals(n.key()) ? e.from() : null;
+                    if (other != null && rowOf.get(other) != row && centres.containsKey(other)) {
+                        sum += centres.get(other) - ownOffset;
+                        count++;
+                    }
+                }
+            }
+            x[i] = count == 0 ? current[i] : sum / count;
+        }
+        for (int i = 0; i < x.length; i++) {
+            x[i] = Math.max(x[i], i == 0 ? minX : x[i - 1] + bs.get(i - 1).width() + GAP_X);
+        }
+        for (int i = x.length - 1; i >= 0; i--) {
+            x[i] = Math.min(x[i], i == x.length - 1 ? maxX - bs.get(i).width() : x[i + 1] - GAP_X - bs.get(i).width());
+        }
+        for (int i = 0; i < x.length; i++) {
+            boolean fits = x[i] >= minX - 1e-6 && (i == 0 || x[i - 1] + bs.get(i - 1).width() + GAP_X <= x[i] + 1e-6);
+            if (!fits) {
+                return;
+            }
+        }
+        xs.put(row, x);
     }
 
     /** The x where the band titles end and the boxes may start. */
@@ -128,85 +227,4 @@ public record Layout(Map<String, Box> nodes, Map<String, Box> frames, Map<Row, B
         return row == Row.INTERFACES ? tallest + 2 * PAD_Y + CAPTION : tallest;
     }
 
-    /** The interface groups in the order their channels ended up in (groups without channels keep their place). */
-    private static List<InterfaceGroup> groupOrder(List<Node> channels, GraphPicture picture) {
-        List<InterfaceGroup> groups = new ArrayList<>(picture.groups());
-        Map<String, Integer> first = new HashMap<>();
-        for (int i = 0; i < channels.size(); i++) {
-            first.putIfAbsent(channels.get(i).group(), i);
-        }
-        List<InterfaceGroup> used = groups.stream().filter(g -> first.containsKey(g.id()))
-                .sorted(Comparator.comparingInt(g -> first.get(g.id()))).toList();
-        List<InterfaceGroup> out = new ArrayList<>();
-        int next = 0;
-        for (InterfaceGroup g : groups) {
-            out.add(first.containsKey(g.id()) ? used.get(next++) : g);
-        }
-        return out;
-    }
-
-    /** The order of the boxes in each band after the barycentre sweeps. */
-    static Map<Row, List<Node>> order(GraphPicture picture) {
-        Map<Row, List<Node>> order = new EnumMap<>(Row.class);
-        for (Row row : Row.values()) {
-            List<Node> nodes = new ArrayList<>(picture.row(row));
-            if (row == Row.INTERFACES) {
-                List<String> groupIds = picture.groups().stream().map(InterfaceGroup::id).toList();
-                nodes.sort(Comparator.comparingInt(n -> groupIds.indexOf(n.group())));
-            }
-            order.put(row, nodes);
-        }
-        Row[] rows = Row.values();
-        for (int sweep = 0; sweep < SWEEPS; sweep++) {
-            for (int r = 1; r < rows.length; r++) {
-                reorder(order, rows[r], rows[r - 1], picture);
-            }
-            for (int r = rows.length - 2; r >= 0; r--) {
-                reorder(order, rows[r], rows[r + 1], picture);
-            }
-        }
-        return order;
-    }
-
-    private static void reorder(Map<Row, List<Node>> order, Row row, Row neighbour, GraphPicture picture) {
-        List<Node> nodes = order.get(row);
-        Map<String, Double> at = positions(order.get(neighbour));
-        Map<String, Double> own = positions(nodes);
-        Map<String, Double> centre = new HashMap<>();
-        for (Node n : nodes) {
-            double sum = 0;
-            int count = 0;
-            for (Edge e : picture.edges()) {
-                String other = e.from().equals(n.key()) ? e.to() : e.to().equals(n.key()) ? e.from() : null;
-                if (other != null && at.containsKey(other)) {
-                    sum += at.get(other);
-                    count++;
-                }
-            }
-            centre.put(n.key(), count == 0 ? own.get(n.key()) : sum / count);
-        }
-        Comparator<Node> byCentre = Comparator.comparingDouble(n -> centre.get(n.key()));
-        if (row == Row.INTERFACES) {
-            Map<String, Double> groupCentre = new HashMap<>();
-            Map<String, Integer> groupSize = new HashMap<>();
-            for (Node n : nodes) {
-                groupCentre.merge(n.group(), centre.get(n.key()), Double::sum);
-                groupSize.merge(n.group(), 1, Integer::sum);
-            }
-            byCentre = Comparator.<Node>comparingDouble(n -> groupCentre.get(n.group()) / groupSize.get(n.group()))
-                    .thenComparing(n -> n.group()).thenComparing(byCentre);
-        }
-        List<Node> sorted = new ArrayList<>(nodes);
-        sorted.sort(byCentre.thenComparingDouble(n -> own.get(n.key())));
-        order.put(row, sorted);
-    }
-
-    /** Each node's place in its band as a fraction of the band's width, so bands of different sizes compare. */
-    private static Map<String, Double> positions(List<Node> nodes) {
-        Map<String, Double> at = new HashMap<>();
-        for (int i = 0; i < nodes.size(); i++) {
-            at.put(nodes.get(i).key(), (i + 0.5) / nodes.size());
-        }
-        return at;
-    }
 }

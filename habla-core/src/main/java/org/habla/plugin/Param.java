@@ -22,4 +22,10 @@ public @interface Param {
 
     /** The default as JSON text ({@code "0.5"}, {@code "\"jpeg\""}); empty means required. */
     String defaultValue() default "";
+
+    /**
+     * The value is a file path. A relative path is taken from the folder of the config file that
+     * names it, so a config and the files beside it move together.
+     */
+    boolean file() default false;
 }

@@ -85,7 +85,7 @@ class CheckCommandTest {
         CommandRun run = CommandRun.of(new CheckCommand(TestPlugins.registry()), config.toString());
 
         assertThat(run.exitCode()).isEqualTo(ExitCodes.USAGE_OR_CONFIG);
-        assertThat(run.err()).contains("\n$: cannot read " + config);
+        assertThat(run.err()).contains("\n$: cannot read " + config + ": no such file");
     }
 
     @Test

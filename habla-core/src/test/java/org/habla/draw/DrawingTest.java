@@ -1,18 +1,23 @@
 package org.habla.draw;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.within;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.io.ByteArrayInputStream;
 import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.TimeUnit;
 import javax.xml.parsers.DocumentBuilderFactory;
 import org.habla.config.ConfigLoader;
 import org.habla.config.HablaConfig;
 import org.habla.config.TestPlugins;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.w3c.dom.Document;
 import org.w3c.dom.Element;
 import org.w3c.dom.NodeList;
@@ -72,6 +77,21 @@ class DrawingTest {
                 .contains("\"@robot.sonar\" -> \"method:sonar\" [color")
                 .contains("label=\"robot: robot-sim at 127.0.0.1:8101\"");
         assertThat(dot.chars().filter(c -> c == '{').count()).isEqualTo(dot.chars().filter(c -> c == '}').count());
+    }
+
+    @Test
+    void graphvizAcceptsTheDotWhereItIsInstalled(@TempDir Path dir) throws Exception {
+        assumeTrue(onPath("dot"), "Graphviz is not installed");
+        Path file = dir.resolve("pioneer.dot");
+        Files.writeString(file, DotWriter.write(PioneerPicture.build()));
+
+        Process p = new ProcessBuilder("dot", "-Tsvg", file.toString()).redirectErrorStream(true).start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+
+        assertThat(p.waitFor(30, TimeUnit.SECONDS)).isTrue();
+        assertThat(p.exitValue()).as(out).isZero();
+        assertThat(parse(out.substring(out.indexOf("<svg"))).getElementsByTagName("g").getLength())
+                .isGreaterThan(PioneerPicture.build().nodes().size());
     }
 
     @Test
@@ -141,9 +161,46 @@ class DrawingTest {
     }
 
     @Test
+    void aGraphTheSizeOfFigureThreeKeepsEveryBoxInItsBandAndFrameWithoutOverlaps() {
+        GraphPicture p = PioneerPicture.build();
+        Layout layout = Layout.of(p);
+
+        Document svg = parse(SvgWriter.write(p));
+
+        assertThat(rects(svg, "node")).hasSize(p.nodes().size());
+        assertNoOverlap(rects(svg, "node"));
+        assertNoOverlap(rects(svg, "interface"));
+        for (Node n : p.nodes()) {
+            Box b = layout.nodes().get(n.key());
+            Box band = layout.bands().get(n.row());
+            assertThat(b.y()).as(n.key()).isGreaterThanOrEqualTo(band.y());
+            assertThat(b.bottom()).as(n.key()).isLessThanOrEqualTo(band.bottom());
+            assertThat(b.x()).as(n.key()).isGreaterThanOrEqualTo(Layout.MARGIN + Layout.BAND_PAD + Layout.titleColumn());
+            assertThat(b.right()).as(n.key()).isLessThanOrEqualTo(band.right());
+            if (n.row() == Row.INTERFACES) {
+                Box frame = layout.frames().get(n.group());
+                assertThat(b.x()).as(n.key()).isGreaterThanOrEqualTo(frame.x());
+                assertThat(b.right()).as(n.key()).isLessThanOrEqualTo(frame.right());
+            }
+        }
+    }
+
+    @Test
+    void aBoxWiredStraightUpIsDrawnAboveTheBoxItComesFrom() {
+        GraphPicture p = PioneerPicture.build();
+        Layout layout = Layout.of(p);
+
+        // microphone has one wire down (the audio channel) and one up (audio-processing): nothing pulls it aside.
+        double mic = layout.nodes().get("method:microphone").centerX();
+        assertThat(layout.nodes().get("@mic.audio").centerX()).isCloseTo(mic, within(1.0));
+        assertThat(layout.nodes().get("method:audio").centerX()).isCloseTo(mic, within(1.0));
+    }
+
+    @Test
     void everyFormatIsTheSameTextEachTime() throws Exception {
         for (DrawingFormat f : DrawingFormat.values()) {
             assertThat(f.write(pioneerLike())).as(f.name()).isEqualTo(f.write(pioneerLike()));
+            assertThat(f.write(PioneerPicture.build())).as(f.name()).isEqualTo(f.write(PioneerPicture.build()));
         }
     }
 
@@ -156,6 +213,12 @@ class DrawingTest {
 
         assertThat(svg).contains("x&lt;y").contains("a&lt;b &amp; &apos;c&apos;");
         assertThat(parse(svg).getDocumentElement().getTagName()).isEqualTo("svg");
+    }
+
+    private static boolean onPath(String program) {
+        String path = System.getenv("PATH");
+        return path != null && java.util.Arrays.stream(path.split(java.io.File.pathSeparator))
+                .anyMatch(d -> Files.isExecutable(Path.of(d, program)));
     }
 
     static Document parse(String xml) {

@@ -47,6 +47,17 @@ class PythonInterfaceExampleTest {
     }
 
     @Test
+    void theConfigReferenceShowsTheShippedConfigAsItsCompleteExample() throws Exception {
+        String doc = Files.readString(EXAMPLE.resolve("../../docs/config.md").normalize());
+        int start = doc.indexOf("```json\n{\n  \"$schema\"");
+        assertThat(start).as("docs/config.md has the complete example").isNotNegative();
+        int from = doc.indexOf('\n', start) + 1;
+        String documented = doc.substring(from, doc.indexOf("```", from));
+
+        assertThat(JSON.readTree(documented)).isEqualTo(JSON.readTree(EXAMPLE.resolve("habla.json").toFile()));
+    }
+
+    @Test
     void theRoverIsReadAndDrivenThroughTheDaemon(@TempDir Path tmp) throws Exception {
         int[] ports = DaemonProcess.freePorts(4);
         Path cfg = tmp.resolve("habla.json");
@@ -55,8 +66,10 @@ class PythonInterfaceExampleTest {
                 String.valueOf(ports[0]), "--start", "1.0", "2.0", "0.0")
                 .redirectErrorStream(true).redirectOutput(tmp.resolve("rover.log").toFile()).start();
         try (DaemonProcess daemon = DaemonProcess.start(tmp.resolve("daemon.log"), "run", cfg.toString())) {
-            assertThat(DaemonProcess.awaitPort(ports[0], 10_000)).as(log(tmp, "rover.log")).isTrue();
+            assertThat(awaitLine(tmp.resolve("rover.log"), "rover listening on", 10_000))
+                    .as(log(tmp, "rover.log")).isTrue();
             assertThat(DaemonProcess.awaitPort(ports[1], 20_000)).as(daemon.output()).isTrue();
+            assertThat(DaemonProcess.awaitPort(ports[2], 5_000)).as(daemon.output()).isTrue();
 
             try (Socket ranges = new Socket("127.0.0.1", ports[1]); Socket motion = new Socket("127.0.0.1", ports[2])) {
                 ranges.setSoTimeout(5_000);
@@ -137,6 +150,18 @@ class PythonInterfaceExampleTest {
 
     private static BufferedReader reader(Socket s) throws IOException {
         return new BufferedReader(new InputStreamReader(s.getInputStream(), StandardCharsets.UTF_8));
+    }
+
+    /** Waits until a process's log has a line starting with {@code prefix}; false after {@code millis}. */
+    private static boolean awaitLine(Path log, String prefix, long millis) throws Exception {
+        long end = System.nanoTime() + millis * 1_000_000;
+        while (System.nanoTime() < end) {
+            if (Files.exists(log) && Files.readAllLines(log).stream().anyMatch(l -> l.startsWith(prefix))) {
+                return true;
+            }
+            Thread.sleep(50);
+        }
+        return false;
     }
 
     private static String log(Path dir, String name) {

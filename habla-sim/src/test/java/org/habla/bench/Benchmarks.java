@@ -5,7 +5,7 @@ import java.util.List;
 
 /**
  * Runs the engine benchmarks and prints their figures: {@code bench/run [latency] [throughput] [fanout]
- * [--seconds N]} (all three by default, 10 s each after a warm-up).
+ * [vision] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up).
  */
 public final class Benchmarks {
 
@@ -19,7 +19,8 @@ public final class Benchmarks {
         if (at >= 0 && at + 1 < list.size()) {
             seconds = Integer.parseInt(list.get(at + 1));
         }
-        boolean all = list.stream().noneMatch(a -> a.equals("latency") || a.equals("throughput") || a.equals("fanout"));
+        boolean all = list.stream().noneMatch(a -> a.equals("latency") || a.equals("throughput") || a.equals("fanout")
+                || a.equals("vision"));
         System.out.printf("HABLA engine benchmarks: %d cores, %s %s, %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name"), System.getProperty("java.version"), System.getProperty("os.name"));
         System.out.println("load average at start (1, 5, 15 min): " + loadAverage());
@@ -31,6 +32,9 @@ public final class Benchmarks {
         }
         if (all || list.contains("fanout")) {
             new FanOutBench(2, seconds).run();
+        }
+        if (all || list.contains("vision")) {
+            new VisionBench(2_000).run();
         }
         System.out.println("\nload average at end (1, 5, 15 min): " + loadAverage());
         System.exit(0);

@@ -76,8 +76,8 @@ final class FanOutBench {
                 System.out.printf("%-34s %10d %,12.0f %,10.0f %10d %8d %8d%n", name, rateHz, total / s, min / s, lost,
                         all.getValueAtPercentile(50), all.getValueAtPercentile(99));
                 System.out.printf("  daemon socket: %d samples dropped from client queues while measuring%s%n",
-                        dropped(daemon) - droppedBefore, stalled ? " (all of them the silent client's: the readers lost "
-                                + lost + ")" : "");
+                        dropped(daemon) - droppedBefore, stalled ? "; of them the readers lost " + lost
+                                + ", the silent client the rest" : "");
             } finally {
                 for (SampleClient c : clients) {
                     c.close();

@@ -8,7 +8,9 @@ import org.habla.daemon.Daemon;
 /**
  * Benchmark (a): end-to-end latency of one reading through the daemon over loopback, from the moment the
  * robot stamps it to the moment a control client has parsed it, with readings at a fixed rate; and the
- * same hops through {@link PlainRelay}, directly and with three thread hand-offs, as the floor.
+ * same hops through {@link PlainRelay}, on one thread and with four thread hand-offs (as many as the
+ * daemon's path: link reader → three method threads → the client's writer), the latter also with its
+ * socket reader and writer on virtual threads as in the daemon, as the floor.
  */
 final class LatencyBench {
 
@@ -32,11 +34,15 @@ final class LatencyBench {
             return new Path(d.port("value"), d::close);
         });
         measure("plain relay, 1 thread", robot -> {
-            PlainRelay r = new PlainRelay(robot.port(), 0);
+            PlainRelay r = new PlainRelay(robot.port(), 0, false);
             return new Path(r.port(), r::close);
         });
-        measure("plain relay, 3 thread hand-offs", robot -> {
-            PlainRelay r = new PlainRelay(robot.port(), 3);
+        measure("plain relay, 4 thread hand-offs", robot -> {
+            PlainRelay r = new PlainRelay(robot.port(), 4, false);
+            return new Path(r.port(), r::close);
+        });
+        measure("plain relay, 4 hand-offs, virtual-thread I/O", robot -> {
+            PlainRelay r = new PlainRelay(robot.port(), 4, true);
             return new Path(r.port(), r::close);
         });
     }

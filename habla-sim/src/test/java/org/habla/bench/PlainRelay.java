@@ -22,8 +22,8 @@ import java.util.concurrent.BlockingQueue;
  * The baseline the daemon is compared with: a plain Java TCP relay that connects to the robot, reads
  * its JSON lines, parses them, and writes a sample line for each to one client — the same socket hops
  * and the same parse/encode as the daemon, without the engine. With {@code handOffs} > 0 the value also
- * passes through that many threads over blocking queues, as it passes through the method threads of a
- * chain in the daemon.
+ * changes thread that many times over blocking queues, as it does in the daemon between the link's
+ * reader, the method threads and the client's writer.
  */
 final class PlainRelay implements AutoCloseable {
 
@@ -33,16 +33,26 @@ final class PlainRelay implements AutoCloseable {
     private final ServerSocket server;
     private final int robotPort;
     private final int handOffs;
+    private final boolean virtualEnds;
     private final List<Thread> threads = new ArrayList<>();
     private volatile Socket robot;
     private volatile Socket client;
 
-    PlainRelay(int robotPort, int handOffs) throws IOException {
+    /**
+     * @param handOffs    how many times a value changes thread between reading and writing (0: never)
+     * @param virtualEnds whether the socket reader and writer run on virtual threads, as in the daemon
+     */
+    PlainRelay(int robotPort, int handOffs, boolean virtualEnds) throws IOException {
         this.robotPort = robotPort;
         this.handOffs = handOffs;
+        this.virtualEnds = virtualEnds;
         server = new ServerSocket();
         server.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
-        threads.add(Thread.ofPlatform().name("relay-accept").daemon().start(this::serve));
+        threads.add(thread(virtualEnds, "relay-reader").start(this::serve));
+    }
+
+    private static Thread.Builder thread(boolean virtual, String name) {
+        return virtual ? Thread.ofVirtual().name(name) : Thread.ofPlatform().name(name).daemon();
     }
 
     int port() {
@@ -72,7 +82,7 @@ final class PlainRelay implements AutoCloseable {
             }
             if (handOffs > 0) {
                 BlockingQueue<JsonNode> tail = last;
-                threads.add(Thread.ofPlatform().name("relay-writer").daemon().start(() -> write(tail, out)));
+                threads.add(thread(virtualEnds, "relay-writer").start(() -> write(tail, out)));
             }
             long seq = 0;
             for (String line = in.readLine(); line != null; line = in.readLine()) {

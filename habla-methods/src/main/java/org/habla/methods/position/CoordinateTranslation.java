@@ -16,8 +16,8 @@ import org.habla.sample.Sample;
 /**
  * The coordinate translation method, type {@code coordinate-translation}: it turns what a sensor saw
  * into the {@code position} of the target in the robot frame, {@code {"xM","yM","distanceM","angleRad","seen"}}
- * (x forward, y left, angle positive to the left, distance from the robot's origin to the target's
- * near surface). What it works from depends on which inputs the config wires:
+ * (x forward, y left, angle positive to the left; for a blob, distance from the edge of the robot's
+ * body, {@code bodyRadiusM} around its origin, to the target's near surface). What it works from depends on which inputs the config wires:
  *
  * <ul>
  *   <li>{@code nearest}: a {@code nearest} record of a range sensor, already in the robot frame: it is
@@ -116,14 +116,16 @@ public final class CoordinateTranslation extends ProcessingMethod {
             emitPosition(false, null);
             return;
         }
-        BlobFix fix = new BlobFix(cam, params.targetRadiusM(), params.cameraXM(), params.minRadiusPx());
+        BlobFix fix = new BlobFix(cam, params.targetRadiusM(), params.cameraXM(), params.lensForwardM(),
+                params.minRadiusPx());
         BlobFix.Fix found = fix.locate(num(blob, "cx"), num(blob, "cy"), num(blob, "x"), num(blob, "y"),
                 num(blob, "w"), num(blob, "h"), head).orElse(null);
         if (found == null) {
             emitPosition(false, null);
             return;
         }
-        remember(found.xM(), found.yM(), Math.max(0, Math.hypot(found.xM(), found.yM()) - params.targetRadiusM()));
+        remember(found.xM(), found.yM(),
+                Math.max(0, Math.hypot(found.xM(), found.yM()) - params.targetRadiusM() - params.bodyRadiusM()));
         emitPosition(true, found);
     }
 

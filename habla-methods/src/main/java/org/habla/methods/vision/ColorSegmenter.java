@@ -97,7 +97,14 @@ public final class ColorSegmenter {
             Imgproc.morphologyEx(mask, mask, Imgproc.MORPH_OPEN, openKernel);
         }
         if (closeKernel != null) {
-            Imgproc.morphologyEx(mask, mask, Imgproc.MORPH_CLOSE, closeKernel);
+            // Outside the frame is "not this colour": without the zero margin OpenCV's closing would
+            // glue a region lying a pixel or two from the edge to the edge.
+            int pad = params.closePx() / 2 + 1;
+            Mat padded = new Mat();
+            Core.copyMakeBorder(mask, padded, pad, pad, pad, pad, Core.BORDER_CONSTANT, new Scalar(0));
+            Imgproc.morphologyEx(padded, padded, Imgproc.MORPH_CLOSE, closeKernel);
+            padded.submat(pad, pad + mask.rows(), pad, pad + mask.cols()).copyTo(mask);
+            padded.release();
         }
     }
 

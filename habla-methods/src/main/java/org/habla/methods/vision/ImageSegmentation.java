@@ -98,7 +98,7 @@ public final class ImageSegmentation extends ProcessingMethod {
             emit(largest, s.largestRecord(params.firstLabel()), sourceMicros);
         } else {
             unreadable++;
-            if (unreadable == 1 || Long.bitCount(unreadable) == 1) {
+            if (Long.bitCount(unreadable) == 1) {   // the 1st, 2nd, 4th, 8th…: a broken camera does not flood the log
                 log().warn("{}: skipped an unreadable frame ({} so far): {}", id(), unreadable, s.error());
             }
         }

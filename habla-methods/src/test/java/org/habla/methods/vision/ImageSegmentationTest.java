@@ -111,6 +111,19 @@ class ImageSegmentationTest {
     }
 
     @Test
+    void closingDoesNotGlueARegionNearTheEdgeToTheEdge() {
+        MethodHarness h = started(new ImageSegmentationParams(null, null, 0, 5, null));
+        h.push("image", bgrWithRectangle(64, 48, new int[] {0, 0, 0}, new int[] {180, 105, 255}, 1, 1, 12, 12));
+        JsonNode b = blobList(h.last("blobs")).get(0);
+        assertThat(new int[] {b.get("x").asInt(), b.get("y").asInt(), b.get("w").asInt(), b.get("h").asInt(),
+                b.get("area").asInt()}).containsExactly(1, 1, 12, 12, 144);
+        h.push("image", bgrWithRectangle(64, 48, new int[] {0, 0, 0}, new int[] {180, 105, 255}, 0, 40, 10, 8));
+        b = blobList(h.last("blobs")).get(0);
+        assertThat(new int[] {b.get("x").asInt(), b.get("y").asInt(), b.get("w").asInt(), b.get("h").asInt(),
+                b.get("area").asInt()}).as("a region cut by the edges keeps its pixels").containsExactly(0, 40, 10, 8, 80);
+    }
+
+    @Test
     void hueRangeThatWrapsAroundRedTakesBothEndsOfTheHueCircle() {
         int[] red = {20, 10, 230};        // hue 2 (OpenCV scale)
         int[] crimson = {60, 0, 220};      // hue 172

@@ -73,8 +73,8 @@ public final class SimAiboCommand implements Callable<Integer> {
         }
         AiboSimulator sim;
         try {
-            sim = new AiboSimulator(new AiboSimulator.Options(w, speed, seed, TekkotsuPorts.withBase(portBase),
-                    truthPort, teacher.equals("on")));
+            sim = new AiboSimulator(AiboSimulator.Options.defaults(w).withSpeed(speed).withSeed(seed)
+                    .withPorts(TekkotsuPorts.withBase(portBase), truthPort).withTeacher(teacher.equals("on")));
         } catch (IOException e) {
             err.println("habla sim aibo: cannot listen: " + e.getMessage()
                     + " (another robot or simulator on these ports? try --port-base)");

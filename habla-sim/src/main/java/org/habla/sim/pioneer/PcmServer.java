@@ -54,6 +54,11 @@ final class PcmServer implements AutoCloseable {
         return droppedChunks;
     }
 
+    /** Whether a client is connected. */
+    boolean listening() {
+        return current != null;
+    }
+
     /** Hands one chunk of audio to the client, if there is one; never blocks. */
     void send(byte[] pcm) {
         Listener l = current;

@@ -57,7 +57,19 @@ public final class DerivedConfig {
                 params.put("walkResendMs", Math.max(100, Math.round(1000 / speed)));
             }
         }
+        Path base = robotConfig.toAbsolutePath().getParent();
         for (JsonNode m : root.path("methods")) {
+            if (m.path("params").isObject()) {
+                // The derived config lives elsewhere: files named relative to the robot's config stay found.
+                ObjectNode params = (ObjectNode) m.get("params");
+                params.properties().forEach(e -> {
+                    if (e.getValue().isTextual() && e.getValue().asText().contains("/")
+                            && !Path.of(e.getValue().asText()).isAbsolute()
+                            && Files.isRegularFile(base.resolve(e.getValue().asText()))) {
+                        params.put(e.getKey(), base.resolve(e.getValue().asText()).normalize().toString());
+                    }
+                });
+            }
             JsonNode expose = m.path("expose");
             if (expose.isObject() && expose.has("port")) {
                 ((ObjectNode) expose).put("port", expose.get("port").asInt() + portOffset);

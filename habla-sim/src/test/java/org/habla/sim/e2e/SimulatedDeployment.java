@@ -91,6 +91,33 @@ final class SimulatedDeployment implements AutoCloseable {
                 dir.resolve("daemon.log")).isTrue();
     }
 
+    /** Waits until every method of the daemon says it is ready (models loaded), as its status endpoint tells. */
+    void awaitReady(long timeoutMs) throws Exception {
+        int port = JSON.readTree(Files.readString(config)).path("status").path("port").asInt();
+        long end = System.nanoTime() + timeoutMs * 1_000_000L;
+        String notReady = "?";
+        while (System.nanoTime() < end) {
+            try (java.net.Socket s = new java.net.Socket("127.0.0.1", port)) {
+                s.setSoTimeout(5_000);
+                JsonNode status = JSON.readTree(new BufferedReader(new InputStreamReader(s.getInputStream(),
+                        StandardCharsets.UTF_8)).readLine());
+                notReady = "";
+                for (JsonNode m : status.path("methods")) {
+                    if (!m.path("ready").asBoolean()) {
+                        notReady += m.path("id").asText() + " ";
+                    }
+                }
+                if (notReady.isEmpty()) {
+                    return;
+                }
+            } catch (IOException e) {
+                notReady = e.toString();
+            }
+            Thread.sleep(200);
+        }
+        throw new AssertionError("methods not ready after " + timeoutMs + " ms: " + notReady);
+    }
+
     /** Puts the robot at a pose (world frame) and returns the first ground truth after it. */
     JsonNode place(double x, double y, double theta) throws Exception {
         ObjectNode reset = TruthLink.op("reset");
