@@ -68,6 +68,16 @@ public final class HostedMethod implements AutoCloseable {
         return runner.slot(in).offer(sample);
     }
 
+    /** Whether the method says it can do its work (e.g. its model is loaded). */
+    public boolean ready() {
+        return runner.ready();
+    }
+
+    /** What the method said about its readiness last, or an empty string. */
+    public String readiness() {
+        return runner.readinessDetail();
+    }
+
     /** The runner's figures, as the daemon's status shows them. */
     public ObjectNode status(long nowMicros) {
         return runner.status(nowMicros);

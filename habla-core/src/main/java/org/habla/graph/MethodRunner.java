@@ -119,6 +119,18 @@ final class MethodRunner implements MethodContext {
      */
     void placeOn(RemotePlacement remote) {
         this.placement = remote;
+        if (!remote.fallsBackToLocal()) {
+            ready = false;
+            readinessDetail = "waiting for worker " + remote.host();
+        }
+    }
+
+    boolean ready() {
+        return ready;
+    }
+
+    String readinessDetail() {
+        return readinessDetail;
     }
 
     RemotePlacement placement() {

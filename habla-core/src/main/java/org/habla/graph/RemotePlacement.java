@@ -252,7 +252,11 @@ final class RemotePlacement {
                     badLine(e.getMessage());
                 }
             }
-            case "heartbeat" -> { }
+            case "heartbeat" -> {
+                boolean ready = f.header().path("ready").asBoolean(true);
+                String detail = f.header().path("readiness").asText("");
+                runner.readiness(ready, detail.isEmpty() ? "" : "on worker " + host() + ": " + detail);
+            }
             case "error" -> badLine(f.header().path("code").asText("") + ": " + f.header().path("message").asText(""));
             default -> badLine("an unexpected line of type '" + f.type() + "'");
         }
@@ -296,6 +300,9 @@ final class RemotePlacement {
         boolean was = up;
         up = false;
         outbound.clear();
+        if (!fallsBackToLocal()) {
+            runner.readiness(false, "worker " + host() + " is lost");
+        }
         if (was || connects.get() == 0 && failures.get() == 1) {
             onStateChange.run();
         }

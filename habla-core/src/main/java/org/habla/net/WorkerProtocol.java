@@ -25,7 +25,7 @@ import org.habla.sample.Sample;
  *     |  --&gt; {"type":"sample","input":"segments","seq":7,"t":MICROS,"stale":false,
  *     |        "kind":"audio","rateHz":16000,"channels":1,"bits":16,"bytes":N}  + N bytes of PCM
  *     |  &lt;-- {"type":"sample","output":"words","seq":3,"t":MICROS,"stale":false,"kind":"text","value":"go forward"}
- *     |  &lt;-- {"type":"heartbeat"}                      every second, so silence means a lost worker
+ *     |  &lt;-- {"type":"heartbeat","ready":true,"readiness":""}   every second: silence means a lost worker
  *     |  &lt;-- {"type":"error","code":"bad_json",...}     a bad line costs that line only
  * </pre>
  *
@@ -109,8 +109,9 @@ public final class WorkerProtocol {
         return NODES.objectNode().put("type", "error").put("code", code).put("message", message);
     }
 
-    public static ObjectNode heartbeat() {
-        return NODES.objectNode().put("type", "heartbeat");
+    /** The worker's "still here", with whether the method can do its work yet (e.g. its model is loaded). */
+    public static ObjectNode heartbeat(boolean ready, String readiness) {
+        return NODES.objectNode().put("type", "heartbeat").put("ready", ready).put("readiness", readiness);
     }
 
     /** A sample the daemon hands to the placed method's input {@code input}. */

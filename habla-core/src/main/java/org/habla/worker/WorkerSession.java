@@ -196,7 +196,7 @@ final class WorkerSession implements Runnable {
             while (open) {
                 long now = System.nanoTime();
                 if (now - nextBeat >= 0) {
-                    out.write(WorkerProtocol.heartbeat());
+                    out.write(WorkerProtocol.heartbeat(hosted.ready(), hosted.readiness()));
                     nextBeat = now + TimeUnit.MILLISECONDS.toNanos(WorkerProtocol.HEARTBEAT_MILLIS);
                 }
                 Frame f = outbound.poll(Math.max(1, nextBeat - now), TimeUnit.NANOSECONDS);

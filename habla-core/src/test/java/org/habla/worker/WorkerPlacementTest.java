@@ -148,6 +148,7 @@ class WorkerPlacementTest {
         assertThat(s.stale()).isFalse();
         assertThat(placement(g).path("received").asLong()).isEqualTo(1);
         assertThat(worker.sessions()).isEqualTo(1);
+        await(() -> method(g, "p").path("ready").asBoolean(), "the worker's heartbeat says the method is ready");
     }
 
     @Test
@@ -182,6 +183,8 @@ class WorkerPlacementTest {
         await(() -> !placement(g).path("up").asBoolean(), "the placement notices the lost worker");
         assertThat(next(staleness, "stale")).isEqualTo("stale: worker 127.0.0.1:" + port + " of method p is lost");
         assertThat(method(g, "p").path("stale").asBoolean()).isTrue();
+        assertThat(method(g, "p").path("ready").asBoolean()).isFalse();
+        assertThat(method(g, "p").path("readiness").asText()).isEqualTo("worker 127.0.0.1:" + port + " is lost");
         assertThat(method(g, "out").path("stale").asBoolean()).as("what depends on it is stale too").isTrue();
         write(g, new NumberValue(1));
         await(() -> placement(g).path("dropped").asLong() >= 1, "a sample with nowhere to go is counted");
