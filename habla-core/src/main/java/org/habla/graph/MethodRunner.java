@@ -56,6 +56,8 @@ final class MethodRunner implements MethodContext {
     private volatile String readinessDetail = "";
     private AutoCloseable ticker;
     private Thread thread;
+    private RemotePlacement placement;
+    private volatile boolean localStarted;
 
     private final WorkCount work;
 
@@ -114,14 +116,58 @@ final class MethodRunner implements MethodContext {
         return stale;
     }
 
-    /** Starts the method and its thread. */
+    /**
+     * Runs the method on a worker: from now on its input samples go to {@code remote} instead of the method
+     * object here, which runs only as the fallback while the worker is lost (if the config asks for one).
+     * Call before {@link #start}.
+     */
+    void placeOn(RemotePlacement remote) {
+        this.placement = remote;
+        if (!remote.fallsBackToLocal()) {
+            ready = false;
+            readinessDetail = "waiting for worker " + remote.host();
+        }
+    }
+
+    boolean ready() {
+        return ready;
+    }
+
+    String readinessDetail() {
+        return readinessDetail;
+    }
+
+    RemotePlacement placement() {
+        return placement;
+    }
+
+    /** Starts the method and its thread; a method placed on a worker starts here only when it must run locally. */
     void start() {
         running = true;
         thread = new Thread(this::loop, "habla-method-" + id);
         thread.setDaemon(true);
+        if (placement == null) {
+            startLocal();
+        }
+        thread.start();
+    }
+
+    /** From the placement, on any thread: the worker was lost and the fallback is to run here. */
+    void fallBackToLocal() {
+        turns.add(this::startLocal);
+        wake();
+    }
+
+    private void startLocal() {
+        if (localStarted) {
+            return;
+        }
+        localStarted = true;
+        if (placement != null) {
+            LOG.info("method {} runs in the daemon while its worker {} is lost", id, placement.host());
+        }
         method.start();
         method.tickPeriod().ifPresent(p -> ticker = clock.every(p.toNanos() / 1_000, this::requestTick));
-        thread.start();
     }
 
     /** Stops the thread, then the method. Waits at most {@code waitMillis} for the current turn. */
@@ -139,7 +185,14 @@ final class MethodRunner implements MethodContext {
                 LOG.warn("method {} is still busy after {} ms; stopping it anyway", id, waitMillis);
             }
         }
-        method.stop();
+        if (placement == null || localStarted) {
+            method.stop();
+        }
+    }
+
+    /** A sample the method published on its worker, published here as if the method had emitted it. */
+    void publishFromWorker(Output<?> output, Payload value, long sourceMicros) {
+        emit(output, value, sourceMicros);
     }
 
     private void closeTicker() {
@@ -156,7 +209,9 @@ final class MethodRunner implements MethodContext {
         if (tickPending.compareAndSet(false, true)) {
             addTurn(() -> {
                 tickPending.set(false);
-                method.tick(clock.nowMicros());
+                if (placement == null || !placement.up()) {
+                    method.tick(clock.nowMicros());
+                }
             });
             wake();
         }
@@ -196,7 +251,7 @@ final class MethodRunner implements MethodContext {
                 latency.record(now - s.sourceMicros());
                 handled.mark(now);
                 try {
-                    method.deliver(slot.input(), s);
+                    route(slot.input(), s);
                 } finally {
                     work.end();
                 }
@@ -215,6 +270,21 @@ final class MethodRunner implements MethodContext {
             }
         }
         return worked;
+    }
+
+    /** Hands a sample to the worker while it is up, else to the local method if it runs, else drops it. */
+    private void route(Input<?> input, Sample s) {
+        RemotePlacement remote = placement;
+        if (remote == null) {
+            method.deliver(input, s);
+        } else if (remote.up()) {
+            remote.forward(input, s);
+        } else if (remote.fallsBackToLocal()) {
+            startLocal();
+            method.deliver(input, s);
+        } else {
+            remote.dropWhileLost();
+        }
     }
 
     // ------------------------------------------------------------------ MethodContext
@@ -294,6 +364,9 @@ final class MethodRunner implements MethodContext {
             n.put("readiness", readinessDetail);
         }
         n.put("stale", stale);
+        if (placement != null) {
+            n.set("placement", placement.status());
+        }
         n.put("handled", handled.total());
         n.put("handledPerS", handled.perSecond(nowMicros));
         n.set("latency", latency.snapshot());
