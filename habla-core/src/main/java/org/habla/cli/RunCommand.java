@@ -16,7 +16,6 @@ import org.habla.daemon.Daemon;
 import org.habla.graph.EngineClock;
 import org.habla.graph.MethodGraph;
 import org.habla.recording.Recorder;
-import org.habla.recording.RecordingClock;
 import org.habla.recording.RecordingHeader;
 import org.habla.plugin.PluginRegistry;
 import picocli.CommandLine.Command;
@@ -83,8 +82,7 @@ public final class RunCommand implements Callable<Integer> {
             if (record != null) {
                 recorder = Recorder.create(record, header(cfg, registry, clock), clock);
             }
-            daemon = recorder == null ? Daemon.start(cfg, registry, clock)
-                    : Daemon.start(cfg, registry, new RecordingClock(clock, recorder), recorder);
+            daemon = recorder == null ? Daemon.start(cfg, registry, clock) : Daemon.start(cfg, registry, clock, recorder);
         } catch (FileAlreadyExistsException e) {
             err.println("habla run: " + record + " already exists; a recording is never overwritten");
             err.flush();

@@ -57,11 +57,15 @@ final class MethodRunner implements MethodContext {
     private AutoCloseable ticker;
     private Thread thread;
 
+    static final String TICK_PREFIX = "tick:";
+
     private final WorkCount work;
+    private final GraphTap tap;
 
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
-            WorkCount work) {
+            WorkCount work, GraphTap tap) {
         this.work = work;
+        this.tap = tap;
         this.id = id;
         this.type = type;
         this.method = method;
@@ -152,8 +156,10 @@ final class MethodRunner implements MethodContext {
         }
     }
 
-    private void requestTick() {
+    /** Asks for a tick; one already waiting takes this one's place (ticks never pile up behind a busy method). */
+    void requestTick() {
         if (tickPending.compareAndSet(false, true)) {
+            tap.periodic(TICK_PREFIX + id, clock.nowMicros());
             addTurn(() -> {
                 tickPending.set(false);
                 method.tick(clock.nowMicros());
