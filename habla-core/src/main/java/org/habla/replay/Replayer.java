@@ -8,6 +8,7 @@ import java.util.function.Consumer;
 import org.habla.config.ConfigException;
 import org.habla.config.ConfigLoader;
 import org.habla.config.HablaConfig;
+import org.habla.config.Source;
 import org.habla.daemon.Daemon;
 import org.habla.graph.GraphTap;
 import org.habla.graph.MethodGraph;
@@ -82,6 +83,15 @@ public final class Replayer {
             if (!header.interfaces().containsKey(ic.id())) {
                 throw new RecordingException("interface '" + ic.id() + "' of the config is not in the recording "
                         + "(it has " + header.interfaces().keySet() + ")");
+            }
+        }
+        for (var mc : config.methods()) {
+            for (var e : mc.inputs().entrySet()) {
+                if (e.getValue() instanceof Source.Channel ch && header.interfaces().get(ch.interfaceId()).stream()
+                        .noneMatch(c -> c.name().equals(ch.channel())) && !ch.channel().equals("link")) {
+                    throw new RecordingException("method '" + mc.id() + "' reads @" + ch.interfaceId() + "."
+                            + ch.channel() + ", which the recording does not have");
+                }
             }
         }
         return new Replayer(file, header, config, registry);
