@@ -17,7 +17,6 @@ import org.habla.daemon.PlacementRefusedException;
 import org.habla.graph.EngineClock;
 import org.habla.graph.MethodGraph;
 import org.habla.recording.Recorder;
-import org.habla.recording.RecordingClock;
 import org.habla.recording.RecordingHeader;
 import org.habla.plugin.PluginRegistry;
 import picocli.CommandLine.Command;
@@ -84,8 +83,7 @@ public final class RunCommand implements Callable<Integer> {
             if (record != null) {
                 recorder = Recorder.create(record, header(cfg, registry, clock), clock);
             }
-            daemon = recorder == null ? Daemon.start(cfg, registry, clock)
-                    : Daemon.start(cfg, registry, new RecordingClock(clock, recorder), recorder);
+            daemon = recorder == null ? Daemon.start(cfg, registry, clock) : Daemon.start(cfg, registry, clock, recorder);
         } catch (PlacementRefusedException e) {
             e.refusals().forEach(r -> err.println("habla run: " + r));
             err.println("habla run: the daemon does not start");

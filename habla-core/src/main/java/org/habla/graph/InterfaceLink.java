@@ -158,8 +158,12 @@ final class InterfaceLink {
         commandsSent.increment();
     }
 
-    /** A recorded reading, replayed: published exactly as the driver's session would have. */
+    /** A recorded reading, replayed: published exactly as the driver's session (or the link heartbeat) did. */
     void replayReading(String channel, Payload value, long sourceMicros) {
+        if (Driver.LINK_CHANNEL.name().equals(channel)) {
+            tap.reading(config.id(), channel, readings.get(channel).publish(value, sourceMicros, false));
+            return;
+        }
         sink.reading(channel, value, sourceMicros);
     }
 
@@ -168,7 +172,6 @@ final class InterfaceLink {
         if (isUp != up) {
             up = isUp;
             tap.link(config.id(), isUp, clock.nowMicros());
-            publishLink();
             for (Consumer<Boolean> l : stateListeners) {
                 l.accept(isUp);
             }
@@ -215,6 +218,10 @@ final class InterfaceLink {
     }
 
     private void publishLink() {
+        if (replayed) {
+            // A replay publishes the link records of the recording instead, as they were.
+            return;
+        }
         StringBuilder detail = new StringBuilder();
         for (ConnectionLink c : connections) {
             if (!c.up()) {
@@ -222,12 +229,10 @@ final class InterfaceLink {
                         .append(c.lastError().isEmpty() ? "" : ": " + c.lastError());
             }
         }
-        if (replayed && !up) {
-            detail.append("down in the recording");
-        }
         RecordValue value = RecordValue.builder().put("up", up).put("interface", config.id())
                 .put("detail", detail.length() == 0 ? "all connections up" : detail.toString()).build();
-        readings.get(Driver.LINK_CHANNEL.name()).publish(value, clock.nowMicros(), false);
+        tap.reading(config.id(), Driver.LINK_CHANNEL.name(),
+                readings.get(Driver.LINK_CHANNEL.name()).publish(value, clock.nowMicros(), false));
     }
 
     ObjectNode status() {

@@ -44,6 +44,7 @@ public final class MethodGraph implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(MethodGraph.class);
     private static final long STOP_WAIT_MILLIS = 2_000;
+    private static final String WATCHDOG_TASK = "watchdog";
 
     private final HablaConfig config;
     private final EngineClock clock;
@@ -87,7 +88,7 @@ public final class MethodGraph implements AutoCloseable {
         links.values().forEach(l -> l.watchdog(watchdog));
         for (MethodConfig mc : config.methods()) {
             runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc), clock, backgroundPool,
-                    work));
+                    work, tap));
         }
         for (MethodConfig mc : config.methods()) {
             if (mc.host().isPresent()) {
@@ -138,6 +139,28 @@ public final class MethodGraph implements AutoCloseable {
     /** Sets the state of an interface link of a replaying graph, as recorded. */
     public void replayLink(String interfaceId, boolean up) {
         replayedLink(interfaceId).replayLink(up);
+    }
+
+    /**
+     * Runs recorded periodic work of a replaying graph ({@link GraphTap#periodic}'s task names); false for a
+     * task this graph does not have.
+     */
+    public boolean replayPeriodic(String task) {
+        if (!replayed) {
+            throw new IllegalStateException("this graph runs live interfaces, not a recording");
+        }
+        if (task.equals(WATCHDOG_TASK)) {
+            watchdog.check();
+            return true;
+        }
+        if (task.startsWith(MethodRunner.TICK_PREFIX)) {
+            MethodRunner r = runners.get(task.substring(MethodRunner.TICK_PREFIX.length()));
+            if (r != null) {
+                r.requestTick();
+                return true;
+            }
+        }
+        return false;
     }
 
     private InterfaceLink replayedLink(String interfaceId) {
@@ -306,7 +329,10 @@ public final class MethodGraph implements AutoCloseable {
         runners.values().forEach(MethodRunner::start);
         links.values().forEach(InterfaceLink::start);
         placements.values().forEach(RemotePlacement::start);
-        watchdogTicker = clock.every(50_000, watchdog::check);
+        watchdogTicker = clock.every(50_000, () -> {
+            tap.periodic(WATCHDOG_TASK, clock.nowMicros());
+            watchdog.check();
+        });
         LOG.info("graph of '{}' started: {} methods, {} interfaces, {} sockets", config.system(), runners.size(),
                 links.size(), exposed.size());
     }

@@ -59,11 +59,15 @@ final class MethodRunner implements MethodContext {
     private RemotePlacement placement;
     private volatile boolean localStarted;
 
+    static final String TICK_PREFIX = "tick:";
+
     private final WorkCount work;
+    private final GraphTap tap;
 
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
-            WorkCount work) {
+            WorkCount work, GraphTap tap) {
         this.work = work;
+        this.tap = tap;
         this.id = id;
         this.type = type;
         this.method = method;
@@ -205,8 +209,10 @@ final class MethodRunner implements MethodContext {
         }
     }
 
-    private void requestTick() {
+    /** Asks for a tick; one already waiting takes this one's place (ticks never pile up behind a busy method). */
+    void requestTick() {
         if (tickPending.compareAndSet(false, true)) {
+            tap.periodic(TICK_PREFIX + id, clock.nowMicros());
             addTurn(() -> {
                 tickPending.set(false);
                 if (placement == null || !placement.up()) {

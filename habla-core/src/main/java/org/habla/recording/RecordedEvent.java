@@ -23,6 +23,10 @@ public sealed interface RecordedEvent {
     record ControlWrite(long t, String socket, String input, Sample sample) implements RecordedEvent {
     }
 
+    /** The last control client that wrote to a socket left (the motion watchdog stopped the robot). */
+    record WriterLeft(long t, String socket) implements RecordedEvent {
+    }
+
     /** An interface link went up or down. */
     record LinkChange(long t, String iface, boolean up) implements RecordedEvent {
     }
@@ -32,10 +36,10 @@ public sealed interface RecordedEvent {
     }
 
     /**
-     * The engine's clock ran periodic task number {@code task} (numbered in the order the graph registered
-     * them: method ticks, link heartbeats, the watchdog), so a replay runs it between the same events.
+     * Periodic work ran: {@code "watchdog"} or {@code "tick:METHOD"} (a method's tick), so a replay runs it
+     * between the same events.
      */
-    record Tick(long t, int task) implements RecordedEvent {
+    record Tick(long t, String task) implements RecordedEvent {
     }
 
     /** The recorder had to drop events (its queue was full): {@code total} since the recording began. */

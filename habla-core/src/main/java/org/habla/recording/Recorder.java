@@ -30,7 +30,7 @@ import org.slf4j.LoggerFactory;
  *   |  "value":..  or  "rateHz"/"width"/..,"bytes":N}              |    |  | (audio PCM, image data)    |
  *   +-------------------------------------------------------------+----+  +---------------------------+
  *   first record: {"type":"recording","format":"habla-recording","version":1,"config":{..},"interfaces":{..}}
- *   then:  reading | command | control | output | link | tick | dropped   ...   and on a clean close: end
+ *   then:  reading | command | control | left | output | link | tick | dropped   ...   and on a clean close: end
  * </pre>
  *
  * The engine's threads only put an event on a bounded queue ({@link #QUEUE_EVENTS} events, at most
@@ -123,6 +123,11 @@ public final class Recorder implements GraphTap, AutoCloseable {
     }
 
     @Override
+    public void writerLeft(String socket) {
+        offer(new RecordedEvent.WriterLeft(clock.nowMicros(), socket), 0);
+    }
+
+    @Override
     public void link(String interfaceId, boolean up, long micros) {
         offer(new RecordedEvent.LinkChange(micros, interfaceId, up), 0);
     }
@@ -132,8 +137,8 @@ public final class Recorder implements GraphTap, AutoCloseable {
         offer(new RecordedEvent.Output(clock.nowMicros(), methodId, output, sample), bytes(sample));
     }
 
-    /** The engine clock ran periodic task {@code task} at {@code micros} (see {@link RecordingClock}). */
-    void tick(int task, long micros) {
+    @Override
+    public void periodic(String task, long micros) {
         offer(new RecordedEvent.Tick(micros, task), 0);
     }
 

@@ -88,6 +88,7 @@ final class RecordingCodec {
             case RecordedEvent.Output o -> sample(base("output", o.t()).put("method", o.method())
                     .put("output", o.output()), o.sample());
             case RecordedEvent.LinkChange l -> Frame.of(base("link", l.t()).put("iface", l.iface()).put("up", l.up()));
+            case RecordedEvent.WriterLeft w -> Frame.of(base("left", w.t()).put("socket", w.socket()));
             case RecordedEvent.Tick k -> Frame.of(base("tick", k.t()).put("task", k.task()));
             case RecordedEvent.Dropped d -> Frame.of(base("dropped", d.t()).put("total", d.total()));
             case RecordedEvent.End x -> Frame.of(base("end", x.t()).put("written", x.written())
@@ -113,7 +114,8 @@ final class RecordingCodec {
                 case "output" -> new RecordedEvent.Output(t, text(h, "method"), text(h, "output"),
                         sample(f, text(h, "method") + "." + text(h, "output")));
                 case "link" -> new RecordedEvent.LinkChange(t, text(h, "iface"), h.path("up").asBoolean());
-                case "tick" -> new RecordedEvent.Tick(t, h.path("task").asInt());
+                case "left" -> new RecordedEvent.WriterLeft(t, text(h, "socket"));
+                case "tick" -> new RecordedEvent.Tick(t, text(h, "task"));
                 case "dropped" -> new RecordedEvent.Dropped(t, h.path("total").asLong());
                 case "end" -> new RecordedEvent.End(t, h.path("written").asLong(), h.path("dropped").asLong());
                 default -> null;

@@ -96,6 +96,16 @@ public final class OutputComparison implements GraphTap {
     }
 
     @Override
+    public void periodic(String task, long micros) {
+        next.periodic(task, micros);
+    }
+
+    @Override
+    public void writerLeft(String socket) {
+        next.writerLeft(socket);
+    }
+
+    @Override
     public void link(String interfaceId, boolean up, long micros) {
         next.link(interfaceId, up, micros);
     }

@@ -6,10 +6,9 @@ import org.habla.graph.EngineClock;
 
 /**
  * The engine's clock during a replay: it shows the recorded time and moves only when the replay moves it.
- * Periodic work (method ticks, the watchdog, link heartbeats) is numbered in the order the graph registers
- * it — the same order as in the recorded run — and runs on the replay's thread: where the recording says it
- * ran ({@link #runTask}), or, for a recording without tick records, when its period comes round
- * ({@link #advanceTo} with {@code scheduled} true).
+ * Periodic work (method ticks, the watchdog) is run by the replay where the recording says it ran; only for
+ * a recording without tick records does this clock run it itself, on the replay's thread, when its period
+ * comes round ({@link #advanceTo} with {@code scheduled} true).
  */
 final class ReplayClock implements EngineClock {
 
@@ -37,19 +36,6 @@ final class ReplayClock implements EngineClock {
                 p.cancelled = true;
             }
         };
-    }
-
-    /** Runs periodic task number {@code index} now, as the recording says it ran; false if there is none. */
-    boolean runTask(int index) {
-        Periodic p;
-        synchronized (this) {
-            if (index < 0 || index >= tasks.size() || tasks.get(index).cancelled) {
-                return false;
-            }
-            p = tasks.get(index);
-        }
-        p.task.run();
-        return true;
     }
 
     /**

@@ -8,15 +8,14 @@ import java.util.function.Consumer;
 import org.habla.config.ConfigException;
 import org.habla.config.ConfigLoader;
 import org.habla.config.HablaConfig;
+import org.habla.config.Source;
 import org.habla.daemon.Daemon;
-import org.habla.graph.EngineClock;
 import org.habla.graph.GraphTap;
 import org.habla.graph.MethodGraph;
 import org.habla.method.Input;
 import org.habla.net.ControlPoint;
 import org.habla.recording.RecordedEvent;
 import org.habla.recording.Recorder;
-import org.habla.recording.RecordingClock;
 import org.habla.recording.RecordingException;
 import org.habla.recording.RecordingHeader;
 import org.habla.recording.RecordingReader;
@@ -57,14 +56,12 @@ public final class Replayer {
     private final Path file;
     private final RecordingHeader header;
     private final HablaConfig config;
-    private final boolean configOverridden;
     private final PluginRegistry registry;
 
-    private Replayer(Path file, RecordingHeader header, HablaConfig config, boolean overridden, PluginRegistry registry) {
+    private Replayer(Path file, RecordingHeader header, HablaConfig config, PluginRegistry registry) {
         this.file = file;
         this.header = header;
         this.config = config;
-        this.configOverridden = overridden;
         this.registry = registry;
     }
 
@@ -88,7 +85,16 @@ public final class Replayer {
                         + "(it has " + header.interfaces().keySet() + ")");
             }
         }
-        return new Replayer(file, header, config, override.isPresent(), registry);
+        for (var mc : config.methods()) {
+            for (var e : mc.inputs().entrySet()) {
+                if (e.getValue() instanceof Source.Channel ch && header.interfaces().get(ch.interfaceId()).stream()
+                        .noneMatch(c -> c.name().equals(ch.channel())) && !ch.channel().equals("link")) {
+                    throw new RecordingException("method '" + mc.id() + "' reads @" + ch.interfaceId() + "."
+                            + ch.channel() + ", which the recording does not have");
+                }
+            }
+        }
+        return new Replayer(file, header, config, registry);
     }
 
     public HablaConfig config() {
@@ -107,7 +113,7 @@ public final class Replayer {
      */
     public ReplayResult run(Options options, Optional<Path> recordTo, Consumer<Daemon> onStarted)
             throws IOException, RecordingException, InterruptedException {
-        boolean recordedTicks = !configOverridden && hasTicks();
+        boolean recordedTicks = hasTicks();
         ReplayClock clock = new ReplayClock(header.startMicros());
         Recorder recorder = null;
         if (recordTo.isPresent()) {
@@ -115,8 +121,7 @@ public final class Replayer {
                     header.config(), header.configDir(), header.interfaces()), clock);
         }
         OutputComparison comparison = new OutputComparison(recorder == null ? GraphTap.NONE : recorder);
-        EngineClock engineClock = recorder == null ? clock : new RecordingClock(clock, recorder);
-        Daemon daemon = Daemon.replaying(config, registry, engineClock, comparison, header.interfaces());
+        Daemon daemon = Daemon.replaying(config, registry, clock, comparison, header.interfaces());
         try (RecordingReader reader = RecordingReader.open(file)) {
             onStarted.accept(daemon);
             Feed feed = new Feed(daemon.graph(), clock, options, recordedTicks);
@@ -201,10 +206,17 @@ public final class Replayer {
                         settle();
                     }
                 }
+                case RecordedEvent.WriterLeft w -> {
+                    if (options.controlWrites()) {
+                        advance(w.t());
+                        point(w.socket()).ifPresent(ControlPoint::writerLeft);
+                        settle();
+                    }
+                }
                 case RecordedEvent.Tick k -> {
                     if (recordedTicks) {
                         advance(k.t());
-                        if (clock.runTask(k.task())) {
+                        if (graph.replayPeriodic(k.task())) {
                             ticks++;
                         }
                         settle();
@@ -213,9 +225,12 @@ public final class Replayer {
             }
         }
 
+        private Optional<ControlPoint> point(String socket) {
+            return graph.controlPoints().stream().filter(p -> p.name().equals(socket)).findFirst();
+        }
+
         private void write(RecordedEvent.ControlWrite w) {
-            ControlPoint point = graph.controlPoints().stream().filter(p -> p.name().equals(w.socket())).findFirst()
-                    .orElse(null);
+            ControlPoint point = point(w.socket()).orElse(null);
             Input<?> input = point == null ? null : point.controlInputs().stream()
                     .filter(i -> i.name().equals(w.input())).findFirst().orElse(null);
             if (input == null) {

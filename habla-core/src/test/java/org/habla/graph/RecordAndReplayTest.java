@@ -21,7 +21,6 @@ import org.habla.plugin.PluginRegistry;
 import org.habla.recording.RecordedEvent;
 import org.habla.recording.Recorder;
 import org.habla.recording.Recording;
-import org.habla.recording.RecordingClock;
 import org.habla.recording.RecordingHeader;
 import org.habla.recording.RecordingReader;
 import org.habla.replay.ReplayResult;
@@ -99,7 +98,7 @@ class RecordAndReplayTest {
             ObjectNode json = (ObjectNode) new ObjectMapper().readTree(Files.readString(configFile));
             try (Recorder recorder = Recorder.create(file, new RecordingHeader(clock.nowMicros(), 1, json,
                     dir.toString(), MethodGraph.channels(cfg, registry)), clock);
-                    Daemon daemon = Daemon.start(cfg, registry, new RecordingClock(clock, recorder), recorder)) {
+                    Daemon daemon = Daemon.start(cfg, registry, clock, recorder)) {
                 assertThat(robot.awaitClient(5_000)).isTrue();
                 long end = System.nanoTime() + 5_000_000_000L;
                 while (!daemon.status().path("interfaces").get(0).path("up").asBoolean() && System.nanoTime() < end) {
@@ -132,7 +131,10 @@ class RecordAndReplayTest {
         Replayer replayer = Replayer.open(file, Optional.empty(), registry);
         ReplayResult result = replayer.run(Replayer.Options.AS_FAST_AS_POSSIBLE, Optional.empty(), d -> { });
 
-        assertThat(result.readings()).isEqualTo(40);
+        assertThat(recorded.events(RecordedEvent.Reading.class).stream().filter(r -> r.channel().equals("value")))
+                .hasSize(40);
+        assertThat(result.readings()).as("the robot's readings and the link's records")
+                .isEqualTo(recorded.events(RecordedEvent.Reading.class).size());
         assertThat(result.controlWrites()).isEqualTo(10);
         assertThat(result.unsettled()).isZero();
         StreamMatch values = result.stream("v.out").orElseThrow();
