@@ -17,7 +17,7 @@ import org.habla.sample.Sample;
  *
  * <pre>
  *   daemon                                              worker
- *     |  &lt;-- {"type":"hello","protocol":1,"types":["speech-recognition",...]}
+ *     |  &lt;-- {"type":"hello","protocol":"habla-worker/1","types":["speech-recognition",...]}
  *     |  --&gt; {"type":"place","method":"speech","methodType":"speech-recognition",
  *     |        "layer":"processing","params":{...}}
  *     |  &lt;-- {"type":"placed","method":"speech","inputs":["segments"],"outputs":["words"]}
@@ -34,8 +34,8 @@ import org.habla.sample.Sample;
  */
 public final class WorkerProtocol {
 
-    /** The protocol version this build speaks; a worker of another version is refused. */
-    public static final int VERSION = 1;
+    /** The protocol and version this build speaks; a worker of another version is refused. */
+    public static final String PROTOCOL = "habla-worker/1";
     /** The port {@code habla worker} listens on unless told otherwise. */
     public static final int DEFAULT_PORT = 7600;
     /** How often a worker tells the daemon it is alive. */
@@ -47,7 +47,7 @@ public final class WorkerProtocol {
     }
 
     /** What a worker says on connect: the protocol version and the method types it can run. */
-    public record Hello(int protocol, Set<String> types) {
+    public record Hello(String protocol, Set<String> types) {
 
         public Hello {
             types = Set.copyOf(types);
@@ -61,18 +61,18 @@ public final class WorkerProtocol {
             }
             JsonNode protocol = frame.header().get("protocol");
             JsonNode types = frame.header().get("types");
-            if (protocol == null || !protocol.canConvertToInt() || types == null || !types.isArray()) {
+            if (protocol == null || !protocol.isTextual() || types == null || !types.isArray()) {
                 throw FrameException.fatal("bad_hello", "a worker's hello needs \"protocol\" and \"types\"");
             }
             Set<String> names = new TreeSet<>();
             types.forEach(t -> names.add(t.asText()));
-            return new Hello(protocol.intValue(), names);
+            return new Hello(protocol.textValue(), names);
         }
 
         /** Why this worker cannot run a method of {@code type}, or null when it can. */
         public String refusal(String type) {
-            if (protocol != VERSION) {
-                return "the worker speaks protocol " + protocol + ", this daemon " + VERSION;
+            if (!protocol.equals(PROTOCOL)) {
+                return "the worker speaks " + protocol + ", this daemon " + PROTOCOL;
             }
             if (!types.contains(type)) {
                 return "the worker cannot run method type '" + type + "' (it runs: "
@@ -83,7 +83,7 @@ public final class WorkerProtocol {
     }
 
     public static ObjectNode hello(Collection<String> types) {
-        ObjectNode h = NODES.objectNode().put("type", "hello").put("protocol", VERSION).put("role", "worker");
+        ObjectNode h = NODES.objectNode().put("type", "hello").put("protocol", PROTOCOL);
         ArrayNode a = h.putArray("types");
         new TreeSet<>(types).forEach(a::add);
         return h;

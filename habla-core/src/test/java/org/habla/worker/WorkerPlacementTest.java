@@ -68,7 +68,7 @@ class WorkerPlacementTest {
             s.setSoTimeout(5_000);
             JsonNode hello = JSON.readTree(lines(s).readLine());
             assertThat(hello.path("type").asText()).isEqualTo("hello");
-            assertThat(hello.path("protocol").asInt()).isEqualTo(1);
+            assertThat(hello.path("protocol").asText()).isEqualTo("habla-worker/1");
             assertThat(hello.path("types").toString()).contains("\"scale\"", "\"audio-digest\"");
         }
     }
@@ -133,6 +133,25 @@ class WorkerPlacementTest {
                 .isInstanceOf(PlacementRefusedException.class)
                 .hasMessageContaining("method 'p' is placed on worker 127.0.0.1:" + worker.port())
                 .hasMessageContaining("cannot run method type 'scale' (it runs: audio-digest)");
+    }
+
+    @Test
+    void theDaemonRefusesAWorkerOfAnotherProtocolVersion() throws Exception {
+        try (ServerSocket fake = new ServerSocket(0, 50, java.net.InetAddress.getLoopbackAddress())) {
+            Thread.ofVirtual().start(() -> {
+                while (!fake.isClosed()) {
+                    try (Socket s = fake.accept()) {
+                        send(s, "{\"type\":\"hello\",\"protocol\":\"habla-worker/2\",\"types\":[\"scale\"]}\n");
+                    } catch (Exception e) {
+                        return;
+                    }
+                }
+            });
+            HablaConfig cfg = config(numbers("127.0.0.1:" + fake.getLocalPort(), Fallback.LOCAL));
+            assertThatThrownBy(() -> Daemon.start(cfg, WorkerTestMethods.all(), EngineClock.system()))
+                    .isInstanceOf(PlacementRefusedException.class)
+                    .hasMessageEndingWith("but the worker speaks habla-worker/2, this daemon habla-worker/1");
+        }
     }
 
     @Test
