@@ -220,11 +220,22 @@ public final class AiboSimulator implements AutoCloseable {
     /** The Aibo's teacher: commands spoken into the microphone, rewards by touch (back = pleasure, head = pain). */
     private final class Voice implements TeacherVoice {
 
+        private double lastSeconds;
+
         @Override
         public void giveCommand(String label) {
             String phrase = scene.world().teacher().phrases().get(label);
-            microphone.play(utterances.take(phrase), MicrophoneServer.samplesAt(time.nowMs()));
+            short[] take = utterances.take(phrase);
+            long now = MicrophoneServer.samplesAt(time.nowMs());
+            long start = microphone.play(take, now);
+            lastSeconds = (double) (start + take.length - now) / Microphone.RATE_HZ;
             lastPhrase = phrase;
+        }
+
+        /** Until the phrase has been said: the teacher judges the robot from then on. */
+        @Override
+        public double lastCommandSeconds() {
+            return lastSeconds;
         }
 
         @Override

@@ -5,7 +5,8 @@ import java.util.Objects;
 /**
  * The scripted teacher of the paper's experiments. While present, every {@code commandEveryS} it gives the command
  * that brings the robot towards the target (|bearing| above {@code turnThresholdRad} → {@code left}/{@code right},
- * else {@code forward}), then after {@code judgeAfterS} judges what the robot did meanwhile: +1 if the heading
+ * else {@code forward}), then {@code judgeAfterS} after the command got across (at once for a note, at the end
+ * of a spoken phrase) judges what the robot did meanwhile: +1 if the heading
  * changed the commanded way (turns) or the robot moved forward/back as commanded, −1 otherwise. Commands and
  * rewards go out through a {@link TeacherVoice}. An operator (the ground-truth server) may also make it say a
  * command or give a reward at once, present or not.
@@ -152,12 +153,13 @@ public final class Teacher {
     private void command(String label, Pose2 robot) {
         pendingLabel = label;
         pendingFrom = robot;
-        judgeAtS = nowS + settings.judgeAfterS();
         nextCommandS = nowS + settings.commandEveryS();
         lastCommand = label;
         commands++;
         episodeCommands++;
         voice.giveCommand(label);
+        // a spoken command is judged from when the phrase ends; the next one waits for that judgement
+        judgeAtS = nowS + Math.max(0, voice.lastCommandSeconds()) + settings.judgeAfterS();
     }
 
     private void reward(double value) {

@@ -10,6 +10,14 @@ public interface TeacherVoice {
     /** Gives the command {@code label} (one of {@link TeacherSettings#LABELS}) the way this robot perceives it. */
     void giveCommand(String label);
 
+    /**
+     * How many sim seconds the command just given takes to get across (a spoken phrase's length, counted from
+     * now); the teacher starts its {@code judgeAfterS} only after that. Zero for a command that is there at once.
+     */
+    default double lastCommandSeconds() {
+        return 0;
+    }
+
     /** Gives a reward in [-1, 1]: positive is pleasure, negative is pain. */
     void giveReward(double value);
 }
