@@ -77,7 +77,8 @@ final class ScenarioRunner {
                 Children.Child control = children.start("control", List.of("python3", "-u", mdb.toString(),
                         "--host", "127.0.0.1", "--command-port", "" + ports[0], "--distance-angle-port", "" + ports[1],
                         "--reward-port", "" + ports[2], "--action-port", "" + ports[3], "--seed", "" + o.seed(),
-                        "--speed", fmt(o.speed()), "--step-s", fmt(sc.stepS() / o.speed()), "--log", o.reportDir().resolve("control.jsonl").toString()),
+                        "--speed", fmt(o.speed()), "--step-s", fmt(sc.stepS() / o.speed()),
+                        "--reward-wait-s", fmt(sc.rewardWaitS() / o.speed()), "--log", o.reportDir().resolve("control.jsonl").toString()),
                         o.home(), o.reportDir().resolve("control.log"));
                 for (int e = 1; e <= o.episodes(); e++) {
                     episodes.add(episode(e, truth, List.of(sim, daemon, control)));

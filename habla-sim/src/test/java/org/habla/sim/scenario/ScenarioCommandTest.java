@@ -29,7 +29,7 @@ class ScenarioCommandTest {
         CommandLine cli = new CommandLine(new ScenarioCommand());
         cli.setOut(new PrintWriter(out, true));
         cli.setErr(new PrintWriter(err, true));
-        int port = 20_000 + 100 * (int) (ProcessHandle.current().pid() % 200);
+        int port = org.habla.sim.PortBlock.freeOffset();
         int code = cli.execute("pioneer", "--scenario", "src/test/resources/scenarios/pioneer-short.json",
                 "--home", HOME.toString(), "--report", dir.toString(), "--port-offset", "" + port, "--seed", "3");
         assertThat(code).as("exit code; out:%n%s%nerr:%n%s", out, err).isZero();
