@@ -14,7 +14,8 @@ The teacher leaves after `teacher_commands` commands (never, if None); then the 
 random place and the world notes when (in world seconds) the robot reaches it. While the teacher is
 present, a reached target is moved to a new random place, so teaching goes on.
 
-Time runs `speed` times faster than the wall clock, all of it: motion, samples, the teacher.
+Time runs `speed` times faster than the wall clock, all of it: motion, samples, the teacher. It starts
+when the first client connects to the action socket, so a controller that is slow to start misses nothing.
 
     python3 fake_world.py --seed 3 --command-port 7001   # then run mdb.py against it
 """
@@ -280,6 +281,8 @@ class FakeWorld:
 
     # -- the clock ------------------------------------------------------------------------------------
     def _run(self):
+        while self._running and not self.servers["action"].clients:
+            time.sleep(0.01)  # the world starts when a controller is there to live in it
         t0 = time.monotonic()
         next_publish = 0.0
         next_command = self.command_every_s / 2.0

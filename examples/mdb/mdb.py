@@ -374,7 +374,7 @@ class Runner:
                 command = fresh[-1].value if fresh[-1].value in COMMANDS else None
                 if command is None:
                     self.log({"event": "unknown_command", "label": fresh[-1].value})
-            elif present:
+            if command is None and present:
                 continue  # a teacher is around: act when told
             da = link.distance_angle
             if da is None or (command is None and da.number <= used_sample):
@@ -402,6 +402,9 @@ class Runner:
         rewards = link.rewards_after(rewards_mark)
         reward = rewards[-1].value if rewards else None
         da = link.distance_angle
+        if da.number <= sample_number or da.stale:
+            self.log({"event": "no_fresh_perception", "action": action})  # the daemon went away meanwhile
+            return
         after = Perception(da.distance_m, da.angle_rad, da.seen, None)
         brain.remember(Experience(before, action, after, reward))
         self.steps += 1

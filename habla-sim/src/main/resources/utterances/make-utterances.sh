@@ -21,7 +21,7 @@ well done
 no"
 
 # voice directory : espeak-ng voice
-voices="en-us-male:en-us en-us-female:en-us+f3"
+voices="en-us-male:en-us en-us-female:en-us+f2"
 
 # take : words per minute : pitch (0-99)
 takes="1:150:45 2:170:55 3:135:38 4:185:62"

@@ -13,6 +13,7 @@ import org.habla.config.ConfigException;
 import org.habla.config.ConfigLoader;
 import org.habla.config.HablaConfig;
 import org.habla.daemon.Daemon;
+import org.habla.daemon.PlacementRefusedException;
 import org.habla.graph.EngineClock;
 import org.habla.graph.MethodGraph;
 import org.habla.recording.Recorder;
@@ -83,6 +84,11 @@ public final class RunCommand implements Callable<Integer> {
                 recorder = Recorder.create(record, header(cfg, registry, clock), clock);
             }
             daemon = recorder == null ? Daemon.start(cfg, registry, clock) : Daemon.start(cfg, registry, clock, recorder);
+        } catch (PlacementRefusedException e) {
+            e.refusals().forEach(r -> err.println("habla run: " + r));
+            err.println("habla run: the daemon does not start");
+            err.flush();
+            return ExitCodes.USAGE_OR_CONFIG;
         } catch (FileAlreadyExistsException e) {
             err.println("habla run: " + record + " already exists; a recording is never overwritten");
             err.flush();

@@ -88,6 +88,23 @@ public final class StatusCommand implements Callable<Integer> {
                     m.path("handled").asLong(), m.path("handledPerS").asDouble(),
                     m.path("latency").path("p50Us").asText("-"), m.path("latency").path("p99Us").asText("-"), drops);
         }
+        boolean placed = false;
+        for (JsonNode m : st.path("methods")) {
+            JsonNode p = m.path("placement");
+            if (p.isMissingNode()) {
+                continue;
+            }
+            if (!placed) {
+                placed = true;
+                out.println();
+                out.printf(Locale.ROOT, "%-22s %-22s %-5s %-8s %9s %9s %8s  %s%n", "PLACED METHOD", "WORKER", "LINK",
+                        "FALLBACK", "SENT", "RECEIVED", "DROPS", "LAST ERROR");
+            }
+            out.printf(Locale.ROOT, "%-22s %-22s %-5s %-8s %9d %9d %8d  %s%n", m.path("id").asText(),
+                    p.path("host").asText(), p.path("up").asBoolean() ? "up" : "LOST", p.path("fallback").asText(),
+                    p.path("sent").asLong(), p.path("received").asLong(), p.path("dropped").asLong(),
+                    p.path("lastError").asText(""));
+        }
         if (st.has("sockets")) {
             out.println();
             out.printf(Locale.ROOT, "%-18s %6s %8s %10s %8s%n", "SOCKET", "PORT", "CLIENTS", "LINES OUT", "DROPS");

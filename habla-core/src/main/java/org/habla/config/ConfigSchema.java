@@ -137,7 +137,10 @@ public final class ConfigSchema {
                                 "name", ref("id").put("description", "The socket's name; defaults to the method id."),
                                 "bind", string("The address to listen on.").put("default", "127.0.0.1"))),
                 "host", string("The worker that runs the method, host:port; absent means the daemon itself.")
-                        .put("pattern", "^.+:[0-9]{1,5}$")));
+                        .put("pattern", "^.+:[0-9]{1,5}$"),
+                "fallback", string("What the daemon does while the method's worker is lost: none (its outputs are "
+                        + "stale) or local (the daemon runs it meanwhile). Only with host.")
+                        .put("default", "none").set("enum", strings("none", "local"))));
         ArrayNode cases = s.putArray("allOf");
         registry.methods().forEach((name, provider) -> {
             ArrayNode typeLayers = NODES.arrayNode();

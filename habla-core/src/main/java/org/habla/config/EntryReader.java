@@ -77,7 +77,7 @@ final class EntryReader {
         Optional<CheckedObject> read = CheckedObject.of(node, path, errors);
         if (read.isEmpty()) {
             return new MethodEntry(path, null, null, null, Set.of(), Map.of(), Map.of(), null, false, Optional.empty(),
-                    Optional.empty(), null);
+                    Optional.empty(), Fallback.NONE, null);
         }
         CheckedObject o = read.get();
         o.allowOnly(ConfigLoader.METHOD_KEYS);
@@ -138,12 +138,13 @@ final class EntryReader {
         });
         Optional<Expose> expose = o.object("expose").flatMap(e -> expose(e, id));
         Optional<String> host = o.optionalString("host").filter(h -> workerHost(h, o.path().field("host")));
+        Fallback fallback = fallback(o);
         Set<String> inputKeys = new LinkedHashSet<>();
         if (o.node().get("inputs") != null) {
             o.node().get("inputs").fieldNames().forEachRemaining(inputKeys::add);
         }
         return new MethodEntry(path, id, provider == null ? null : provider.name(), layer, inputKeys, inputs,
-                commands, params, o.has("expose"), expose, host, made);
+                commands, params, o.has("expose"), expose, host, fallback, made);
     }
 
     private String id(CheckedObject o) {
@@ -188,6 +189,23 @@ final class EntryReader {
             return Optional.empty();
         }
         return Optional.of(new Expose(socketName, bind, (int) port));
+    }
+
+    private Fallback fallback(CheckedObject o) {
+        Optional<String> text = o.optionalString("fallback");
+        if (text.isEmpty()) {
+            return Fallback.NONE;
+        }
+        if (!o.has("host")) {
+            errors.add(o.path().field("fallback"), "a fallback needs a \"host\": it says what to do while that worker is lost");
+            return Fallback.NONE;
+        }
+        try {
+            return Fallback.fromConfig(text.get());
+        } catch (IllegalArgumentException e) {
+            errors.add(o.path().field("fallback"), e.getMessage());
+            return Fallback.NONE;
+        }
     }
 
     private boolean workerHost(String text, JsonPath path) {

@@ -15,12 +15,21 @@ import org.habla.method.Layer;
  * @param params   the type's own params record, already validated
  * @param expose   the method's control socket, if it has one (virtual layer only)
  * @param host     the worker that runs it ({@code "host:port"}), if not the daemon itself
+ * @param fallback what happens while that worker is lost ({@link Fallback#NONE} for a method without host)
  */
 public record MethodConfig(String id, String type, Layer layer, Map<String, Source> inputs,
-        Map<String, ChannelRef> commands, Record params, Optional<Expose> expose, Optional<String> host) {
+        Map<String, ChannelRef> commands, Record params, Optional<Expose> expose, Optional<String> host,
+        Fallback fallback) {
 
     public MethodConfig {
         inputs = Map.copyOf(inputs);
         commands = Map.copyOf(commands);
+        java.util.Objects.requireNonNull(fallback, "fallback");
+    }
+
+    /** A method with no fallback: its outputs stay stale while a worker it is placed on is lost. */
+    public MethodConfig(String id, String type, Layer layer, Map<String, Source> inputs,
+            Map<String, ChannelRef> commands, Record params, Optional<Expose> expose, Optional<String> host) {
+        this(id, type, layer, inputs, commands, params, expose, host, Fallback.NONE);
     }
 }

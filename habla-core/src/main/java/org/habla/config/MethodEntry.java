@@ -21,11 +21,12 @@ import org.habla.method.Method;
  * @param exposeGiven whether the entry has an {@code expose} key, readable or not
  * @param expose   the socket, if the entry has a readable one
  * @param host     the worker {@code host:port}, if given and readable
+ * @param fallback what to do while the worker is lost
  * @param made     the method made by its provider to read its ports, or null
  */
 record MethodEntry(JsonPath path, String id, String type, Layer layer, Set<String> inputKeys,
         Map<String, Source> inputs, Map<String, ChannelRef> commands, Record params, boolean exposeGiven,
-        Optional<Expose> expose, Optional<String> host, Method made) {
+        Optional<Expose> expose, Optional<String> host, Fallback fallback, Method made) {
 
     /** Whether every part was read, so the entry can become a {@link MethodConfig}. */
     boolean complete() {
@@ -33,6 +34,6 @@ record MethodEntry(JsonPath path, String id, String type, Layer layer, Set<Strin
     }
 
     MethodConfig toConfig() {
-        return new MethodConfig(id, type, layer, inputs, commands, params, expose, host);
+        return new MethodConfig(id, type, layer, inputs, commands, params, expose, host, fallback);
     }
 }

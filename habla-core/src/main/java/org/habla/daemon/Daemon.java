@@ -25,6 +25,8 @@ import org.slf4j.LoggerFactory;
 public final class Daemon implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(Daemon.class);
+    /** How long a worker may take to say what it runs when the daemon starts. */
+    private static final int WORKER_CHECK_MILLIS = 2_000;
 
     private final HablaConfig config;
     private final MethodGraph graph;
@@ -41,7 +43,8 @@ public final class Daemon implements AutoCloseable {
 
     /**
      * Builds and starts everything; if a port cannot be bound, whatever was started is stopped again
-     * and the exception says which port.
+     * and the exception says which port. A worker that cannot run a method placed on it stops the start
+     * with a {@link PlacementRefusedException}.
      */
     public static Daemon start(HablaConfig config, PluginRegistry registry, EngineClock clock) throws IOException {
         return start(config, registry, clock, GraphTap.NONE);
@@ -50,6 +53,7 @@ public final class Daemon implements AutoCloseable {
     /** Builds and starts everything with a tap that sees what crosses the graph's edges (a recording). */
     public static Daemon start(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap)
             throws IOException {
+        checkPlacements(config);
         return assemble(config, MethodGraph.build(config, registry, clock, tap), clock);
     }
 
@@ -59,7 +63,16 @@ public final class Daemon implements AutoCloseable {
      */
     public static Daemon replaying(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
             Map<String, List<ChannelDescriptor>> channels) throws IOException {
+        checkPlacements(config);
         return assemble(config, MethodGraph.replaying(config, registry, clock, tap, channels), clock);
+    }
+
+    /** Asks every worker the config places methods on whether it can run them. */
+    private static void checkPlacements(HablaConfig config) throws PlacementRefusedException {
+        List<String> refusals = WorkerCheck.refusals(config, WORKER_CHECK_MILLIS);
+        if (!refusals.isEmpty()) {
+            throw new PlacementRefusedException(refusals);
+        }
     }
 
     /** Starts the control sockets and the status endpoint around a built graph, then the graph. */

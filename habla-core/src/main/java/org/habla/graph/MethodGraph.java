@@ -17,6 +17,7 @@ import org.habla.config.ChannelRef;
 import org.habla.config.HablaConfig;
 import org.habla.config.InterfaceConfig;
 import org.habla.config.MethodConfig;
+import org.habla.config.Reconnect;
 import org.habla.config.Source;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.method.Input;
@@ -51,6 +52,9 @@ public final class MethodGraph implements AutoCloseable {
     private final Map<String, MethodRunner> runners = new LinkedHashMap<>();
     private final Map<String, InterfaceLink> links = new LinkedHashMap<>();
     private final Map<String, Set<String>> upstreamInterfaces = new HashMap<>();
+    private final Map<String, RemotePlacement> placements = new LinkedHashMap<>();
+    private final Map<String, Set<String>> upstreamPlacements = new HashMap<>();
+    private final Object staleLock = new Object();
     private final List<ExposedMethod> exposed = new ArrayList<>();
     private final MotionWatchdog watchdog;
     private final long startedMicros;
@@ -87,13 +91,23 @@ public final class MethodGraph implements AutoCloseable {
                     work, tap));
         }
         for (MethodConfig mc : config.methods()) {
+            if (mc.host().isPresent()) {
+                MethodRunner runner = runners.get(mc.id());
+                RemotePlacement p = new RemotePlacement(mc, runner, config.limits(), Reconnect.DEFAULTS,
+                        () -> refreshStale("worker " + mc.host().get() + " of method " + mc.id()));
+                runner.placeOn(p);
+                placements.put(mc.id(), p);
+            }
+        }
+        for (MethodConfig mc : config.methods()) {
             wire(mc);
         }
         for (MethodConfig mc : config.methods()) {
             upstreamInterfaces.put(mc.id(), upstream(mc.id(), new LinkedHashSet<>()));
+            upstreamPlacements.put(mc.id(), upstreamPlacements(mc.id(), new LinkedHashSet<>()));
         }
         for (InterfaceLink link : links.values()) {
-            link.onStateChange(up -> linkChanged(link, up));
+            link.onStateChange(up -> refreshStale("interface " + link.id()));
         }
     }
 
@@ -147,6 +161,20 @@ public final class MethodGraph implements AutoCloseable {
             }
         }
         return false;
+    }
+
+    /**
+     * The input samples a method's state reflects so far (see {@link GraphTap#periodic}); a replay places
+     * recorded ticks by it.
+     */
+    public long handled(String methodId) {
+        MethodRunner r = runners.get(methodId);
+        return r == null ? -1 : r.consumed();
+    }
+
+    /** Whether readings of an interface can reach a method (the interface is upstream of it). */
+    public boolean reaches(String interfaceId, String methodId) {
+        return upstreamInterfaces.getOrDefault(methodId, Set.of()).contains(interfaceId);
     }
 
     private InterfaceLink replayedLink(String interfaceId) {
@@ -244,22 +272,62 @@ public final class MethodGraph implements AutoCloseable {
         return result;
     }
 
-    private void linkChanged(InterfaceLink link, boolean up) {
-        for (Map.Entry<String, Set<String>> e : upstreamInterfaces.entrySet()) {
-            if (!e.getValue().contains(link.id())) {
-                continue;
+    /** The methods placed on workers that {@code methodId} depends on, itself included. */
+    private Set<String> upstreamPlacements(String methodId, Set<String> visited) {
+        Set<String> result = new LinkedHashSet<>();
+        if (!visited.add(methodId)) {
+            return result;
+        }
+        if (placements.containsKey(methodId)) {
+            result.add(methodId);
+        }
+        for (Source s : config.method(methodId).orElseThrow().inputs().values()) {
+            if (s instanceof Source.MethodOutput mo) {
+                result.addAll(upstreamPlacements(mo.methodId(), visited));
             }
-            MethodRunner r = runners.get(e.getKey());
-            boolean stale = e.getValue().stream().anyMatch(id -> !links.get(id).up());
+        }
+        return result;
+    }
+
+    /**
+     * Marks stale every method that depends on an interface that is down or on a worker that is lost
+     * without a local fallback, and fresh again the others; {@code changed} names what just changed.
+     */
+    private void refreshStale(String changed) {
+        synchronized (staleLock) {
+            refreshStaleLocked(changed);
+        }
+    }
+
+    private void refreshStaleLocked(String changed) {
+        for (MethodRunner r : runners.values()) {
+            String why = staleness(r.id());
+            boolean stale = why != null;
             if (r.stale() != stale) {
                 r.stale(stale);
                 for (ExposedMethod x : exposed) {
                     if (x.methodId().equals(r.id())) {
-                        x.staleChanged(stale, stale ? "interface " + link.id() + " is down" : "all links up");
+                        x.staleChanged(stale, stale ? why : "all links up");
                     }
                 }
             }
         }
+    }
+
+    /** Why a method's outputs are stale now, or null. */
+    private String staleness(String methodId) {
+        for (String id : upstreamInterfaces.getOrDefault(methodId, Set.of())) {
+            if (!links.get(id).up()) {
+                return "interface " + id + " is down";
+            }
+        }
+        for (String id : upstreamPlacements.getOrDefault(methodId, Set.of())) {
+            RemotePlacement p = placements.get(id);
+            if (!p.healthy()) {
+                return "worker " + p.host() + " of method " + id + " is lost";
+            }
+        }
+        return null;
     }
 
     /** Starts every method, then every link, then the watchdog. */
@@ -269,13 +337,14 @@ public final class MethodGraph implements AutoCloseable {
         }
         started = true;
         // Until a link reports up, what depends on it is stale.
-        for (Map.Entry<String, Set<String>> e : upstreamInterfaces.entrySet()) {
-            runners.get(e.getKey()).stale(!e.getValue().isEmpty());
+        for (MethodRunner r : runners.values()) {
+            r.stale(staleness(r.id()) != null);
         }
         runners.values().forEach(MethodRunner::start);
         links.values().forEach(InterfaceLink::start);
+        placements.values().forEach(RemotePlacement::start);
         watchdogTicker = clock.every(50_000, () -> {
-            tap.periodic(WATCHDOG_TASK, clock.nowMicros());
+            tap.periodic(WATCHDOG_TASK, clock.nowMicros(), -1);
             watchdog.check();
         });
         LOG.info("graph of '{}' started: {} methods, {} interfaces, {} sockets", config.system(), runners.size(),
@@ -327,6 +396,7 @@ public final class MethodGraph implements AutoCloseable {
         started = false;
         closeQuietly(watchdogTicker);
         links.values().forEach(InterfaceLink::stopMotionNow);
+        placements.values().forEach(RemotePlacement::stop);
         runners.values().forEach(r -> r.stop(STOP_WAIT_MILLIS));
         links.values().forEach(InterfaceLink::stop);
         backgroundPool.shutdownNow();

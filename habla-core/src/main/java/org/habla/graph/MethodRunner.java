@@ -56,6 +56,8 @@ final class MethodRunner implements MethodContext {
     private volatile String readinessDetail = "";
     private AutoCloseable ticker;
     private Thread thread;
+    private RemotePlacement placement;
+    private volatile boolean localStarted;
 
     static final String TICK_PREFIX = "tick:";
 
@@ -118,14 +120,58 @@ final class MethodRunner implements MethodContext {
         return stale;
     }
 
-    /** Starts the method and its thread. */
+    /**
+     * Runs the method on a worker: from now on its input samples go to {@code remote} instead of the method
+     * object here, which runs only as the fallback while the worker is lost (if the config asks for one).
+     * Call before {@link #start}.
+     */
+    void placeOn(RemotePlacement remote) {
+        this.placement = remote;
+        if (!remote.fallsBackToLocal()) {
+            ready = false;
+            readinessDetail = "waiting for worker " + remote.host();
+        }
+    }
+
+    boolean ready() {
+        return ready;
+    }
+
+    String readinessDetail() {
+        return readinessDetail;
+    }
+
+    RemotePlacement placement() {
+        return placement;
+    }
+
+    /** Starts the method and its thread; a method placed on a worker starts here only when it must run locally. */
     void start() {
         running = true;
         thread = new Thread(this::loop, "habla-method-" + id);
         thread.setDaemon(true);
+        if (placement == null) {
+            startLocal();
+        }
+        thread.start();
+    }
+
+    /** From the placement, on any thread: the worker was lost and the fallback is to run here. */
+    void fallBackToLocal() {
+        turns.add(this::startLocal);
+        wake();
+    }
+
+    private void startLocal() {
+        if (localStarted) {
+            return;
+        }
+        localStarted = true;
+        if (placement != null) {
+            LOG.info("method {} runs in the daemon while its worker {} is lost", id, placement.host());
+        }
         method.start();
         method.tickPeriod().ifPresent(p -> ticker = clock.every(p.toNanos() / 1_000, this::requestTick));
-        thread.start();
     }
 
     /** Stops the thread, then the method. Waits at most {@code waitMillis} for the current turn. */
@@ -143,7 +189,26 @@ final class MethodRunner implements MethodContext {
                 LOG.warn("method {} is still busy after {} ms; stopping it anyway", id, waitMillis);
             }
         }
-        method.stop();
+        if (placement == null || localStarted) {
+            method.stop();
+        }
+    }
+
+    /**
+     * The input samples the method's state reflects so far: every sample that arrived up to the last one it
+     * took, on every input (a {@code latest} input's skipped samples count, as the newer one replaced them).
+     */
+    long consumed() {
+        long n = 0;
+        for (InputSlot slot : slots) {
+            n += slot.consumedThrough();
+        }
+        return n;
+    }
+
+    /** A sample the method published on its worker, published here as if the method had emitted it. */
+    void publishFromWorker(Output<?> output, Payload value, long sourceMicros) {
+        emit(output, value, sourceMicros);
     }
 
     private void closeTicker() {
@@ -159,10 +224,12 @@ final class MethodRunner implements MethodContext {
     /** Asks for a tick; one already waiting takes this one's place (ticks never pile up behind a busy method). */
     void requestTick() {
         if (tickPending.compareAndSet(false, true)) {
-            tap.periodic(TICK_PREFIX + id, clock.nowMicros());
             addTurn(() -> {
                 tickPending.set(false);
-                method.tick(clock.nowMicros());
+                tap.periodic(TICK_PREFIX + id, clock.nowMicros(), consumed());
+                if (placement == null || !placement.up()) {
+                    method.tick(clock.nowMicros());
+                }
             });
             wake();
         }
@@ -202,7 +269,7 @@ final class MethodRunner implements MethodContext {
                 latency.record(now - s.sourceMicros());
                 handled.mark(now);
                 try {
-                    method.deliver(slot.input(), s);
+                    route(slot.input(), s);
                 } finally {
                     work.end();
                 }
@@ -221,6 +288,21 @@ final class MethodRunner implements MethodContext {
             }
         }
         return worked;
+    }
+
+    /** Hands a sample to the worker while it is up, else to the local method if it runs, else drops it. */
+    private void route(Input<?> input, Sample s) {
+        RemotePlacement remote = placement;
+        if (remote == null) {
+            method.deliver(input, s);
+        } else if (remote.up()) {
+            remote.forward(input, s);
+        } else if (remote.fallsBackToLocal()) {
+            startLocal();
+            method.deliver(input, s);
+        } else {
+            remote.dropWhileLost();
+        }
     }
 
     // ------------------------------------------------------------------ MethodContext
@@ -300,6 +382,9 @@ final class MethodRunner implements MethodContext {
             n.put("readiness", readinessDetail);
         }
         n.put("stale", stale);
+        if (placement != null) {
+            n.set("placement", placement.status());
+        }
         n.put("handled", handled.total());
         n.put("handledPerS", handled.perSecond(nowMicros));
         n.set("latency", latency.snapshot());

@@ -77,6 +77,8 @@ class BrokenConfigTest {
         layer-rule-sensors-to-virtual     | $.methods[1].inputs.in          | 'sonar.ranges' breaks the layer rule: a method exchanges data only with methods of its own layer or a neighbouring layer
         exposed-without-output-or-control | $.methods[3].expose             | an exposed method needs an output or a 'control' input, and 'sink' has neither
         host-without-port                 | $.methods[1].host               | 'worker1' names no port: write host:port
+        fallback-without-host             | $.methods[1].fallback           | a fallback needs a "host": it says what to do while that worker is lost
+        fallback-unknown                  | $.methods[1].fallback           | 'remote' is not a fallback (write none or local)
         expose-port-missing               | $.methods[0].expose.port        | required key 'port' is missing
         source-without-dot                | $.methods[1].inputs.ranges      | 'sonar' has no '.': write "methodId.output", "@interfaceId.channel" or "control"
         control-without-expose            | $.methods[0].inputs.action      | 'control' needs a control socket: give the method an 'expose'

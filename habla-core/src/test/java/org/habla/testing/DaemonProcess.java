@@ -26,7 +26,15 @@ public final class DaemonProcess implements AutoCloseable {
 
     /** Starts {@code habla args...}; output (stdout and stderr) goes to {@code log}. */
     public static DaemonProcess start(Path log, String... args) throws IOException {
-        List<String> cmd = new ArrayList<>();
+        return startWrapped(List.of(), log, args);
+    }
+
+    /**
+     * Starts {@code habla args...} under a wrapper command, e.g. {@code ip netns exec NAME} to run it in a
+     * network namespace; output goes to {@code log}.
+     */
+    public static DaemonProcess startWrapped(List<String> wrapper, Path log, String... args) throws IOException {
+        List<String> cmd = new ArrayList<>(wrapper);
         cmd.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         cmd.add("-Xmx512m");
         cmd.add("-cp");
@@ -39,10 +47,15 @@ public final class DaemonProcess implements AutoCloseable {
 
     /** Waits until a TCP port on loopback accepts connections; false after {@code millis}. */
     public static boolean awaitPort(int port, long millis) throws InterruptedException {
+        return awaitPort("127.0.0.1", port, millis);
+    }
+
+    /** Waits until {@code host:port} accepts connections; false after {@code millis}. */
+    public static boolean awaitPort(String host, int port, long millis) throws InterruptedException {
         long end = System.nanoTime() + millis * 1_000_000;
         while (System.nanoTime() < end) {
             try (Socket s = new Socket()) {
-                s.connect(new InetSocketAddress("127.0.0.1", port), 200);
+                s.connect(new InetSocketAddress(host, port), 200);
                 return true;
             } catch (IOException e) {
                 Thread.sleep(50);

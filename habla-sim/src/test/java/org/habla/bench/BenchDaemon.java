@@ -21,6 +21,11 @@ final class BenchDaemon {
     }
 
     static Daemon start(int robotPort) throws IOException, ConfigException {
+        return start(robotPort, null);
+    }
+
+    /** The same, with the processing method placed on the worker {@code host} ({@code host:port}) if not null. */
+    static Daemon start(int robotPort, String host) throws IOException, ConfigException {
         int port = DaemonProcess.freePorts(1)[0];
         String relay = "\"params\": {\"kind\": \"number\", \"delivery\": \"queue\", \"capacity\": 4096}";
         String json = """
@@ -29,11 +34,12 @@ final class BenchDaemon {
                                  "params": {"channels": %s}}],
                  "methods": [
                    {"id": "s", "type": "channel", "layer": "sensors_actuators", "inputs": {"in": "@robot.value"}, %s},
-                   {"id": "p", "type": "pass-through", "layer": "processing", "inputs": {"in": "s.out"}, %s},
+                   {"id": "p", "type": "pass-through", "layer": "processing", "inputs": {"in": "s.out"}, %s%s},
                    {"id": "v", "type": "pass-through", "layer": "virtual", "inputs": {"in": "p.out"}, %s,
                     "expose": {"port": %d, "name": "value"}}
                  ]}
-                """.formatted(robotPort, BenchRobot.CHANNELS_JSON, relay, relay, relay, port);
+                """.formatted(robotPort, BenchRobot.CHANNELS_JSON, relay, relay,
+                        host == null ? "" : ", \"host\": \"" + host + "\"", relay, port);
         PluginRegistry registry = PluginRegistry.discover();
         HablaConfig config = new ConfigLoader(registry).parse(json);
         return Daemon.start(config, registry, EngineClock.system());

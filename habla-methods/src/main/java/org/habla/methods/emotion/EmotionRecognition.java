@@ -29,8 +29,10 @@ import org.habla.sample.TextValue;
  *       values of the listed words and phrases found in it (longest phrase first, whole words only;
  *       0 when none). The voice comes from input {@code features} (audio features per frame
  *       {@code {"rms","db","pitchHz","voiced"}}): the mean level and pitch of the voiced frames of the
- *       last {@code utteranceWindowMs} are compared with a running baseline (the first utterance sets
- *       it; each one then moves it by {@code baselineWeight}): loud = (level − baseline) / loudRangeDb
+ *       last {@code utteranceWindowMs} are compared with a running baseline of the speaker (the
+ *       first utterance sets it; each one then moves it by {@code baselineWeight}; with
+ *       {@code voices} above 1, an utterance more than {@code voiceSplitOctaves} in pitch from every
+ *       baseline starts a baseline of its own, so two teachers are each measured against themselves): loud = (level − baseline) / loudRangeDb
  *       and high = log2(pitch / baseline pitch) / pitchRangeOctaves, each within [−1, 1], and arousal
  *       = 0.5 + 0.3·loud + 0.2·high. Intensity is the utterance's level in dB.</li>
  *   <li><b>touch</b> (input {@code touch}, a button name): valence from {@code touchValence};
@@ -59,8 +61,22 @@ public final class EmotionRecognition extends VirtualMethod {
             Shape.record("the teacher's attitude at each word, touch or reward",
                     "emotion", "valence", "arousal", "words", "intensity", "source"));
     private final ArrayDeque<Frame> frames = new ArrayDeque<>();
-    private Double baselineDb;
-    private Double baselinePitchHz;
+    /** A speaker's usual level and pitch, moved by each of their utterances. */
+    private static final class Baseline {
+        double db;
+        double pitchHz;
+
+        Baseline(double db, double pitchHz) {
+            this.db = db;
+            this.pitchHz = pitchHz;
+        }
+
+        double octavesTo(double hz) {
+            return Math.abs(Math.log(hz / pitchHz) / Math.log(2));
+        }
+    }
+
+    private final List<Baseline> baselines = new ArrayList<>();
     private long lastWordsMicros = Long.MIN_VALUE;
     private long ignored;
 
@@ -116,14 +132,11 @@ public final class EmotionRecognition extends VirtualMethod {
             double db = sumDb / n;
             double pitch = Math.exp(sumLogPitch / n);
             intensity = db;
-            if (baselineDb == null) {
-                baselineDb = db;
-                baselinePitchHz = pitch;
-            }
-            loud = clamp((db - baselineDb) / params.loudRangeDb(), -1, 1);
-            high = clamp(Math.log(pitch / baselinePitchHz) / Math.log(2) / params.pitchRangeOctaves(), -1, 1);
-            baselineDb += params.baselineWeight() * (db - baselineDb);
-            baselinePitchHz *= Math.exp(params.baselineWeight() * Math.log(pitch / baselinePitchHz));
+            Baseline base = baselineFor(db, pitch);
+            loud = clamp((db - base.db) / params.loudRangeDb(), -1, 1);
+            high = clamp(Math.log(pitch / base.pitchHz) / Math.log(2) / params.pitchRangeOctaves(), -1, 1);
+            base.db += params.baselineWeight() * (db - base.db);
+            base.pitchHz *= Math.exp(params.baselineWeight() * Math.log(pitch / base.pitchHz));
         }
         double arousal = clamp(0.5 + 0.3 * loud + 0.2 * high, 0, 1);
         report(valence, arousal, text, intensity, "words");
@@ -173,6 +186,25 @@ public final class EmotionRecognition extends VirtualMethod {
         return found == 0 ? 0 : clamp(sum / found, -1, 1);
     }
 
+    /**
+     * The baseline of the speaker an utterance sounds like: the one nearest in pitch, or a new one (set
+     * to the utterance) when every one is more than {@code voiceSplitOctaves} away and there are fewer
+     * than {@code voices}.
+     */
+    private Baseline baselineFor(double db, double pitchHz) {
+        Baseline nearest = null;
+        for (Baseline b : baselines) {
+            if (nearest == null || b.octavesTo(pitchHz) < nearest.octavesTo(pitchHz)) {
+                nearest = b;
+            }
+        }
+        if (nearest == null || (nearest.octavesTo(pitchHz) > params.voiceSplitOctaves() && baselines.size() < params.voices())) {
+            nearest = new Baseline(db, pitchHz);
+            baselines.add(nearest);
+        }
+        return nearest;
+    }
+
     private double currentDb() {
         return frames.isEmpty() ? SILENCE_DB : frames.peekLast().db();
     }
@@ -202,9 +234,14 @@ public final class EmotionRecognition extends VirtualMethod {
         return ignored;
     }
 
-    /** The running baseline level, or null before the first utterance. */
+    /** The running baseline level of the first voice heard, or null before the first utterance. */
     public Double baselineDb() {
-        return baselineDb;
+        return baselines.isEmpty() ? null : baselines.get(0).db;
+    }
+
+    /** How many voices have a baseline so far. */
+    public int voicesHeard() {
+        return baselines.size();
     }
 
     /** Makes {@code emotion-recognition} methods. */

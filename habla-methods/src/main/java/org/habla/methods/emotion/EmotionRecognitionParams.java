@@ -19,6 +19,11 @@ public record EmotionRecognitionParams(
         Integer utteranceWindowMs,
         @Param(value = "Share of each utterance's level and pitch that moves the running baseline", defaultValue = "0.2")
         Double baselineWeight,
+        @Param(value = "How many speakers get a baseline of their own, told apart by pitch", defaultValue = "1")
+        Integer voices,
+        @Param(value = "An utterance this far in pitch from every baseline starts a new one (while fewer than voices)",
+                unit = "octaves", defaultValue = "0.35")
+        Double voiceSplitOctaves,
         @Param(value = "Level above the baseline that counts as fully loud", unit = "dB", defaultValue = "12")
         Double loudRangeDb,
         @Param(value = "Pitch rise above the baseline that counts as fully high", unit = "octaves", defaultValue = "0.5")
@@ -36,6 +41,8 @@ public record EmotionRecognitionParams(
                 "chin", 0.5, "headTouch", -1.0) : touchValence, "touchValence");
         utteranceWindowMs = ParamRules.within("utteranceWindowMs", utteranceWindowMs, 3000, 100, 60_000);
         baselineWeight = ParamRules.within("baselineWeight", baselineWeight, 0.2, 0, 1);
+        voices = ParamRules.within("voices", voices, 1, 1, 8);
+        voiceSplitOctaves = ParamRules.within("voiceSplitOctaves", voiceSplitOctaves, 0.35, 0.05, 4);
         loudRangeDb = ParamRules.within("loudRangeDb", loudRangeDb, 12, 0.1, 100);
         pitchRangeOctaves = ParamRules.within("pitchRangeOctaves", pitchRangeOctaves, 0.5, 0.01, 4);
         positiveValence = ParamRules.within("positiveValence", positiveValence, 0.3, 0, 1);
@@ -45,7 +52,7 @@ public record EmotionRecognitionParams(
 
     /** Every parameter at its default. */
     public static EmotionRecognitionParams defaults() {
-        return new EmotionRecognitionParams(null, null, null, null, null, null, null, null, null);
+        return new EmotionRecognitionParams(null, null, null, null, null, null, null, null, null, null, null);
     }
 
     private static Map<String, Double> lowerCased(Map<String, Double> in, String name) {

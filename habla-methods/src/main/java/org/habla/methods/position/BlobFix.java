@@ -16,8 +16,9 @@ import org.habla.methods.gaze.HeadPose;
  *       is too small or cut by the image border to measure its size.</li>
  * </ul>
  *
- * The camera turns about the head's pan axis (at {@code cameraXM} ahead of the origin, at the camera's
- * height) by the pan and pitches by tilt + nod, as if both joints turned about the lens.
+ * The head pans about a vertical axis {@code cameraXM} ahead of the robot's origin; the lens sits
+ * {@code lensForwardM} ahead of that axis in the pan direction, at the camera's height, and pitches by
+ * tilt + nod (as if both joints turned about the lens).
  */
 public final class BlobFix {
 
@@ -28,13 +29,21 @@ public final class BlobFix {
     private final CameraModel camera;
     private final double radiusM;
     private final double cameraXM;
+    private final double lensForwardM;
     private final double minRadiusPx;
 
-    public BlobFix(CameraModel camera, double radiusM, double cameraXM, double minRadiusPx) {
+    public BlobFix(CameraModel camera, double radiusM, double cameraXM, double lensForwardM, double minRadiusPx) {
         this.camera = camera;
         this.radiusM = radiusM;
         this.cameraXM = cameraXM;
+        this.lensForwardM = lensForwardM;
         this.minRadiusPx = minRadiusPx;
+    }
+
+    /** Where the lens is in the robot frame with the head at {@code head}: {x, y, z}. */
+    public double[] lens(HeadPose head) {
+        return new double[] {cameraXM + lensForwardM * Math.cos(head.panRad()), lensForwardM * Math.sin(head.panRad()),
+            camera.heightM()};
     }
 
     /**
@@ -46,7 +55,7 @@ public final class BlobFix {
         double[] dir = toRobot(camera.ray(cx, cy), head);
         double norm = Math.sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
         double[] unit = {dir[0] / norm, dir[1] / norm, dir[2] / norm};
-        double[] origin = {cameraXM, 0, camera.heightM()};
+        double[] origin = lens(head);
         Double groundRange = null;
         double[] ground = null;
         if (unit[2] < -1e-3) {

@@ -10,14 +10,15 @@ import org.habla.method.builtin.SimpleMethodProvider;
 import org.habla.methods.geometry.CameraModel;
 import org.habla.methods.geometry.PlanarPose;
 import org.habla.methods.gaze.HeadPose;
+import org.habla.methods.gaze.PoseHistory;
 import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
 
 /**
  * The coordinate translation method, type {@code coordinate-translation}: it turns what a sensor saw
  * into the {@code position} of the target in the robot frame, {@code {"xM","yM","distanceM","angleRad","seen"}}
- * (x forward, y left, angle positive to the left, distance from the robot's origin to the target's
- * near surface). What it works from depends on which inputs the config wires:
+ * (x forward, y left, angle positive to the left; for a blob, distance from the edge of the robot's
+ * body, {@code bodyRadiusM} around its origin, to the target's near surface). What it works from depends on which inputs the config wires:
  *
  * <ul>
  *   <li>{@code nearest}: a {@code nearest} record of a range sensor, already in the robot frame: it is
@@ -25,7 +26,8 @@ import org.habla.sample.Sample;
  *   <li>{@code blobs} (with {@code head} and {@code camera}): the image segmentation's blobs; the
  *       largest blob of the {@code label} is located by {@link BlobFix} from its size (a ball of
  *       {@code targetRadiusM}) or from where its ray meets the floor, through the head's pan, tilt and
- *       nod and the camera's geometry. With no such blob the record says {@code seen: false} and keeps
+ *       nod (as they were when the image was taken, matched by the readings' times) and the camera's
+ *       geometry. With no such blob the record says {@code seen: false} and keeps
  *       the last sighting.</li>
  *   <li>{@code odometry} (optional, a pose record {@code xM, yM, thetaRad}): adds the world-frame
  *       {@code xWorldM}, {@code yWorldM} of the target.</li>
@@ -39,7 +41,7 @@ public final class CoordinateTranslation extends ProcessingMethod {
                     "xM", "yM", "distanceM", "angleRad", "seen"));
 
     private CameraModel camera;
-    private HeadPose head = HeadPose.STRAIGHT;
+    private final PoseHistory heads = new PoseHistory();
     private PlanarPose odometry;
     private double lastX;
     private double lastY;
@@ -77,7 +79,7 @@ public final class CoordinateTranslation extends ProcessingMethod {
     }
 
     private void onHead(RecordValue record, Sample sample) {
-        HeadPose.fromRecord(record).ifPresentOrElse(p -> head = p, () -> rejected++);
+        HeadPose.fromRecord(record).ifPresentOrElse(p -> heads.add(sample.sourceMicros(), p), () -> rejected++);
     }
 
     private void onOdometry(RecordValue record, Sample sample) {
@@ -116,15 +118,23 @@ public final class CoordinateTranslation extends ProcessingMethod {
             emitPosition(false, null);
             return;
         }
-        BlobFix fix = new BlobFix(cam, params.targetRadiusM(), params.cameraXM(), params.minRadiusPx());
+        BlobFix fix = new BlobFix(cam, params.targetRadiusM(), params.cameraXM(), params.lensForwardM(),
+                params.minRadiusPx());
         BlobFix.Fix found = fix.locate(num(blob, "cx"), num(blob, "cy"), num(blob, "x"), num(blob, "y"),
-                num(blob, "w"), num(blob, "h"), head).orElse(null);
+                num(blob, "w"), num(blob, "h"), headAt(sample.sourceMicros())).orElse(null);
         if (found == null) {
             emitPosition(false, null);
             return;
         }
-        remember(found.xM(), found.yM(), Math.max(0, Math.hypot(found.xM(), found.yM()) - params.targetRadiusM()));
+        remember(found.xM(), found.yM(),
+                Math.max(0, Math.hypot(found.xM(), found.yM()) - params.targetRadiusM() - params.bodyRadiusM()));
         emitPosition(true, found);
+    }
+
+    /** Where the head pointed when the image was taken (its reading time), straight ahead if unknown. */
+    private HeadPose headAt(long imageMicros) {
+        HeadPose p = heads.at(imageMicros);
+        return p == null ? HeadPose.STRAIGHT : p;
     }
 
     /** The camera with this image's size, from the blobs record's width and height. */

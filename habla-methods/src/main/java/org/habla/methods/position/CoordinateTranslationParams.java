@@ -21,6 +21,12 @@ public record CoordinateTranslationParams(
         Double cameraHeightM,
         @Param(value = "How far ahead of the robot's origin the camera's pan axis sits", unit = "m", defaultValue = "0")
         Double cameraXM,
+        @Param(value = "How far ahead of the pan axis the lens sits, along the pan direction", unit = "m",
+                defaultValue = "0")
+        Double lensForwardM,
+        @Param(value = "Radius of the robot's body: distanceM is measured from the body's edge", unit = "m",
+                defaultValue = "0")
+        Double bodyRadiusM,
         @Param(value = "Below this apparent radius the size estimate gives way to the ground-plane one", unit = "px",
                 defaultValue = "1.5")
         Double minRadiusPx) {
@@ -32,11 +38,13 @@ public record CoordinateTranslationParams(
         vfovRad = vfovRad == null ? null : ParamRules.within("vfovRad", vfovRad, 1, 0.01, 3.1);
         cameraHeightM = cameraHeightM == null ? null : ParamRules.nonNegative("cameraHeightM", cameraHeightM, 0);
         cameraXM = ParamRules.within("cameraXM", cameraXM, 0, -10, 10);
+        lensForwardM = ParamRules.within("lensForwardM", lensForwardM, 0, -10, 10);
+        bodyRadiusM = ParamRules.within("bodyRadiusM", bodyRadiusM, 0, 0, 10);
         minRadiusPx = ParamRules.nonNegative("minRadiusPx", minRadiusPx, 1.5);
     }
 
     /** Every parameter at its default. */
     public static CoordinateTranslationParams defaults() {
-        return new CoordinateTranslationParams(null, null, null, null, null, null, null);
+        return new CoordinateTranslationParams(null, null, null, null, null, null, null, null, null);
     }
 }

@@ -1,5 +1,6 @@
 package org.habla.methods.sensors;
 
+import org.habla.driver.ChannelDescriptor;
 import org.habla.method.Delivery;
 import org.habla.method.Layer;
 import org.habla.method.Output;
@@ -14,7 +15,9 @@ import org.habla.sample.VectorValue;
  * The general legs method, type {@code legs}: it sends walk commands to a legged robot. Input
  * {@code walk} takes the vector {@code [forwardMps, strafeMps, rotateRadps]} (or {@code [forwardMps,
  * rotateRadps]}); output {@code walk}, listed under the config's {@code commands}, carries it to the
- * interface's walk channel with each component clamped to its limit. A command that is not such a
+ * interface's walk channel with each component clamped to its limit: from params, else from the walk
+ * channel's metadata ({@code maxForwardMps}, {@code maxReverseMps}, {@code maxStrafeMps},
+ * {@code maxRotateRadps}), else a Sony ERS-7's. A command that is not such a
  * vector (a wrong length, a NaN) stops the robot rather than being guessed at, and when the method stops
  * it sends a last zero command so the robot never walks on unattended.
  */
@@ -22,15 +25,26 @@ public final class Legs extends SensorActuatorMethod {
 
     private static final VectorValue HALT = VectorValue.of(0, 0, 0);
 
-    private final WalkLimits limits;
+    private final LegsParams params;
+    private WalkLimits limits;
     private final Output<VectorValue> walk = output("walk", VectorValue.class,
             Shape.vector("m/s, rad/s", "[forwardMps, strafeMps, rotateRadps] within the walk limits"));
     private long rejected;
     private boolean sentAny;
 
     Legs(LegsParams params) {
-        this.limits = params.limits();
+        this.params = params;
         input("walk", VectorValue.class, Delivery.queue(params.queue()), this::onWalk);
+    }
+
+    @Override
+    protected void onStart() {
+        limits = params.limits(commandChannelOf(walk).map(ChannelDescriptor::metadata).orElse(null));
+    }
+
+    /** The limits in force (after start). */
+    public WalkLimits limits() {
+        return limits;
     }
 
     private void onWalk(VectorValue value, Sample sample) {

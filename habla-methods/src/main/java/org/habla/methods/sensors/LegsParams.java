@@ -1,26 +1,27 @@
 package org.habla.methods.sensors;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import org.habla.methods.ParamRules;
 import org.habla.methods.locomotion.WalkLimits;
 import org.habla.plugin.Param;
 
 /**
- * The params of the {@code legs} method: the walk limits commands are clamped to. Set them to the
- * robot's, as its walk channel's metadata states them ({@code maxForwardMps}, …); the defaults are
- * those of the Tekkotsu driver's defaults.
+ * The params of the {@code legs} method: the walk limits commands are clamped to. Each one left out
+ * comes from the metadata of the walk channel the output writes ({@code maxForwardMps}, …), else from
+ * the defaults (a Sony ERS-7's walk as the {@code tekkotsu} driver states it).
  */
 public record LegsParams(
-        @Param(value = "Fastest forward walk", unit = "m/s", defaultValue = "0.18") Double maxForwardMps,
-        @Param(value = "Fastest backward walk", unit = "m/s", defaultValue = "0.18") Double maxReverseMps,
-        @Param(value = "Fastest sideways walk", unit = "m/s", defaultValue = "0.14") Double maxStrafeMps,
-        @Param(value = "Fastest turn", unit = "rad/s", defaultValue = "1.8") Double maxRotateRadps,
+        @Param(value = "Fastest forward walk", unit = "m/s", defaultValue = "channel metadata, else 0.18") Double maxForwardMps,
+        @Param(value = "Fastest backward walk", unit = "m/s", defaultValue = "channel metadata, else 0.18") Double maxReverseMps,
+        @Param(value = "Fastest sideways walk", unit = "m/s", defaultValue = "channel metadata, else 0.14") Double maxStrafeMps,
+        @Param(value = "Fastest turn", unit = "rad/s", defaultValue = "channel metadata, else 1.8") Double maxRotateRadps,
         @Param(value = "Queue length of the walk input, in commands", defaultValue = "8") Integer queue) {
 
     public LegsParams {
-        maxForwardMps = ParamRules.within("maxForwardMps", maxForwardMps, 0.18, 0, 10);
-        maxReverseMps = ParamRules.within("maxReverseMps", maxReverseMps, 0.18, 0, 10);
-        maxStrafeMps = ParamRules.within("maxStrafeMps", maxStrafeMps, 0.14, 0, 10);
-        maxRotateRadps = ParamRules.within("maxRotateRadps", maxRotateRadps, 1.8, 0, 20);
+        maxForwardMps = maxForwardMps == null ? null : ParamRules.within("maxForwardMps", maxForwardMps, 0, 0, 10);
+        maxReverseMps = maxReverseMps == null ? null : ParamRules.within("maxReverseMps", maxReverseMps, 0, 0, 10);
+        maxStrafeMps = maxStrafeMps == null ? null : ParamRules.within("maxStrafeMps", maxStrafeMps, 0, 0, 10);
+        maxRotateRadps = maxRotateRadps == null ? null : ParamRules.within("maxRotateRadps", maxRotateRadps, 0, 0, 20);
         queue = ParamRules.within("queue", queue, 8, 1, 1024);
     }
 
@@ -29,7 +30,19 @@ public record LegsParams(
         return new LegsParams(null, null, null, null, null);
     }
 
-    public WalkLimits limits() {
-        return new WalkLimits(maxForwardMps, maxReverseMps, maxStrafeMps, maxRotateRadps);
+    /** The limits: each from these params, else from the walk channel's {@code metadata} (may be null), else the default. */
+    public WalkLimits limits(JsonNode metadata) {
+        return new WalkLimits(pick(maxForwardMps, metadata, "maxForwardMps", 0.18),
+                pick(maxReverseMps, metadata, "maxReverseMps", 0.18),
+                pick(maxStrafeMps, metadata, "maxStrafeMps", 0.14),
+                pick(maxRotateRadps, metadata, "maxRotateRadps", 1.8));
+    }
+
+    private static double pick(Double given, JsonNode metadata, String field, double fallback) {
+        if (given != null) {
+            return given;
+        }
+        JsonNode n = metadata == null ? null : metadata.get(field);
+        return n != null && n.isNumber() && n.doubleValue() >= 0 && Double.isFinite(n.doubleValue()) ? n.doubleValue() : fallback;
     }
 }

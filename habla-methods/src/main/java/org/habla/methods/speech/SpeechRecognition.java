@@ -25,7 +25,9 @@ import org.habla.sample.TextValue;
  * the 16 kHz mono Sphinx's model needs). Each recognised phrase of the grammar comes out on
  * {@code words} as text and on {@code result} as a record ({@code phrase}, {@code timeMs} the
  * decoding time, {@code audioMs} the utterance's length, {@code score} Sphinx's log score of the
- * best path — not a confidence). An utterance Sphinx hears nothing of the grammar in gives nothing.
+ * best path — not a confidence). An utterance Sphinx hears nothing of the grammar in gives nothing,
+ * and so does one without {@code minVoicedMs} of voice in it (noise, a bang, a whistled note), which
+ * is not even decoded: bound to a grammar, Sphinx would name a phrase for almost any sound.
  *
  * <p>The model loads in the background when the method starts (a few seconds; readiness is
  * "loading model" until then) and each utterance is decoded in the background, one at a time, so the
@@ -49,11 +51,13 @@ public final class SpeechRecognition extends ProcessingMethod {
     private final Output<RecordValue> result = output("result", RecordValue.class,
             Shape.record("the recognised phrase with its decoding time", "phrase", "timeMs", "audioMs", "score"));
     private final ArrayDeque<Pending> pending = new ArrayDeque<>();
+    private final VoiceCheck voice;
 
     private SphinxDecoder decoder;
     private boolean busy;
     private long dropped;
     private long recognised;
+    private long unvoiced;
     private AudioFormat streamFormat;
     private UtteranceGate gate;
     private double[] frame = new double[0];
@@ -61,6 +65,7 @@ public final class SpeechRecognition extends ProcessingMethod {
 
     SpeechRecognition(SpeechRecognitionParams params) {
         this.params = params;
+        this.voice = new VoiceCheck(params.minVoicedMs());
         optionalInput("segments", AudioChunk.class, Delivery.queue(params.queue()), this::onSegment);
         optionalInput("audio", AudioChunk.class, Delivery.queue(params.queue()), this::onAudio);
     }
@@ -80,7 +85,7 @@ public final class SpeechRecognition extends ProcessingMethod {
 
     private void onSegment(AudioChunk chunk, Sample sample) {
         double[] mono = MonoAudio.resample(MonoAudio.mix(chunk), chunk.format().sampleRateHz(), SPHINX_RATE_HZ);
-        enqueue(MonoAudio.chunk(mono, SPHINX_RATE_HZ), sample.sourceMicros());
+        enqueue(mono, sample.sourceMicros());
     }
 
     private void onAudio(AudioChunk chunk, Sample sample) {
@@ -105,16 +110,22 @@ public final class SpeechRecognition extends ProcessingMethod {
                 Optional<double[]> utterance = gate.offer(full, MonoAudio.dbfs(MonoAudio.rms(full)));
                 if (utterance.isPresent()) {
                     double[] mono16 = MonoAudio.resample(utterance.get(), streamFormat.sampleRateHz(), SPHINX_RATE_HZ);
-                    enqueue(MonoAudio.chunk(mono16, SPHINX_RATE_HZ), sample.sourceMicros());
+                    enqueue(mono16, sample.sourceMicros());
                 }
             }
         }
     }
 
-    private void enqueue(AudioChunk utterance, long sourceMicros) {
-        if (utterance.frameCount() < SPHINX_RATE_HZ * MIN_UTTERANCE_MS / 1000) {
+    private void enqueue(double[] mono16k, long sourceMicros) {
+        if (mono16k.length < SPHINX_RATE_HZ * MIN_UTTERANCE_MS / 1000) {
             return;
         }
+        if (!voice.hasVoice(mono16k, SPHINX_RATE_HZ)) {
+            unvoiced++;
+            log().debug("{}: an utterance without a voice in it is not decoded ({} so far)", id(), unvoiced);
+            return;
+        }
+        AudioChunk utterance = MonoAudio.chunk(mono16k, SPHINX_RATE_HZ);
         pending.addLast(new Pending(utterance, sourceMicros));
         while (pending.size() > params.maxPending()) {
             pending.removeFirst();
@@ -132,11 +143,25 @@ public final class SpeechRecognition extends ProcessingMethod {
         busy = true;
         Pending next = pending.removeFirst();
         SphinxDecoder d = decoder;
-        background("recognise an utterance", () -> d.decode(next.audio()), decoded -> {
+        background("recognise an utterance", () -> decodeOrSkip(d, next.audio()), decoded -> {
             busy = false;
             decoded.ifPresent(r -> publish(r, next));
             decodeNext();
         });
+    }
+
+    /**
+     * Decodes on the engine's pool. An utterance Sphinx chokes on is skipped with a warning rather than
+     * failing the method: the next one may be fine, and the teacher keeps talking.
+     */
+    private Optional<SphinxDecoder.Decoded> decodeOrSkip(SphinxDecoder d, AudioChunk utterance) {
+        try {
+            return d.decode(utterance);
+        } catch (RuntimeException e) {
+            log().warn("{}: Sphinx-4 could not decode an utterance of {} ms, skipped: {}", id(),
+                    utterance.frameCount() * 1000L / SPHINX_RATE_HZ, e.toString());
+            return Optional.empty();
+        }
     }
 
     private void publish(SphinxDecoder.Decoded r, Pending utterance) {
@@ -154,6 +179,11 @@ public final class SpeechRecognition extends ProcessingMethod {
     /** Utterances dropped because too many waited. */
     public long droppedUtterances() {
         return dropped;
+    }
+
+    /** Utterances not decoded because they held no voice. */
+    public long unvoicedUtterances() {
+        return unvoiced;
     }
 
     /** Utterances in which a phrase was recognised. */

@@ -14,6 +14,9 @@ public record SpeechRecognitionParams(
         @Param(value = "Utterances kept waiting while one is decoded or the model loads; the oldest is dropped "
                 + "beyond this", defaultValue = "4")
         Integer maxPending,
+        @Param(value = "Voiced sound (pitch 70-500 Hz) an utterance must hold to be decoded; 0 decodes every "
+                + "utterance", unit = "ms", defaultValue = "80")
+        Double minVoicedMs,
         @Param(value = "Endpointing of the audio input: how far above the noise floor speech must be", unit = "dB",
                 defaultValue = "12")
         Double openAboveFloorDb,
@@ -32,6 +35,7 @@ public record SpeechRecognitionParams(
             throw new IllegalArgumentException("grammar must name a JSGF file ending in .gram, was '" + grammar + "'");
         }
         maxPending = ParamRules.within("maxPending", maxPending, 4, 1, 1000);
+        minVoicedMs = ParamRules.within("minVoicedMs", minVoicedMs, 80, 0, 5000);
         openAboveFloorDb = ParamRules.within("openAboveFloorDb", openAboveFloorDb, 12, 0, 80);
         minLevelDb = ParamRules.within("minLevelDb", minLevelDb, -50, -120, 0);
         hangoverMs = ParamRules.within("hangoverMs", hangoverMs, 300, 0, 5000);
@@ -40,7 +44,7 @@ public record SpeechRecognitionParams(
 
     /** Every parameter at its default. */
     public static SpeechRecognitionParams defaults() {
-        return new SpeechRecognitionParams(null, null, null, null, null, null);
+        return new SpeechRecognitionParams(null, null, null, null, null, null, null);
     }
 
     /** The endpointing gate's settings: these params over the defaults of {@code audio-processing}. */

@@ -17,7 +17,7 @@ import org.habla.sample.TextValue;
  * {@code text} (typically the control architecture's {@code say} socket) is said through
  * {@link ToneSynth}: a melody for each emotion word, a chirp for each other word. Optional input
  * {@code emotion} (the record of {@code emotion-recognition}) makes the robot say the emotion when
- * it changes, at most once per {@code emotionIntervalMs}. Output {@code audio} is mono 16-bit PCM in
+ * it changes to one of {@code sayEmotions}, at most once per {@code emotionIntervalMs}. Output {@code audio} is mono 16-bit PCM in
  * chunks of at most {@code chunkMs}, to be carried down to a {@code speaker} method. The same text
  * always sounds the same.
  */
@@ -43,7 +43,11 @@ public final class Speech extends VirtualMethod {
     private void onEmotion(RecordValue record, Sample sample) {
         String e = record.get("emotion").asText("");
         long now = nowMicros();
-        if (!params.speakEmotions() || !ToneSynth.hasMelody(e) || e.equals(lastEmotion)
+        if (!params.sayEmotions().contains(e)) {
+            lastEmotion = e;
+            return;
+        }
+        if (!params.speakEmotions() || e.equals(lastEmotion)
                 || (lastEmotionMicros != Long.MIN_VALUE && now - lastEmotionMicros < params.emotionIntervalMs() * 1000L)) {
             return;
         }

@@ -12,6 +12,9 @@ public record SpeechParams(
         @Param(value = "Longest text said; longer texts are cut", defaultValue = "200") Integer maxChars,
         @Param(value = "Say the emotion of each emotion record that changes it", defaultValue = "true")
         Boolean speakEmotions,
+        @Param(value = "The emotions said when an emotion record brings one of them",
+                defaultValue = "[\"happy\",\"excited\",\"sad\",\"angry\"]")
+        java.util.List<String> sayEmotions,
         @Param(value = "Least time between two emotions said", unit = "ms", defaultValue = "2000")
         Integer emotionIntervalMs) {
 
@@ -22,11 +25,13 @@ public record SpeechParams(
         chunkMs = ParamRules.within("chunkMs", chunkMs, 500, 10, 2000);
         maxChars = ParamRules.within("maxChars", maxChars, 200, 1, 10_000);
         speakEmotions = speakEmotions == null ? Boolean.TRUE : speakEmotions;
+        sayEmotions = sayEmotions == null ? java.util.List.of("happy", "excited", "sad", "angry")
+                : java.util.List.copyOf(sayEmotions);
         emotionIntervalMs = ParamRules.within("emotionIntervalMs", emotionIntervalMs, 2000, 0, 600_000);
     }
 
     /** Every parameter at its default. */
     public static SpeechParams defaults() {
-        return new SpeechParams(null, null, null, null, null, null, null);
+        return new SpeechParams(null, null, null, null, null, null, null, null);
     }
 }

@@ -78,6 +78,30 @@ class EmotionRecognitionTest {
     }
 
     @Test
+    void twoVoicesEachGetTheirOwnBaselineSoOrdinaryCommandsStayCalm() {
+        EmotionRecognitionParams two = new EmotionRecognitionParams(null, null, null, null, 2, null, null, null, null, null,
+                null);
+        EmotionRecognition m = new EmotionRecognition(two);
+        MethodHarness h = MethodHarness.started("emotion", m);
+        MethodHarness one = MethodHarness.started("emotion", new EmotionRecognition(EmotionRecognitionParams.defaults()));
+        double worstTwo = 0;
+        double worstOne = 0;
+        for (int i = 0; i < 8; i++) {
+            double pitch = i % 2 == 0 ? 120 : 230;
+            double db = i % 2 == 0 ? -22 : -26;
+            worstTwo = Math.max(worstTwo, Math.abs(say(h, "turn left", db, pitch).number("arousal") - 0.5));
+            worstOne = Math.max(worstOne, Math.abs(say(one, "turn left", db, pitch).number("arousal") - 0.5));
+        }
+        System.out.printf("emotion-recognition: arousal swing of ordinary commands from two voices: %.3f with one "
+                + "baseline, %.3f with one per voice%n", worstOne, worstTwo);
+        assertThat(m.voicesHeard()).isEqualTo(2);
+        assertThat(worstOne).as("one baseline between two voices swings").isGreaterThan(0.1);
+        assertThat(worstTwo).isLessThan(0.08);
+        RecordValue cheer = say(h, "good dog", -12, 150);
+        assertThat(cheer.text("emotion")).as("the low voice, loud and higher, is still excited").isEqualTo("excited");
+    }
+
+    @Test
     void phrasesMatchBeforeTheirWordsAndMixedWordsAverage() {
         EmotionRecognition m = new EmotionRecognition(EmotionRecognitionParams.defaults());
         MethodHarness.started("emotion", m);
@@ -91,7 +115,7 @@ class EmotionRecognitionTest {
     @Test
     void touchesAndRewardsCarryTheirValenceAndOddInputsAreIgnored() {
         EmotionRecognitionParams p = new EmotionRecognitionParams(null, Map.of("backMiddle", 1.0, "headTouch", -1.0),
-                null, null, null, null, null, null, null);
+                null, null, null, null, null, null, null, null, null);
         EmotionRecognition m = new EmotionRecognition(p);
         MethodHarness h = MethodHarness.started("emotion", m);
         h.push("touch", new TextValue("backMiddle"));

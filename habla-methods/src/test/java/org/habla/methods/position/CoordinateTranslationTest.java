@@ -23,7 +23,13 @@ class CoordinateTranslationTest {
      * projected, its bounding box and centre. Null when the ball is not wholly in view.
      */
     private static ObjectNode projectedBlob(double x, double y, HeadPose head, CameraModel cam, boolean roundToPixels) {
-        double[] rel = {x, y, RADIUS - cam.heightM()};
+        return projectedBlob(x, y, head, cam, roundToPixels, new double[] {0, 0, cam.heightM()});
+    }
+
+    /** The same, with the lens at {@code lens} in the robot frame. */
+    private static ObjectNode projectedBlob(double x, double y, HeadPose head, CameraModel cam, boolean roundToPixels,
+            double[] lens) {
+        double[] rel = {x - lens[0], y - lens[1], RADIUS - lens[2]};
         double[] c = BlobFix.toCamera(rel, head);
         double dist = Math.sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
         if (c[0] <= 0) {
@@ -92,7 +98,12 @@ class CoordinateTranslationTest {
 
     /** Worst distance and angle errors over a grid of ball positions and head poses. */
     private static double[] sweep(CameraModel cam, boolean round, int[] count) {
-        MethodHarness h = started(CoordinateTranslationParams.defaults(), cam);
+        return sweep(cam, round, count, CoordinateTranslationParams.defaults());
+    }
+
+    private static double[] sweep(CameraModel cam, boolean round, int[] count, CoordinateTranslationParams p) {
+        MethodHarness h = started(p, cam);
+        BlobFix geometry = new BlobFix(cam, RADIUS, p.cameraXM(), p.lensForwardM(), p.minRadiusPx());
         double worstD = 0;
         double worstA = 0;
         HeadPose[] heads = {new HeadPose(0, 0, 0), new HeadPose(-0.3, 0.4, 0), new HeadPose(-0.5, -0.6, 0.1),
@@ -103,14 +114,14 @@ class CoordinateTranslationTest {
                 for (double bearing = -1.4; bearing <= 1.4; bearing += 0.1) {
                     double x = range * Math.cos(bearing);
                     double y = range * Math.sin(bearing);
-                    ObjectNode blob = projectedBlob(x, y, head, cam, round);
+                    ObjectNode blob = projectedBlob(x, y, head, cam, round, geometry.lens(head));
                     if (blob == null) {
                         continue;
                     }
                     h.push("blobs", blobs(cam, blob));
                     RecordValue pos = (RecordValue) h.last("position");
                     assertThat(pos.get("seen").booleanValue()).isTrue();
-                    worstD = Math.max(worstD, Math.abs(pos.number("distanceM") - (range - RADIUS)));
+                    worstD = Math.max(worstD, Math.abs(pos.number("distanceM") - (range - RADIUS - p.bodyRadiusM())));
                     worstA = Math.max(worstA, Math.abs(pos.number("angleRad") - bearing));
                     count[0]++;
                 }
@@ -139,6 +150,36 @@ class CoordinateTranslationTest {
         assertThat(count[0]).isGreaterThan(60);
         assertThat(worst[0]).as("a ball 2 m away is 19 px wide; half a pixel each side is 5 %").isLessThan(0.1);
         assertThat(Math.toDegrees(worst[1])).isLessThan(3);
+    }
+
+    @Test
+    void aLensAheadOfThePanAxisAndTheBodysEdgeAreAccountedFor() {
+        CoordinateTranslationParams p = new CoordinateTranslationParams(null, null, null, null, null, 0.08, 0.07, 0.15, null);
+        int[] count = {0};
+        double[] worst = sweep(CAMERA, false, count, p);
+        System.out.printf("coordinate-translation: lens 0.08 + 0.07 m ahead, body radius 0.15 m, %d positions, worst %.3f m, "
+                + "%.2f deg%n", count[0], worst[0], Math.toDegrees(worst[1]));
+        assertThat(count[0]).isGreaterThan(60);
+        assertThat(worst[0]).isLessThan(0.1);
+        assertThat(Math.toDegrees(worst[1])).isLessThan(3);
+    }
+
+    @Test
+    void aBlobIsPlacedWithTheHeadPoseOfTheMomentItsImageWasTaken() {
+        MethodHarness h = started(CoordinateTranslationParams.defaults(), CAMERA);
+        long t0 = h.nowMicros();
+        HeadPose then = new HeadPose(-0.3, 0.2, 0);
+        HeadPose now = new HeadPose(-0.3, 0.5, 0);
+        h.push("head", then.toRecord(), t0);
+        h.push("head", now.toRecord(), t0 + 100_000);
+        ObjectNode blob = projectedBlob(1.0, 0.3, then, CAMERA, false);
+        h.push("blobs", blobs(CAMERA, blob), t0 + 60_000);
+        RecordValue matched = (RecordValue) h.last("position");
+        assertThat(matched.number("angleRad")).isCloseTo(Math.atan2(0.3, 1.0), within(0.01));
+        h.push("blobs", blobs(CAMERA, blob), t0 + 120_000);
+        RecordValue skewed = (RecordValue) h.last("position");
+        assertThat(skewed.number("angleRad") - Math.atan2(0.3, 1.0)).as("the later pose turns it by the pan moved")
+                .isCloseTo(0.3, within(0.02));
     }
 
     @Test

@@ -2,8 +2,12 @@ package org.habla.methods.sensors;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import org.habla.driver.ChannelDescriptor;
 import org.habla.method.MethodHarness;
 import org.habla.method.MethodState;
+import org.habla.sample.PayloadKind;
 import org.habla.sample.VectorValue;
 import org.junit.jupiter.api.Test;
 
@@ -27,6 +31,19 @@ class LegsTest {
         assertThat(h.last("walk")).isEqualTo(VectorValue.of(0.25, 0, 1.0));
         h.push("walk", VectorValue.of(-0.25, 0.2, 0));
         assertThat(h.last("walk")).isEqualTo(VectorValue.of(-0.1, 0, 0));
+    }
+
+    @Test
+    void limitsLeftOutComeFromTheWalkChannelsMetadata() {
+        ObjectNode meta = JsonNodeFactory.instance.objectNode().put("maxForwardMps", 0.25).put("maxReverseMps", 0.05)
+                .put("maxStrafeMps", 0.1).put("maxRotateRadps", 0.9);
+        ChannelDescriptor walk = ChannelDescriptor.command("walk", PayloadKind.VECTOR, "m/s, rad/s", true).withMetadata(meta);
+        Legs legs = new Legs(new LegsParams(null, null, 0.02, null, null));
+        MethodHarness h = MethodHarness.of("legs", legs).wireCommand("walk", walk).start();
+        h.push("walk", VectorValue.of(1, 1, 1));
+        assertThat(h.last("walk")).isEqualTo(VectorValue.of(0.25, 0.02, 0.9));
+        h.push("walk", VectorValue.of(-1, -1, -1));
+        assertThat(h.last("walk")).isEqualTo(VectorValue.of(-0.05, -0.02, -0.9));
     }
 
     @Test

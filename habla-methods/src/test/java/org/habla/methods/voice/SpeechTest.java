@@ -90,7 +90,7 @@ class SpeechTest {
 
     @Test
     void audioComesInBoundedMono16BitChunksAndLongTextIsCut() {
-        MethodHarness h = started(new SpeechParams(null, null, null, 100, 12, null, null));
+        MethodHarness h = started(new SpeechParams(null, null, null, 100, 12, null, null, null));
         h.push("text", new TextValue("happy happy happy"));
         List<Payload> chunks = h.values("audio");
         for (Payload c : chunks) {
@@ -120,6 +120,12 @@ class SpeechTest {
         h.advanceMillis(2000);
         h.push("emotion", sad);
         assertThat(h.values("audio").size()).isGreaterThan(once);
+        int twice = h.values("audio").size();
+        h.advanceMillis(3000);
+        h.push("emotion", RecordValue.builder().put("emotion", "neutral").build());
+        assertThat(h.values("audio")).as("neutral is not said").hasSize(twice);
+        h.push("emotion", sad);
+        assertThat(h.values("audio").size()).as("sad again after a neutral").isGreaterThan(twice);
         h.push("emotion", RecordValue.builder().put("emotion", 3).build());
         h.push("emotion", RecordValue.builder().put("feeling", "odd").build());
     }

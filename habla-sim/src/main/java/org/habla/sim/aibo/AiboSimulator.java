@@ -45,6 +45,32 @@ public final class AiboSimulator implements AutoCloseable {
      */
     public record Options(World world, double speed, long seed, TekkotsuPorts ports, int truthPort,
             boolean teacher) {
+
+        /** Tekkotsu's default ports, ground truth on 10199, real time, seed 1, the teacher present. */
+        public static Options defaults(World world) {
+            return new Options(world, 1, 1, TekkotsuPorts.withBase(TekkotsuPorts.DEFAULT_BASE), 10_199, true);
+        }
+
+        /** Every server and the ground truth on free ports (tests). */
+        public Options onFreePorts() {
+            return new Options(world, speed, seed, TekkotsuPorts.ANY_FREE, 0, teacher);
+        }
+
+        public Options withSpeed(double s) {
+            return new Options(world, s, seed, ports, truthPort, teacher);
+        }
+
+        public Options withSeed(long n) {
+            return new Options(world, speed, n, ports, truthPort, teacher);
+        }
+
+        public Options withPorts(TekkotsuPorts p, int truth) {
+            return new Options(world, speed, seed, p, truth, teacher);
+        }
+
+        public Options withTeacher(boolean present) {
+            return new Options(world, speed, seed, ports, truthPort, present);
+        }
     }
 
     private final SimClock clock;
@@ -195,10 +221,12 @@ public final class AiboSimulator implements AutoCloseable {
     private final class Voice implements TeacherVoice {
 
         @Override
-        public void giveCommand(String label) {
+        public double giveCommand(String label) {
             String phrase = scene.world().teacher().phrases().get(label);
-            microphone.play(utterances.take(phrase), MicrophoneServer.samplesAt(time.nowMs()));
+            short[] take = utterances.take(phrase);
+            microphone.play(take, MicrophoneServer.samplesAt(time.nowMs()));
             lastPhrase = phrase;
+            return take.length / 16_000.0;
         }
 
         @Override

@@ -1,6 +1,7 @@
 package org.habla.sim.aibo;
 
 import java.awt.image.BufferedImage;
+import java.awt.image.DataBufferInt;
 
 /**
  * A pinhole camera with the ERS-7's field of view (56.9° × 45.2°) that renders a {@link CameraView}:
@@ -52,7 +53,8 @@ public final class PinholeCamera {
     /** Renders the view. */
     public BufferedImage render(CameraView view) {
         BufferedImage image = new BufferedImage(width, height, BufferedImage.TYPE_INT_RGB);
-        int[] row = new int[width];
+        int[] pixels = ((DataBufferInt) image.getRaster().getDataBuffer()).getData();
+        double[][] walls = view.walls().toArray(double[][]::new);
         CameraView.CameraPose c = view.camera();
         double cy = Math.cos(c.yawRad());
         double sy = Math.sin(c.yawRad());
@@ -67,15 +69,15 @@ public final class PinholeCamera {
                 double z = sp + up * cp;
                 double dx = f * cy - left * sy;
                 double dy = f * sy + left * cy;
-                row[u] = shade(view, c, dx, dy, z);
+                pixels[v * width + u] = shade(view, walls, c, dx, dy, z);
             }
-            image.setRGB(0, v, width, 1, row, 0, width);
         }
         return image;
     }
 
     /** The colour seen along the ray (dx, dy, dz) from the camera. */
-    private static int shade(CameraView view, CameraView.CameraPose c, double dx, double dy, double dz) {
+    private static int shade(CameraView view, double[][] walls, CameraView.CameraPose c, double dx, double dy,
+            double dz) {
         double norm = Math.sqrt(dx * dx + dy * dy + dz * dz);
         dx /= norm;
         dy /= norm;
@@ -91,7 +93,7 @@ public final class PinholeCamera {
                     2)) == 0;
             colour = scale(FLOOR_RGB, (tile ? 1.0 : 0.9) * fade(best));
         }
-        for (double[] w : view.walls()) {
+        for (double[] w : walls) {
             double t = wallHit(c.xM(), c.yM(), dx, dy, w);
             if (t > 0 && t < best) {
                 double hz = c.zM() + t * dz;

@@ -38,7 +38,7 @@ final class RawCamServer implements TekkotsuSocket.Client {
     /** The ERS-7 camera delivers a frame every 33.4 ms. */
     static final long FRAME_PERIOD_MS = 33;
     /** However fast the clock runs, frames are rendered at most this often in real time. */
-    static final long MIN_REAL_PERIOD_MS = 10;
+    static final long MIN_REAL_PERIOD_MS = 20;
     static final int[] WIDTH_BY_SKIP = {416, 208, 104, 52, 26, 13};
     static final int[] HEIGHT_BY_SKIP = {320, 160, 80, 40, 20, 10};
     private static final int MAX_LINE_BYTES = 256;

@@ -1,7 +1,9 @@
 package org.habla.sim.aibo;
 
 import java.io.IOException;
+import java.io.OutputStream;
 import java.net.InetAddress;
+import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketException;
@@ -12,10 +14,9 @@ import org.slf4j.LoggerFactory;
  * One of the simulated Aibo's server sockets on loopback. Like Tekkotsu's daemon sockets it serves one
  * client at a time and listens again when that client leaves; a second client is closed at once.
  *
- * <p>A Tekkotsu server exists only while its behaviour runs. The socket stays bound for the life of the
- * simulator (so its port never changes), but while the server is switched off every connection is
- * closed as soon as it is accepted: a client sees the connection end and tries again later, as it would
- * after a refusal.
+ * <p>A Tekkotsu server exists only while its behaviour runs: switched off, the port is closed and a
+ * client's connection is refused, as on the robot. The port is chosen once (port 0 takes a free one)
+ * and reused every time the server is switched on again.
  */
 final class TekkotsuSocket implements AutoCloseable {
 
@@ -28,21 +29,23 @@ final class TekkotsuSocket implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(TekkotsuSocket.class);
 
     private final String name;
-    private final ServerSocket listener;
+    private final int port;
     private final Client client;
-    private final Thread acceptor;
-    private volatile boolean on;
+    private ServerSocket listener;
     private Socket current;
     private Thread serving;
+    private boolean closed;
 
     TekkotsuSocket(String name, int port, boolean onAtBoot, Client client) throws IOException {
         this.name = name;
         this.client = client;
-        this.on = onAtBoot;
-        this.listener = new ServerSocket();
-        listener.setReuseAddress(true);
-        listener.bind(new java.net.InetSocketAddress(InetAddress.getLoopbackAddress(), port), 4);
-        this.acceptor = Thread.ofVirtual().name("aibo-" + name).start(this::acceptLoop);
+        ServerSocket first = bind(port);
+        this.port = first.getLocalPort();
+        if (onAtBoot) {
+            listen(first);
+        } else {
+            first.close();
+        }
     }
 
     String name() {
@@ -50,52 +53,75 @@ final class TekkotsuSocket implements AutoCloseable {
     }
 
     int port() {
-        return listener.getLocalPort();
+        return port;
     }
 
-    boolean isOn() {
-        return on;
+    synchronized boolean isOn() {
+        return listener != null;
     }
 
-    /** Switches the server on (its behaviour started) or off (stopped: the client is dropped). */
+    /** Switches the server on (its behaviour started: the port listens) or off (the port closes, the client is dropped). */
     void switchOn(boolean running) {
         Socket drop = null;
         Thread stop = null;
+        ServerSocket shut = null;
         synchronized (this) {
-            on = running;
-            if (!running) {
-                drop = current;
-                stop = serving;
+            if (closed || running == (listener != null)) {
+                return;
             }
+            if (running) {
+                try {
+                    listen(bind(port));
+                } catch (IOException e) {
+                    LOG.warn("{}: cannot listen on port {} again: {}", name, port, e.getMessage());
+                }
+                return;
+            }
+            shut = listener;
+            listener = null;
+            drop = current;
+            stop = serving;
         }
+        closeQuietly(shut);
         closeQuietly(drop);
         if (stop != null) {
             stop.interrupt();
         }
     }
 
-    private void acceptLoop() {
-        while (!listener.isClosed()) {
-            Socket s;
+    private static ServerSocket bind(int port) throws IOException {
+        ServerSocket s = new ServerSocket();
+        s.setReuseAddress(true);
+        try {
+            s.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), port), 4);
+        } catch (IOException e) {
+            s.close();
+            throw e;
+        }
+        return s;
+    }
+
+    private synchronized void listen(ServerSocket s) {
+        listener = s;
+        Thread.ofVirtual().name("aibo-" + name).start(() -> acceptLoop(s));
+    }
+
+    private void acceptLoop(ServerSocket s) {
+        while (!s.isClosed()) {
+            Socket c;
             try {
-                s = listener.accept();
+                c = s.accept();
             } catch (IOException e) {
                 return;
             }
-            boolean take;
             synchronized (this) {
-                take = on && current == null;
-                if (take) {
-                    current = s;
+                if (listener == s && current == null) {
+                    current = c;
+                    serving = Thread.ofVirtual().name("aibo-" + name + "-client").start(() -> serve(c));
+                    continue;
                 }
             }
-            if (!take) {
-                closeQuietly(s);
-                continue;
-            }
-            synchronized (this) {
-                serving = Thread.ofVirtual().name("aibo-" + name + "-client").start(() -> serve(s));
-            }
+            closeQuietly(c);
         }
     }
 
@@ -129,7 +155,7 @@ final class TekkotsuSocket implements AutoCloseable {
     static void closeWhenClientLeaves(Socket s) {
         Thread.ofVirtual().start(() -> {
             try {
-                s.getInputStream().transferTo(java.io.OutputStream.nullOutputStream());
+                s.getInputStream().transferTo(OutputStream.nullOutputStream());
             } catch (IOException e) {
                 // closed under us: the same outcome
             }
@@ -139,9 +165,10 @@ final class TekkotsuSocket implements AutoCloseable {
 
     @Override
     public void close() {
-        closeQuietly(listener);
         switchOn(false);
-        acceptor.interrupt();
+        synchronized (this) {
+            closed = true;
+        }
     }
 
     private static void closeQuietly(AutoCloseable c) {

@@ -73,8 +73,8 @@ public final class SimAiboCommand implements Callable<Integer> {
         }
         AiboSimulator sim;
         try {
-            sim = new AiboSimulator(new AiboSimulator.Options(w, speed, seed, TekkotsuPorts.withBase(portBase),
-                    truthPort, teacher.equals("on")));
+            sim = new AiboSimulator(AiboSimulator.Options.defaults(w).withSpeed(speed).withSeed(seed)
+                    .withPorts(TekkotsuPorts.withBase(portBase), truthPort).withTeacher(teacher.equals("on")));
         } catch (IOException e) {
             err.println("habla sim aibo: cannot listen: " + e.getMessage()
                     + " (another robot or simulator on these ports? try --port-base)");
@@ -118,10 +118,6 @@ public final class SimAiboCommand implements Callable<Integer> {
 
     /** A file if one exists at that path, else a built-in world by name (with or without {@code .json}). */
     static World loadWorld(String name) throws IOException {
-        Path file = Path.of(name);
-        if (Files.isRegularFile(file)) {
-            return World.load(file);
-        }
-        return World.builtIn(name.endsWith(".json") ? name.substring(0, name.length() - 5) : name);
+        return World.named(name);
     }
 }

@@ -42,8 +42,18 @@ final class Microphone implements SimClock.Stepper {
         owedSamples += dtS * SAMPLE_RATE;
         int n = (int) owedSamples;
         owedSamples -= n;
-        byte[] pcm = new byte[2 * n];
         long toneLength = Math.round(NOTE_S * SAMPLE_RATE);
+        if (!out.listening()) {
+            // Nobody hears it: let a sounding note run its course without making the samples.
+            if (toneSample >= 0) {
+                toneSample += n;
+                if (toneSample >= toneLength) {
+                    toneSample = -1;
+                }
+            }
+            return;
+        }
+        byte[] pcm = new byte[2 * n];
         for (int i = 0; i < n; i++) {
             double s = random.nextGaussian() * NOISE_LEVEL;
             if (toneSample >= 0) {

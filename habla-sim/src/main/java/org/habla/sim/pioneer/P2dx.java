@@ -27,6 +27,7 @@ final class P2dx {
     static final double MAX_VEL_MPS = 0.75;
     static final double MAX_ROT_VEL_RADPS = 1.74;
     static final double ACCEL_MPS2 = 0.3;
+    static final double DECEL_MPS2 = 0.6;
     static final double ROT_ACCEL_RADPS2 = 1.74;
 
     static final double SONAR_MIN_RANGE_M = 0.1;
@@ -61,7 +62,8 @@ final class P2dx {
             Transducer.mmDeg(-157, 136, 90));
 
     static Body.Limits bodyLimits() {
-        return new Body.Limits(RADIUS_M, MAX_VEL_MPS, MAX_ROT_VEL_RADPS, ACCEL_MPS2, ROT_ACCEL_RADPS2);
+        return new Body.Limits(RADIUS_M, MAX_VEL_MPS, MAX_ROT_VEL_RADPS, ACCEL_MPS2, ROT_ACCEL_RADPS2, DECEL_MPS2,
+                ROT_ACCEL_RADPS2);
     }
 
     private P2dx() {

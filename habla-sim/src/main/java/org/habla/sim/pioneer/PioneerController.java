@@ -21,9 +21,10 @@ import org.slf4j.LoggerFactory;
  * into the body's set-points, fires its sonar ring, and every 100 ms of sim time sends a SIP with the odometry
  * (15-bit positions that roll over), wheel speeds, battery, stall and bumper bits and the sonar readings fired
  * since the last SIP. If no packet arrives for 2 s the watchdog stops the robot; the next packet resumes the last
- * set-points. CLOSE stops the motors and sonar and waits for a new handshake. Like a real robot on a serial
- * bridge it does not notice a client that just vanishes: it stays open (the watchdog stops it), and a new client
- * finds it streaming SIPs and must CLOSE it first.
+ * set-points. CLOSE stops the motors and sonar and waits for a new handshake. A robot put elsewhere by a reset
+ * keeps its odometry, as a robot carried by hand does. Like a real robot on a serial bridge it does not notice a
+ * client that just vanishes: it stays open (the watchdog stops it), and a new client finds it streaming SIPs and
+ * must CLOSE it first.
  *
  * <p>Packets arrive on the connection's reader thread, steps on the sim clock's thread; both lock this object.
  */
@@ -54,6 +55,7 @@ final class PioneerController implements SimClock.Stepper {
     private int rearNext;
     private final Map<Integer, Integer> fired = new LinkedHashMap<>();
     private Pose2 odomOrigin = Pose2.ORIGIN;
+    private Pose2 lastPose;
     private long packets;
     private long ignored;
     private long sips;
@@ -190,6 +192,7 @@ final class PioneerController implements SimClock.Stepper {
 
     @Override
     public synchronized void step(double nowS, double dtS) {
+        followCarrying(dtS);
         if (phase != Phase.OPEN) {
             body.command(0, 0, 0);
             return;
@@ -203,7 +206,9 @@ final class PioneerController implements SimClock.Stepper {
         }
         boolean drive = motorsEnabled && !watchdogTripped && !eStopped;
         body.command(drive ? vMps : 0, 0, drive ? wRadps : 0);
-        if (sonarOn && nowS + 1e-9 >= nextFireS) {
+        if (!sonarOn) {
+            nextFireS = nowS + dtS; // once switched on, the ring starts firing at its own pace
+        } else if (nowS + 1e-9 >= nextFireS) {
             nextFireS += P2dx.SONAR_FIRE_PERIOD_S;
             fire(frontNext);
             fire(8 + rearNext);
@@ -244,14 +249,44 @@ final class PioneerController implements SimClock.Stepper {
                 (int) Math.round(Math.toDegrees(w) * 10));
     }
 
+    /**
+     * Keeps the odometry still when the robot is carried (put somewhere by a reset): its wheels did not turn. A
+     * pose change no wheel could make in one step moves the odometry origin with the robot instead.
+     */
+    private void followCarrying(double dtS) {
+        Pose2 now = body.pose();
+        Pose2 before = lastPose;
+        lastPose = now;
+        if (before == null) {
+            return;
+        }
+        double reach = 2 * P2dx.MAX_VEL_MPS * dtS + 1e-3;
+        double turn = 2 * P2dx.MAX_ROT_VEL_RADPS * dtS + 1e-3;
+        if (before.distanceTo(now.xM(), now.yM()) <= reach
+                && Math.abs(Pose2.normalize(now.thetaRad() - before.thetaRad())) <= turn) {
+            return;
+        }
+        Pose2 odom = relative(odomOrigin, before);
+        double theta = now.thetaRad() - odom.thetaRad();
+        double c = Math.cos(theta);
+        double s = Math.sin(theta);
+        odomOrigin = new Pose2(now.xM() - (odom.xM() * c - odom.yM() * s), now.yM() - (odom.xM() * s + odom.yM() * c),
+                theta);
+        LOG.debug("the robot was carried to {}: odometry unchanged", now);
+    }
+
     /** Where the robot thinks it is: its pose relative to where the session opened or SETO was sent. */
     private Pose2 odometry() {
-        Pose2 p = body.pose();
-        double dx = p.xM() - odomOrigin.xM();
-        double dy = p.yM() - odomOrigin.yM();
-        double c = Math.cos(-odomOrigin.thetaRad());
-        double s = Math.sin(-odomOrigin.thetaRad());
-        return new Pose2(dx * c - dy * s, dx * s + dy * c, p.thetaRad() - odomOrigin.thetaRad());
+        return relative(odomOrigin, body.pose());
+    }
+
+    /** {@code p} in the frame of {@code origin}. */
+    private static Pose2 relative(Pose2 origin, Pose2 p) {
+        double dx = p.xM() - origin.xM();
+        double dy = p.yM() - origin.yM();
+        double c = Math.cos(-origin.thetaRad());
+        double s = Math.sin(-origin.thetaRad());
+        return new Pose2(dx * c - dy * s, dx * s + dy * c, p.thetaRad() - origin.thetaRad());
     }
 
     /** Stall bits 0 and 8 together; a front (bits 9–13) or rear (bits 1–5) bumper where the body touches. */

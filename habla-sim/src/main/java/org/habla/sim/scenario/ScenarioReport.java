@@ -1,5 +1,6 @@
 package org.habla.sim.scenario;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ArrayNode;
@@ -8,6 +9,7 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.stream.Collectors;
@@ -50,6 +52,30 @@ public final class ScenarioReport {
         Files.writeString(dir.resolve(OBEDIENCE_SVG), ObediencePlot.svg(summary, episodes), StandardCharsets.UTF_8);
         Files.writeString(dir.resolve(MARKDOWN), markdown(summary, episodes), StandardCharsets.UTF_8);
         return summary;
+    }
+
+    /**
+     * Reads episodes from a JSON file: an array of episodes, or a {@code report.json} (its
+     * {@code "episodeResults"}), so a report can be written again from an earlier one.
+     *
+     * @throws IllegalArgumentException naming the episode and field that are wrong
+     */
+    public static List<EpisodeResult> readEpisodes(Path file) throws IOException {
+        JsonNode root = MAPPER.readTree(file.toFile());
+        JsonNode list = root != null && root.isObject() ? root.get("episodeResults") : root;
+        if (list == null || !list.isArray()) {
+            throw new IllegalArgumentException(file + ": expected an array of episodes or a report with "
+                    + "\"episodeResults\"");
+        }
+        List<EpisodeResult> episodes = new ArrayList<>();
+        for (int i = 0; i < list.size(); i++) {
+            try {
+                episodes.add(EpisodeResult.fromJson(list.get(i)));
+            } catch (IllegalArgumentException e) {
+                throw new IllegalArgumentException(file + ": episode at index " + i + ": " + e.getMessage(), e);
+            }
+        }
+        return episodes;
     }
 
     static ObjectNode json(ScenarioSummary s, List<EpisodeResult> episodes) {

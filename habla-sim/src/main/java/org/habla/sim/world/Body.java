@@ -9,15 +9,21 @@ package org.habla.sim.world;
  */
 public final class Body {
 
-    /** The body's size and how hard it can accelerate. */
+    /** The body's size and how hard it can speed up and slow down. */
     public record Limits(double radiusM, double maxVelMps, double maxRotVelRadps, double accelMps2,
-                         double rotAccelRadps2) {
+                         double rotAccelRadps2, double decelMps2, double rotDecelRadps2) {
         public Limits {
-            for (double v : new double[] {radiusM, maxVelMps, maxRotVelRadps, accelMps2, rotAccelRadps2}) {
+            for (double v : new double[] {radiusM, maxVelMps, maxRotVelRadps, accelMps2, rotAccelRadps2, decelMps2,
+                rotDecelRadps2}) {
                 if (!(v > 0) || !Double.isFinite(v)) {
                     throw new IllegalArgumentException("body limits must be positive numbers: " + v);
                 }
             }
+        }
+
+        /** Limits that slow down as hard as they speed up. */
+        public Limits(double radiusM, double maxVelMps, double maxRotVelRadps, double accelMps2, double rotAccelRadps2) {
+            this(radiusM, maxVelMps, maxRotVelRadps, accelMps2, rotAccelRadps2, accelMps2, rotAccelRadps2);
         }
     }
 
@@ -64,9 +70,9 @@ public final class Body {
 
     /** Advances the body by {@code dtS} seconds in {@code world} with the target at {@code where}. */
     public synchronized void step(double dtS, World world, Target where) {
-        vx = ramp(vx, wantVx, limits.accelMps2() * dtS);
-        vy = ramp(vy, wantVy, limits.accelMps2() * dtS);
-        w = ramp(w, wantW, limits.rotAccelRadps2() * dtS);
+        vx = ramp(vx, wantVx, limits.accelMps2() * dtS, limits.decelMps2() * dtS);
+        vy = ramp(vy, wantVy, limits.accelMps2() * dtS, limits.decelMps2() * dtS);
+        w = ramp(w, wantW, limits.rotAccelRadps2() * dtS, limits.rotDecelRadps2() * dtS);
         // Integrate along the arc's mid-heading: exact enough for 10 ms steps.
         Pose2 mid = new Pose2(pose.xM(), pose.yM(), pose.thetaRad() + w * dtS / 2);
         Pose2 moved = mid.moved(vx * dtS, vy * dtS, w * dtS / 2);
@@ -132,7 +138,9 @@ public final class Body {
         return contactBearingRad;
     }
 
-    private static double ramp(double current, double wanted, double maxChange) {
+    private static double ramp(double current, double wanted, double maxUp, double maxDown) {
+        boolean slowing = current != 0 && (wanted * current < 0 || Math.abs(wanted) < Math.abs(current));
+        double maxChange = slowing ? maxDown : maxUp;
         double d = wanted - current;
         return Math.abs(d) <= maxChange ? wanted : current + Math.signum(d) * maxChange;
     }

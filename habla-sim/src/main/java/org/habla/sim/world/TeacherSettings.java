@@ -1,5 +1,6 @@
 package org.habla.sim.world;
 
+import java.util.List;
 import java.util.Map;
 
 /**
@@ -23,7 +24,7 @@ public record TeacherSettings(boolean present, double commandEveryS, double judg
                               Map<String, String> phrases) {
 
     /** The command labels a teacher gives, in the contract's order. */
-    public static final java.util.List<String> LABELS = java.util.List.of("forward", "left", "right", "back");
+    public static final List<String> LABELS = List.of("forward", "left", "right", "back");
 
     /** The contract's defaults. */
     public static final TeacherSettings DEFAULTS = new TeacherSettings(true, 3.0, 1.5, 0.35, 0.05, 0.02,

@@ -30,8 +30,10 @@ import org.junit.jupiter.api.Test;
 /** The simulated Aibo in its arena, driven by HABLA's real tekkotsu driver and watched through the ground truth. */
 class AiboSimulatorTest {
 
-    private static final Duration LIMIT = Duration.ofSeconds(10);
+    private static final Duration LIMIT = Duration.ofSeconds(20);
     private static final double SPEED = 8;
+    /** Ground-truth lines to look through for one that matches: 500 s of sim time, a minute of real time. */
+    private static final int LINES = 5_000;
 
     private final RecordingSink sink = new RecordingSink();
     private final Map<String, DriverLink> links = new HashMap<>();
@@ -51,8 +53,8 @@ class AiboSimulatorTest {
 
     /** The arena with the teacher away, the driver connected with every server (the walk re-sent often: 8× time). */
     private void start(String extraParams) throws IOException {
-        sim = new AiboSimulator(new AiboSimulator.Options(World.builtIn("aibo-arena"), SPEED, 3,
-                TekkotsuPorts.ANY_FREE, 0, false));
+        sim = new AiboSimulator(AiboSimulator.Options.defaults(World.builtIn("aibo-arena")).onFreePorts()
+                .withSpeed(SPEED).withSeed(3).withTeacher(false));
         sim.start();
         truth = new TruthClient(sim.truthPort());
         TekkotsuPorts p = sim.ports();
@@ -71,8 +73,14 @@ class AiboSimulatorTest {
     }
 
     private void place(double x, double y, double theta) throws IOException {
-        assertThat(truth.op("{\"op\":\"reset\",\"robot\":{\"xM\":%s,\"yM\":%s,\"thetaRad\":%s}}"
+        assertThat(op("{\"op\":\"reset\",\"robot\":{\"xM\":%s,\"yM\":%s,\"thetaRad\":%s}}"
                 .formatted(x, y, theta)).has("ok")).isTrue();
+    }
+
+    /** Sends a ground-truth operation and returns its reply, skipping however many truth lines came first. */
+    private JsonNode op(String json) throws IOException {
+        truth.send(json);
+        return truth.next(n -> !n.has("t"), LINES);
     }
 
     private boolean send(String link, String channel, VectorValue v) {
@@ -89,23 +97,23 @@ class AiboSimulatorTest {
         assertThat(DriverLink.await(LIMIT, () -> !sim.ers7().eStopped())).isTrue();
         place(0.5, 1.25, 0);
         assertThat(send("walk", "walk", VectorValue.of(0.09, 0, 0))).isTrue();
-        JsonNode a = truth.next(n -> n.has("t") && n.path("aibo").path("walk").path("forwardMps").asDouble() > 0, 100);
+        JsonNode a = truth.next(n -> n.has("t") && n.path("aibo").path("walk").path("forwardMps").asDouble() > 0, LINES);
         a = truth.next(n -> n.has("t"), 10); // past the 0.3 s ramp up
         a = truth.next(n -> n.has("t"), 10);
         a = truth.next(n -> n.has("t"), 10);
         double ta = a.get("t").asDouble();
-        JsonNode b = truth.next(n -> n.has("t") && n.get("t").asDouble() >= ta + 1.5, 100);
+        JsonNode b = truth.next(n -> n.has("t") && n.get("t").asDouble() >= ta + 1.5, LINES);
         double dt = b.get("t").asDouble() - ta;
         double dx = b.path("robot").path("xM").asDouble() - a.path("robot").path("xM").asDouble();
         assertThat(dx / dt).as("forward speed, m/s").isCloseTo(0.09, within(0.005));
         assertThat(b.path("robot").path("yM").asDouble()).isCloseTo(1.25, within(0.005));
 
         assertThat(send("walk", "walk", VectorValue.of(0, 0, 0.9))).isTrue();
-        JsonNode c = truth.next(n -> n.has("t") && n.path("aibo").path("walk").path("rotateRadps").asDouble() > 0, 100);
+        JsonNode c = truth.next(n -> n.has("t") && n.path("aibo").path("walk").path("rotateRadps").asDouble() > 0, LINES);
         c = truth.next(n -> n.has("t"), 10);
         c = truth.next(n -> n.has("t"), 10);
         double tc = c.get("t").asDouble();
-        JsonNode d = truth.next(n -> n.has("t") && n.get("t").asDouble() >= tc + 0.5, 100);
+        JsonNode d = truth.next(n -> n.has("t") && n.get("t").asDouble() >= tc + 0.5, LINES);
         double turned = Pose2.normalize(d.path("robot").path("thetaRad").asDouble()
                 - c.path("robot").path("thetaRad").asDouble());
         assertThat(turned / (d.get("t").asDouble() - tc)).as("turn rate, rad/s").isCloseTo(0.9, within(0.05));
@@ -117,7 +125,7 @@ class AiboSimulatorTest {
         place(0.5, 1.25, 0);
         assertThat(send("walk", "walk", VectorValue.of(0.18, 0, 0))).isTrue();
         JsonNode a = truth.truth();
-        JsonNode b = truth.next(n -> n.has("t") && n.get("t").asDouble() >= a.get("t").asDouble() + 1.0, 100);
+        JsonNode b = truth.next(n -> n.has("t") && n.get("t").asDouble() >= a.get("t").asDouble() + 1.0, LINES);
         assertThat(b.path("aibo").path("eStop").asBoolean()).isTrue();
         assertThat(b.path("robot").path("xM").asDouble()).isCloseTo(0.5, within(1e-6));
     }
@@ -169,17 +177,25 @@ class AiboSimulatorTest {
     @Test
     void touchingTheRobotShowsOnItsButtons() throws Exception {
         start("");
-        assertThat(truth.op("{\"op\":\"touch\",\"sensor\":\"back\"}").has("ok")).isTrue();
-        assertThat(DriverLink.await(LIMIT, () -> ((RecordValue) sink.latest("buttons")).number("backMiddle") > 0.5))
-                .isTrue();
-        assertThat(((RecordValue) sink.latest("buttons")).number("headTouch")).isZero();
-        assertThat(truth.op("{\"op\":\"touch\",\"sensor\":\"head\"}").has("ok")).isTrue();
-        assertThat(DriverLink.await(LIMIT, () -> ((RecordValue) sink.latest("buttons")).number("headTouch") > 0.5))
-                .isTrue();
-        assertThat(truth.op("{\"op\":\"touch\",\"sensor\":\"tail\"}").path("error").asText()).contains("head");
-        assertThat(truth.op("{\"op\":\"reward\",\"value\":-1}").has("ok")).isTrue();
-        assertThat(DriverLink.await(LIMIT, () -> ((RecordValue) sink.latest("buttons")).number("headTouch") > 0.5))
+        int before = sink.on("buttons").size();
+        assertThat(op("{\"op\":\"touch\",\"sensor\":\"back\"}").has("ok")).isTrue();
+        assertThat(DriverLink.await(LIMIT, () -> pressedSince(before, "backMiddle"))).isTrue();
+        assertThat(pressedSince(before, "headTouch")).isFalse();
+        int second = sink.on("buttons").size();
+        assertThat(op("{\"op\":\"touch\",\"sensor\":\"head\"}").has("ok")).isTrue();
+        assertThat(DriverLink.await(LIMIT, () -> pressedSince(second, "headTouch"))).isTrue();
+        assertThat(op("{\"op\":\"touch\",\"sensor\":\"tail\"}").path("error").asText()).contains("head");
+        int third = sink.on("buttons").size();
+        assertThat(op("{\"op\":\"reward\",\"value\":-1}").has("ok")).isTrue();
+        assertThat(DriverLink.await(LIMIT, () -> pressedSince(third, "headTouch")))
                 .as("pain is a touch on the head").isTrue();
+    }
+
+    /** Whether a buttons reading after the first {@code from} shows {@code button} pressed (a touch lasts 0.5 s of sim time). */
+    private boolean pressedSince(int from, String button) {
+        var all = sink.on("buttons");
+        return all.subList(Math.min(from, all.size()), all.size()).stream()
+                .anyMatch(b -> ((RecordValue) b).number(button) > 0.5);
     }
 
     @Test
@@ -188,11 +204,25 @@ class AiboSimulatorTest {
         assertThat(DriverLink.await(LIMIT, () -> sink.on("audio").size() > 5)).isTrue();
         double quiet = loudest(sink.on("audio").size() - 5);
         int before = sink.on("audio").size();
-        JsonNode reply = truth.op("{\"op\":\"say\",\"label\":\"left\"}");
+        JsonNode reply = op("{\"op\":\"say\",\"label\":\"left\"}");
         assertThat(reply.has("ok")).isTrue();
         assertThat(truth.next(n -> n.has("t"), 10).path("aibo").path("lastPhrase").asText()).isEqualTo("turn left");
         assertThat(DriverLink.await(LIMIT, () -> loudest(before) > 10 * quiet)).as("an utterance over the noise")
                 .isTrue();
+    }
+
+    @Test
+    void aPresentTeacherCommandsByVoiceAndRewardsByTouch() throws Exception {
+        start("");
+        place(0.6, 0.6, 0);
+        assertThat(op("{\"op\":\"teacher\",\"present\":true}").has("ok")).isTrue();
+        // the robot stands still, so the first command is judged a failure: pain, a touch on the head
+        JsonNode judged = truth.next(n -> n.has("t") && !n.path("teacher").path("lastReward").isNull(), LINES);
+        assertThat(judged.path("teacher").path("lastCommand").asText()).isIn("forward", "left", "right");
+        assertThat(judged.path("teacher").path("lastReward").asDouble()).isEqualTo(-1.0);
+        assertThat(judged.path("aibo").path("lastPhrase").asText()).isIn("go forward", "turn left", "turn right");
+        assertThat(DriverLink.await(LIMIT, () -> pressedSince(0, "headTouch"))).isTrue();
+        assertThat(loudest(0)).as("the spoken command on the microphone").isGreaterThan(0.02);
     }
 
     private double loudest(int from) {

@@ -34,7 +34,7 @@ import org.junit.jupiter.api.Test;
 /** HABLA's real tekkotsu driver against the simulated Aibo's servers, over loopback. */
 class TekkotsuServersTest {
 
-    private static final Duration LIMIT = Duration.ofSeconds(10);
+    private static final Duration LIMIT = Duration.ofSeconds(20);
     private static final CameraView.Ball BALL = new CameraView.Ball(1.0, 0.15, 0.1, 0xff50aa);
 
     private final SimClock clock = new SimClock(4, 0.008);
@@ -103,10 +103,12 @@ class TekkotsuServersTest {
     void buttonsShowATouchWhileItLasts() throws Exception {
         start("");
         assertThat(DriverLink.await(LIMIT, () -> sink.latest("buttons") != null)).isTrue();
+        int before = sink.on("buttons").size();
         body.press(Ers7Layout.HEAD_BUTTON, time.nowMs() + 400);
-        assertThat(DriverLink.await(LIMIT, () -> ((RecordValue) sink.latest("buttons")).number("headTouch") > 0.5))
-                .isTrue();
-        assertThat(((RecordValue) sink.latest("buttons")).number("backMiddle")).isZero();
+        assertThat(DriverLink.await(LIMIT, () -> sink.on("buttons").stream().skip(before)
+                .anyMatch(b -> ((RecordValue) b).number("headTouch") > 0.5))).isTrue();
+        assertThat(sink.on("buttons").stream().skip(before)
+                .allMatch(b -> ((RecordValue) b).number("backMiddle") == 0)).isTrue();
         assertThat(DriverLink.await(LIMIT, () -> ((RecordValue) sink.latest("buttons")).number("headTouch") == 0))
                 .as("released after its time").isTrue();
     }
@@ -312,12 +314,19 @@ class TekkotsuServersTest {
         }
         // a world-state client that connects and vanishes
         new Socket("127.0.0.1", p.worldState()).close();
-        try (Socket s = new Socket("127.0.0.1", p.controller())) {
-            s.getOutputStream().write("!hello\n".getBytes(StandardCharsets.US_ASCII));
-            s.setSoTimeout(5_000);
-            String reply = readUntil(s.getInputStream(), "hello\n");
-            assertThat(reply).startsWith("refresh\nRoot Control\n8\n");
+        String reply = "";
+        for (int attempt = 0; attempt < 50 && reply.isEmpty(); attempt++) {
+            // one client at a time: the last hostile client may not have been let go yet
+            try (Socket s = new Socket("127.0.0.1", p.controller())) {
+                s.getOutputStream().write("!hello\n".getBytes(StandardCharsets.US_ASCII));
+                s.setSoTimeout(5_000);
+                reply = readUntil(s.getInputStream(), "hello\n");
+            } catch (IOException e) {
+                reply = "";
+            }
+            Thread.sleep(reply.isEmpty() ? 50 : 0);
         }
+        assertThat(reply).startsWith("refresh\nRoot Control\n8\n");
         int before = sink.on("ir").size();
         assertThat(DriverLink.await(LIMIT, () -> sink.on("ir").size() > before + 5)).isTrue();
         assertThat(links.get("walk").write("walk", VectorValue.of(0.1, 0, 0))).isTrue();

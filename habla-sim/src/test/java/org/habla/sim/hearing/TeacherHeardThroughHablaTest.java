@@ -98,6 +98,52 @@ class TeacherHeardThroughHablaTest {
         }
     }
 
+    /** The daemon's status snapshot, or null if the endpoint does not answer. */
+    private static JsonNode status(int port) {
+        try (Socket s = new Socket("127.0.0.1", port)) {
+            s.setSoTimeout(2000);
+            String line = new BufferedReader(new InputStreamReader(s.getInputStream(), StandardCharsets.UTF_8)).readLine();
+            return line == null ? null : JSON.readTree(line);
+        } catch (IOException e) {
+            return null;
+        }
+    }
+
+    /**
+     * Waits until {@code listener} is ready and the audio reaching {@code analyser} has kept flowing for
+     * a second (the links settle after the robot's servers start): a command given before would fall
+     * into a gap of the stream and never be heard.
+     */
+    private static void awaitListening(int statusPort, String analyser, String listener) throws InterruptedException {
+        long end = System.currentTimeMillis() + HEAR_MS;
+        long flowingSince = -1;
+        long lastHandled = -1;
+        while (System.currentTimeMillis() < end) {
+            JsonNode st = status(statusPort);
+            boolean ready = false;
+            long handled = -1;
+            if (st != null) {
+                for (JsonNode m : st.path("methods")) {
+                    if (m.path("id").asText().equals(listener)) {
+                        ready = m.path("ready").asBoolean(false);
+                    }
+                    if (m.path("id").asText().equals(analyser)) {
+                        handled = m.path("handled").asLong(-1);
+                    }
+                }
+            }
+            long now = System.currentTimeMillis();
+            boolean flowing = handled > lastHandled && lastHandled >= 0;
+            flowingSince = flowing ? (flowingSince < 0 ? now : flowingSince) : -1;
+            lastHandled = handled;
+            if (ready && flowingSince >= 0 && now - flowingSince >= 1000) {
+                return;
+            }
+            Thread.sleep(200);
+        }
+        throw new AssertionError("the daemon did not start listening within " + HEAR_MS + " ms: " + status(statusPort));
+    }
+
     @Test
     void thePioneerTeachersNotesArriveAsNoteNames(@TempDir Path tmp) throws Exception {
         int[] ports = DaemonProcess.freePorts(2);
@@ -121,6 +167,7 @@ class TeacherHeardThroughHablaTest {
             try (DaemonProcess daemon = DaemonProcess.start(tmp.resolve("daemon.log"), "run", cfg.toString())) {
                 assertThat(DaemonProcess.awaitPort(ports[0], 20_000)).as(daemon.output()).isTrue();
                 try (TextSocket notes = new TextSocket(ports[0])) {
+                    awaitListening(ports[1], "notes", "notes");
                     Map<String, String> expected = Map.of("forward", "C5", "left", "E5", "right", "G5", "back", "C6");
                     List<String> heard = new ArrayList<>();
                     for (String label : List.of("forward", "left", "right", "back", "left")) {
@@ -166,6 +213,7 @@ class TeacherHeardThroughHablaTest {
                 try (DaemonProcess daemon = DaemonProcess.start(tmp.resolve("daemon.log"), "run", cfg.toString())) {
                     assertThat(DaemonProcess.awaitPort(ports[0], 20_000)).as(daemon.output()).isTrue();
                     try (TextSocket words = new TextSocket(ports[0])) {
+                        awaitListening(ports[1], "sound", "speech");
                         Map<String, String> expected = Map.of("forward", "go forward", "left", "turn left",
                                 "right", "turn right", "back", "go back");
                         List<String> heard = new ArrayList<>();

@@ -10,6 +10,7 @@ import java.io.InputStreamReader;
 import java.net.InetAddress;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
+import org.habla.sample.RecordValue;
 import org.habla.sample.VectorValue;
 import org.habla.sim.world.TruthClient;
 import org.habla.sim.world.World;
@@ -71,21 +72,24 @@ class TeacherSoundsTest {
     @Test
     void thePresentTeacherCommandsTowardsTheTargetAndRewardsARobotThatObeys() throws Exception {
         World room = World.builtIn("pioneer-room");
-        sim = PioneerSim.start(PioneerSimOptions.forTest(room, 10).withTeacher(true));
+        sim = PioneerSim.start(PioneerSimOptions.forTest(room, 10));
         try (Socket keys = new Socket(InetAddress.getLoopbackAddress(), sim.keysPort());
              TruthClient truth = new TruthClient(sim.truthPort())) {
             keys.setSoTimeout(10_000);
             BufferedReader typed = new BufferedReader(new InputStreamReader(keys.getInputStream(), StandardCharsets.UTF_8));
-            // Facing away from the target (bearing ≈ 2.5 rad to the left), the robot turns left slowly from the
-            // start: at t = 3 s the target is still far to the left, so the teacher says "left", and the robot,
-            // still turning left, has obeyed when judged at t = 4.5 s — whatever the test's own latency.
+            // Facing away from the target (bearing ≈ 2.5 rad to the left), the robot turns left slowly before the
+            // teacher comes in: 3 s later the target is still far to the left, so the teacher says "left", and the
+            // robot, still turning left, has obeyed when judged 1.5 s after — whatever the test's own latency.
             assertThat(truth.op("{\"op\":\"reset\",\"robot\":{\"xM\":1.5,\"yM\":1.5,\"thetaRad\":-1.8}}").has("ok")).isTrue();
             try (DriverHarness robot = new DriverHarness(sim.arcosPort(), 50)) {
                 robot.command("motion", VectorValue.of(0, 0.3));
+                robot.await("odometry", RecordValue.class, o -> o.number("wRadps") > 0.29, 10_000);
+                double arrived = sim.clock().nowS();
+                assertThat(truth.op("{\"op\":\"teacher\",\"present\":true}").has("ok")).isTrue();
                 assertThat(typed.readLine()).isEqualTo("+1");
-                var judged = truth.next(n -> n.has("t") && !n.at("/teacher/lastReward").isNull(), 100);
+                var judged = truth.next(n -> n.has("t") && !n.at("/teacher/lastReward").isNull(), 1_000);
                 assertThat(judged.at("/teacher/lastCommand").textValue()).isEqualTo("left");
-                assertThat(judged.get("t").doubleValue()).isBetween(4.5, 5.0);
+                assertThat(judged.get("t").doubleValue() - arrived).isBetween(4.5, 6.0);
                 robot.command("motion", VectorValue.of(0, 0));
             }
         }

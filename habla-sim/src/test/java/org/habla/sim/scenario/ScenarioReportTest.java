@@ -1,6 +1,7 @@
 package org.habla.sim.scenario;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -119,6 +120,17 @@ class ScenarioReportTest {
         assertThat(bars.get(1)).isCloseTo(0.8 * PlotFrame.plotHeight(), within(0.2));
         assertThat(Files.readString(dir.resolve(ScenarioReport.OBEDIENCE_SVG))).contains("80 % (8 of 10)")
                 .contains(">start<").contains(">end<");
+    }
+
+    @Test
+    void episodesReadBackFromAReportOrAnArrayAndBadOnesAreNamed(@TempDir Path dir) throws Exception {
+        ScenarioReport.write(dir, "pioneer", threeEpisodes());
+        assertThat(ScenarioReport.readEpisodes(dir.resolve(ScenarioReport.JSON))).isEqualTo(threeEpisodes());
+
+        Path array = dir.resolve("episodes.json");
+        Files.writeString(array, "[" + threeEpisodes().get(0).toJson() + ", {\"episode\": 2}]");
+        assertThatThrownBy(() -> ScenarioReport.readEpisodes(array))
+                .hasMessageContaining("episode at index 1").hasMessageContaining("\"obedience\" must be an array");
     }
 
     @Test

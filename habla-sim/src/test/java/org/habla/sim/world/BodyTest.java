@@ -26,6 +26,20 @@ class BodyTest {
     }
 
     @Test
+    void slowingDownUsesTheDecelerationLimit() {
+        Body body = new Body(new Body.Limits(0.25, 0.5, 2.0, 0.3, 1.0, 0.6, 2.0), new Pose2(1, 3, 0));
+        body.command(0.3, 0, 0);
+        run(body, 1.0);
+        assertThat(body.forwardMps()).isCloseTo(0.3, within(1e-9));
+        body.command(0, 0, 0);
+        run(body, 0.25);
+        assertThat(body.forwardMps()).isCloseTo(0.15, within(1e-6));
+        body.command(-0.3, 0, 0);
+        run(body, 0.25);
+        assertThat(body.forwardMps()).as("through zero at the deceleration rate").isCloseTo(0.0, within(1e-6));
+    }
+
+    @Test
     void aCommandAboveTheMaximumIsClamped() {
         Body body = new Body(limits, new Pose2(3, 3, 0));
         body.command(5, 0, -9);

@@ -1,0 +1,353 @@
+package org.habla.graph;
+
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.BufferedInputStream;
+import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.Condition;
+import java.util.concurrent.locks.ReentrantLock;
+import org.habla.config.Fallback;
+import org.habla.config.Limits;
+import org.habla.config.MethodConfig;
+import org.habla.config.ParamsJson;
+import org.habla.config.Reconnect;
+import org.habla.method.Input;
+import org.habla.method.Output;
+import org.habla.net.Frame;
+import org.habla.net.FrameException;
+import org.habla.net.FrameReader;
+import org.habla.net.FrameWriter;
+import org.habla.net.SampleCodec;
+import org.habla.net.WorkerProtocol;
+import org.habla.sample.Payload;
+import org.habla.sample.Sample;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * The daemon's side of a method placed on a worker ({@code "host"} in the config): keeps one TCP
+ * connection to the worker, has it make the method from its type and params, sends it the samples the
+ * method's runner takes from its input slots and publishes what comes back on the method's own output
+ * ports, so the rest of the graph cannot tell where the method runs.
+ *
+ * <p>Nothing here blocks the graph: samples wait in a bounded queue for the writer thread and are dropped
+ * (counted) when it is full or while the worker is lost. A worker that closes the connection or stays
+ * silent longer than {@link #LOST_AFTER_MILLIS} (it sends a heartbeat every second) is lost: the placement
+ * reports down, the runner falls back to the local method if the config asks for it, and the connection
+ * is tried again with a doubling wait.
+ */
+final class RemotePlacement {
+
+    private static final Logger LOG = LoggerFactory.getLogger(RemotePlacement.class);
+    /** Samples waiting for the worker connection; more are dropped and counted. */
+    static final int QUEUE_SAMPLES = 256;
+    /** Silence after which a worker is declared lost (three missed heartbeats). */
+    static final long LOST_AFTER_MILLIS = 3 * WorkerProtocol.HEARTBEAT_MILLIS;
+
+    private final MethodConfig config;
+    private final String host;
+    private final int port;
+    private final MethodRunner runner;
+    private final Limits limits;
+    private final Reconnect reconnect;
+    private final Runnable onStateChange;
+    private final ArrayBlockingQueue<Frame> outbound = new ArrayBlockingQueue<>(QUEUE_SAMPLES);
+    private final ReentrantLock sleepLock = new ReentrantLock();
+    private final Condition wakeUp = sleepLock.newCondition();
+    private final AtomicLong sent = new AtomicLong();
+    private final AtomicLong received = new AtomicLong();
+    private final AtomicLong dropped = new AtomicLong();
+    private final AtomicLong connects = new AtomicLong();
+    private final AtomicLong failures = new AtomicLong();
+    private final AtomicLong badLines = new AtomicLong();
+    private volatile boolean running;
+    private volatile boolean up;
+    private volatile String lastError = "";
+    private volatile Socket socket;
+    private Thread thread;
+
+    RemotePlacement(MethodConfig config, MethodRunner runner, Limits limits, Reconnect reconnect,
+            Runnable onStateChange) {
+        this.config = config;
+        String text = config.host().orElseThrow();
+        int colon = text.lastIndexOf(':');
+        String h = text.substring(0, colon);
+        this.host = h.startsWith("[") && h.endsWith("]") ? h.substring(1, h.length() - 1) : h;
+        this.port = Integer.parseInt(text.substring(colon + 1));
+        this.runner = runner;
+        this.limits = limits;
+        this.reconnect = reconnect;
+        this.onStateChange = onStateChange;
+    }
+
+    /** The worker as the config names it ({@code host:port}). */
+    String host() {
+        return config.host().orElseThrow();
+    }
+
+    /** Whether the worker runs the method now. */
+    boolean up() {
+        return up;
+    }
+
+    /** Whether the method runs in the daemon while the worker is lost. */
+    boolean fallsBackToLocal() {
+        return config.fallback() == Fallback.LOCAL;
+    }
+
+    /** Whether the method's outputs are being produced, here or there. */
+    boolean healthy() {
+        return up || fallsBackToLocal();
+    }
+
+    void start() {
+        running = true;
+        thread = Thread.ofVirtual().name("habla-worker-link-" + config.id()).start(this::loop);
+    }
+
+    void stop() {
+        running = false;
+        closeSocket();
+        sleepLock.lock();
+        try {
+            wakeUp.signalAll();
+        } finally {
+            sleepLock.unlock();
+        }
+        if (thread != null) {
+            try {
+                thread.join(2_000);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    /** Queues a sample for the worker; never blocks. From the method's runner thread. */
+    void forward(Input<?> input, Sample sample) {
+        if (!outbound.offer(WorkerProtocol.inputSample(input.name(), sample))) {
+            dropped.incrementAndGet();
+        }
+    }
+
+    /** Counts a sample that had nowhere to go: the worker is lost and there is no local fallback. */
+    void dropWhileLost() {
+        dropped.incrementAndGet();
+    }
+
+    private void loop() {
+        long backoff = reconnect.initialMs();
+        while (running) {
+            try {
+                runOnce();
+                backoff = reconnect.initialMs();
+            } catch (IOException | RuntimeException e) {
+                if (!running) {
+                    break;
+                }
+                failures.incrementAndGet();
+                String why = e.getMessage() == null ? e.toString() : e.getMessage();
+                if (up || connects.get() == 0 && !why.equals(lastError)) {
+                    LOG.warn("worker {} of method {} lost: {}", host(), config.id(), why);
+                } else {
+                    LOG.debug("worker {} of method {} still lost: {}", host(), config.id(), why);
+                }
+                lastError = why;
+            } finally {
+                markLost();
+            }
+            if (running) {
+                if (fallsBackToLocal()) {
+                    runner.fallBackToLocal();
+                }
+                sleep(backoff);
+                backoff = Math.min(reconnect.maxMs(), backoff * 2);
+            }
+        }
+    }
+
+    private void runOnce() throws IOException {
+        Socket s = new Socket();
+        socket = s;
+        if (!running) {
+            s.close();
+            return;
+        }
+        s.setTcpNoDelay(true);
+        s.connect(new InetSocketAddress(host, port), (int) reconnect.connectTimeoutMs());
+        s.setSoTimeout((int) reconnect.connectTimeoutMs());
+        FrameReader reader = new FrameReader(new BufferedInputStream(s.getInputStream(), 65_536),
+                limits.maxLineBytes(), limits.maxBinaryBytes());
+        FrameWriter writer = new FrameWriter(s.getOutputStream());
+        WorkerProtocol.Hello hello = WorkerProtocol.Hello.of(next(reader));
+        String refusal = hello.refusal(config.type());
+        if (refusal != null) {
+            throw new IOException(refusal);
+        }
+        writer.send(WorkerProtocol.place(config.id(), config.type(), config.layer().configName(),
+                ParamsJson.write(config.params())));
+        Frame answer = next(reader);
+        if (!answer.type().equals("placed")) {
+            throw new IOException("the worker did not place the method: " + answer.header().path("message")
+                    .asText(answer.header().toString()));
+        }
+        s.setSoTimeout((int) LOST_AFTER_MILLIS);
+        outbound.clear();
+        connects.incrementAndGet();
+        lastError = "";
+        up = true;
+        LOG.info("method {} runs on worker {}", config.id(), host());
+        onStateChange.run();
+        Thread writerThread = Thread.ofVirtual().name("habla-worker-out-" + config.id())
+                .start(() -> writeLoop(writer, s));
+        try {
+            while (running) {
+                Frame f;
+                try {
+                    f = reader.read();
+                } catch (FrameException e) {
+                    if (e.fatal()) {
+                        throw e;
+                    }
+                    badLine(e.getMessage());
+                    continue;
+                }
+                if (f == null) {
+                    throw new IOException("the worker closed the connection");
+                }
+                take(f);
+            }
+        } finally {
+            writerThread.interrupt();
+        }
+    }
+
+    private static Frame next(FrameReader reader) throws IOException {
+        Frame f = reader.read();
+        if (f == null) {
+            throw new IOException("the worker closed the connection");
+        }
+        return f;
+    }
+
+    private void take(Frame f) {
+        switch (f.type()) {
+            case "sample" -> {
+                String name = f.header().path("output").asText("");
+                Output<?> out = runner.method().output(name).orElse(null);
+                if (out == null) {
+                    badLine("a sample of an unknown output '" + name + "'");
+                    return;
+                }
+                try {
+                    Payload value = SampleCodec.value(f, out.kind());
+                    received.incrementAndGet();
+                    runner.publishFromWorker(out, value, f.header().path("t").asLong(0));
+                } catch (FrameException | RuntimeException e) {
+                    badLine(e.getMessage());
+                }
+            }
+            case "heartbeat" -> {
+                boolean ready = f.header().path("ready").asBoolean(true);
+                String detail = f.header().path("readiness").asText("");
+                runner.readiness(ready, detail.isEmpty() ? "" : "on worker " + host() + ": " + detail);
+            }
+            case "error" -> badLine(f.header().path("code").asText("") + ": " + f.header().path("message").asText(""));
+            default -> badLine("an unexpected line of type '" + f.type() + "'");
+        }
+    }
+
+    private void badLine(String what) {
+        long n = badLines.incrementAndGet();
+        if (n == 1 || n % 1_000 == 0) {
+            LOG.warn("worker {} of method {}: {} ({} so far)", host(), config.id(), what, n);
+        }
+    }
+
+    private void writeLoop(FrameWriter writer, Socket s) {
+        try {
+            while (up && running) {
+                Frame f = outbound.poll(250, TimeUnit.MILLISECONDS);
+                if (f == null) {
+                    continue;
+                }
+                do {
+                    writer.write(f);
+                    sent.incrementAndGet();
+                    f = outbound.poll();
+                } while (f != null);
+                writer.flush();
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (IOException e) {
+            LOG.debug("writing to worker {} failed: {}", host(), e.toString());
+            try {
+                s.close();
+            } catch (IOException ignored) {
+                // the reader notices the closed socket
+            }
+        }
+    }
+
+    private void markLost() {
+        closeSocket();
+        boolean was = up;
+        up = false;
+        outbound.clear();
+        if (!fallsBackToLocal()) {
+            runner.readiness(false, "worker " + host() + " is lost");
+        }
+        if (was || connects.get() == 0 && failures.get() == 1) {
+            onStateChange.run();
+        }
+    }
+
+    private void closeSocket() {
+        Socket s = socket;
+        if (s != null) {
+            try {
+                s.close();
+            } catch (IOException e) {
+                LOG.debug("close: {}", e.toString());
+            }
+        }
+    }
+
+    private void sleep(long millis) {
+        sleepLock.lock();
+        try {
+            long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(millis);
+            long left;
+            while (running && (left = deadline - System.nanoTime()) > 0) {
+                wakeUp.awaitNanos(left);
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } finally {
+            sleepLock.unlock();
+        }
+    }
+
+    ObjectNode status() {
+        ObjectNode n = JsonNodeFactory.instance.objectNode();
+        n.put("host", host());
+        n.put("up", up);
+        n.put("fallback", config.fallback().configName());
+        n.put("connects", connects.get());
+        n.put("failures", failures.get());
+        n.put("sent", sent.get());
+        n.put("received", received.get());
+        n.put("dropped", dropped.get());
+        n.put("badLines", badLines.get());
+        if (!lastError.isEmpty()) {
+            n.put("lastError", lastError);
+        }
+        return n;
+    }
+}

@@ -1,0 +1,143 @@
+package org.habla.net;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.Collection;
+import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+import org.habla.sample.Sample;
+
+/**
+ * The lines a daemon and a {@code habla worker} exchange to run one method on the worker's computer. Same
+ * framing as every HABLA socket ({@link FrameReader}): one JSON object per line, audio and images as
+ * {@code "bytes": N} binary blocks after the line. One TCP connection carries one placed method.
+ *
+ * <pre>
+ *   daemon                                              worker
+ *     |  &lt;-- {"type":"hello","protocol":1,"types":["speech-recognition",...]}
+ *     |  --&gt; {"type":"place","method":"speech","methodType":"speech-recognition",
+ *     |        "layer":"processing","params":{...}}
+ *     |  &lt;-- {"type":"placed","method":"speech","inputs":["segments"],"outputs":["words"]}
+ *     |        or {"type":"error","code":"unknown_type","message":"..."} and the worker closes
+ *     |  --&gt; {"type":"sample","input":"segments","seq":7,"t":MICROS,"stale":false,
+ *     |        "kind":"audio","rateHz":16000,"channels":1,"bits":16,"bytes":N}  + N bytes of PCM
+ *     |  &lt;-- {"type":"sample","output":"words","seq":3,"t":MICROS,"stale":false,"kind":"text","value":"go forward"}
+ *     |  &lt;-- {"type":"heartbeat","ready":true,"readiness":""}   every second: silence means a lost worker
+ *     |  &lt;-- {"type":"error","code":"bad_json",...}     a bad line costs that line only
+ * </pre>
+ *
+ * {@code t} is the source time of the daemon's sample, carried through the worker unchanged, so a
+ * sample's age is measured on the daemon's clock only.
+ */
+public final class WorkerProtocol {
+
+    /** The protocol version this build speaks; a worker of another version is refused. */
+    public static final int VERSION = 1;
+    /** The port {@code habla worker} listens on unless told otherwise. */
+    public static final int DEFAULT_PORT = 7600;
+    /** How often a worker tells the daemon it is alive. */
+    public static final long HEARTBEAT_MILLIS = 1_000;
+
+    private static final JsonNodeFactory NODES = JsonNodeFactory.instance;
+
+    private WorkerProtocol() {
+    }
+
+    /** What a worker says on connect: the protocol version and the method types it can run. */
+    public record Hello(int protocol, Set<String> types) {
+
+        public Hello {
+            types = Set.copyOf(types);
+        }
+
+        /** Reads a hello line; anything else is a protocol error. */
+        public static Hello of(Frame frame) throws FrameException {
+            if (!frame.type().equals("hello")) {
+                throw FrameException.fatal("not_a_worker", "expected a worker's hello line, got "
+                        + abbreviate(frame.header().toString()));
+            }
+            JsonNode protocol = frame.header().get("protocol");
+            JsonNode types = frame.header().get("types");
+            if (protocol == null || !protocol.canConvertToInt() || types == null || !types.isArray()) {
+                throw FrameException.fatal("bad_hello", "a worker's hello needs \"protocol\" and \"types\"");
+            }
+            Set<String> names = new TreeSet<>();
+            types.forEach(t -> names.add(t.asText()));
+            return new Hello(protocol.intValue(), names);
+        }
+
+        /** Why this worker cannot run a method of {@code type}, or null when it can. */
+        public String refusal(String type) {
+            if (protocol != VERSION) {
+                return "the worker speaks protocol " + protocol + ", this daemon " + VERSION;
+            }
+            if (!types.contains(type)) {
+                return "the worker cannot run method type '" + type + "' (it runs: "
+                        + (types.isEmpty() ? "nothing" : String.join(", ", new TreeSet<>(types))) + ")";
+            }
+            return null;
+        }
+    }
+
+    public static ObjectNode hello(Collection<String> types) {
+        ObjectNode h = NODES.objectNode().put("type", "hello").put("protocol", VERSION).put("role", "worker");
+        ArrayNode a = h.putArray("types");
+        new TreeSet<>(types).forEach(a::add);
+        return h;
+    }
+
+    /** Asks the worker to make and start one method. */
+    public static ObjectNode place(String methodId, String methodType, String layer, ObjectNode params) {
+        ObjectNode h = NODES.objectNode().put("type", "place").put("method", methodId).put("methodType", methodType)
+                .put("layer", layer);
+        h.set("params", params);
+        return h;
+    }
+
+    /** The worker's answer once the method runs: its port names. */
+    public static ObjectNode placed(String methodId, List<String> inputs, List<String> outputs) {
+        ObjectNode h = NODES.objectNode().put("type", "placed").put("method", methodId);
+        inputs.forEach(h.putArray("inputs")::add);
+        outputs.forEach(h.putArray("outputs")::add);
+        return h;
+    }
+
+    public static ObjectNode error(String code, String message) {
+        return NODES.objectNode().put("type", "error").put("code", code).put("message", message);
+    }
+
+    /** The worker's "still here", with whether the method can do its work yet (e.g. its model is loaded). */
+    public static ObjectNode heartbeat(boolean ready, String readiness) {
+        return NODES.objectNode().put("type", "heartbeat").put("ready", ready).put("readiness", readiness);
+    }
+
+    /** A sample the daemon hands to the placed method's input {@code input}. */
+    public static Frame inputSample(String input, Sample sample) {
+        Frame f = SampleCodec.sampleFrame(input, sample);
+        ObjectNode h = f.header();
+        h.remove("output");
+        h.put("input", input);
+        return f;
+    }
+
+    /** A sample the placed method published on its output {@code output}. */
+    public static Frame outputSample(String output, Sample sample) {
+        return SampleCodec.sampleFrame(output, sample);
+    }
+
+    /** The text of a field, or a {@code bad_value} error naming it. */
+    public static String text(Frame frame, String field) throws FrameException {
+        JsonNode n = frame.header().get(field);
+        if (n == null || !n.isTextual() || n.textValue().isEmpty()) {
+            throw FrameException.badValue("\"" + field + "\" must be a non-empty string");
+        }
+        return n.textValue();
+    }
+
+    private static String abbreviate(String s) {
+        return s.length() <= 80 ? s : s.substring(0, 77) + "...";
+    }
+}

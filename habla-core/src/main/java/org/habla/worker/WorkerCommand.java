@@ -1,0 +1,77 @@
+package org.habla.worker;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CountDownLatch;
+import org.habla.cli.ExitCodes;
+import org.habla.config.Limits;
+import org.habla.graph.EngineClock;
+import org.habla.net.WorkerProtocol;
+import org.habla.plugin.PluginRegistry;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code habla worker --port P [--bind ADDR]}: runs, on this computer, the methods a daemon's config
+ * places here with {@code "host": "this-computer:P"}. It needs no config: the daemon sends each method's
+ * type and params, and the worker makes it from the method types it has (the same plugins as the daemon).
+ */
+@Command(name = "worker", mixinStandardHelpOptions = true,
+        description = "Run methods for a HABLA daemon on this computer (a config's \"host\": \"this-computer:PORT\").")
+public final class WorkerCommand implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
+
+    @Option(names = "--port", paramLabel = "P", defaultValue = "" + WorkerProtocol.DEFAULT_PORT,
+            description = "The TCP port to listen on (default ${DEFAULT-VALUE}).")
+    private int port;
+
+    @Option(names = "--bind", paramLabel = "ADDR", defaultValue = "0.0.0.0",
+            description = "The address to listen on (default ${DEFAULT-VALUE}: every network of this computer).")
+    private String bind;
+
+    @Option(names = "--time-scale", paramLabel = "S", defaultValue = "1",
+            description = "Run the methods' clock S times faster than the wall clock, as the daemon's --time-scale.")
+    private double timeScale;
+
+    @Override
+    public Integer call() throws InterruptedException {
+        PrintWriter err = spec.commandLine().getErr();
+        if (port < 0 || port > 65_535) {
+            err.println("habla worker: --port must be in 0..65535, was " + port);
+            err.flush();
+            return ExitCodes.USAGE_OR_CONFIG;
+        }
+        if (!(timeScale >= 1) || !Double.isFinite(timeScale)) {
+            err.println("habla worker: --time-scale must be 1 or more, was " + timeScale);
+            err.flush();
+            return ExitCodes.USAGE_OR_CONFIG;
+        }
+        PluginRegistry registry = PluginRegistry.discover(Thread.currentThread().getContextClassLoader());
+        EngineClock clock = timeScale == 1 ? EngineClock.system() : EngineClock.scaled(timeScale);
+        WorkerServer server = new WorkerServer(registry, bind, port, clock, Limits.DEFAULTS);
+        try {
+            server.start();
+        } catch (IOException e) {
+            err.println("habla worker: " + e.getMessage());
+            err.flush();
+            return ExitCodes.RUNTIME_FAILURE;
+        }
+        spec.commandLine().getOut().println("HABLA worker on " + bind + ":" + server.port() + ", "
+                + registry.methods().size() + " method types");
+        spec.commandLine().getOut().flush();
+        CountDownLatch stopped = new CountDownLatch(1);
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
+            server.close();
+            clock.close();
+            stopped.countDown();
+            Runtime.getRuntime().halt(ExitCodes.OK);
+        }, "habla-worker-shutdown"));
+        stopped.await();
+        return ExitCodes.OK;
+    }
+}

@@ -1,0 +1,51 @@
+package org.habla.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import org.habla.config.Limits;
+import org.habla.config.TestPlugins;
+import org.habla.graph.EngineClock;
+import org.habla.plugin.PluginRegistry;
+import org.habla.worker.WorkerServer;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+@Timeout(30)
+class RunPlacementTest {
+
+    @Test
+    void runExitsWithTwoWhenAWorkerCannotRunAMethodPlacedOnIt(@TempDir Path dir) throws Exception {
+        EngineClock clock = EngineClock.system();
+        try (WorkerServer worker = new WorkerServer(PluginRegistry.of(List.of(), List.of()), "127.0.0.1", 0, clock,
+                Limits.DEFAULTS)) {
+            worker.start();
+            ObjectMapper json = new ObjectMapper();
+            ObjectNode config = (ObjectNode) json.readTree(getClass().getResource("/configs/valid/pioneer-like.json"));
+            ((ObjectNode) config.withArray("methods").get(1)).put("host", "127.0.0.1:" + worker.port());
+            Path file = dir.resolve("placed.json");
+            Files.writeString(file, json.writeValueAsString(config));
+
+            CommandRun run = CommandRun.of(new RunCommand(TestPlugins.registry()), file.toString());
+
+            assertThat(run.exitCode()).isEqualTo(ExitCodes.USAGE_OR_CONFIG);
+            assertThat(run.err().lines().toList()).containsExactly(
+                    "habla run: method 'nearest' is placed on worker 127.0.0.1:" + worker.port()
+                            + ", but the worker cannot run method type 'nearest-distance' (it runs: nothing)",
+                    "habla run: the daemon does not start");
+        } finally {
+            clock.close();
+        }
+    }
+
+    @Test
+    void workerIsASubcommandOfHabla() {
+        assertThat(new CommandLine(new Habla()).getSubcommands()).containsKey("worker");
+    }
+}

@@ -1,0 +1,367 @@
+package org.habla.worker;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
+import java.io.OutputStream;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
+import java.util.zip.CRC32;
+import org.habla.config.Expose;
+import org.habla.config.Fallback;
+import org.habla.config.HablaConfig;
+import org.habla.config.Limits;
+import org.habla.config.MethodConfig;
+import org.habla.config.Safety;
+import org.habla.config.Source;
+import org.habla.config.StatusConfig;
+import org.habla.daemon.Daemon;
+import org.habla.daemon.PlacementRefusedException;
+import org.habla.graph.EngineClock;
+import org.habla.graph.MethodGraph;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.net.ControlPoint;
+import org.habla.plugin.NoParams;
+import org.habla.plugin.PluginRegistry;
+import org.habla.sample.AudioChunk;
+import org.habla.sample.AudioFormat;
+import org.habla.sample.NumberValue;
+import org.habla.sample.Sample;
+import org.habla.sample.TextValue;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+@Timeout(60)
+class WorkerPlacementTest {
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+    private final List<AutoCloseable> toClose = new ArrayList<>();
+
+    @AfterEach
+    void closeAll() throws Exception {
+        for (int i = toClose.size() - 1; i >= 0; i--) {
+            toClose.get(i).close();
+        }
+    }
+
+    // ------------------------------------------------------------------ the protocol, raw
+
+    @Test
+    void aWorkerSaysHelloWithItsProtocolAndTheTypesItRuns() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0);
+        try (Socket s = new Socket("127.0.0.1", worker.port())) {
+            s.setSoTimeout(5_000);
+            JsonNode hello = JSON.readTree(lines(s).readLine());
+            assertThat(hello.path("type").asText()).isEqualTo("hello");
+            assertThat(hello.path("protocol").asInt()).isEqualTo(1);
+            assertThat(hello.path("types").toString()).contains("\"scale\"", "\"audio-digest\"");
+        }
+    }
+
+    @Test
+    void aWorkerRefusesATypeItCannotRunWithAnErrorLine() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.audioOnly(), 0);
+        try (Socket s = new Socket("127.0.0.1", worker.port())) {
+            s.setSoTimeout(5_000);
+            BufferedReader in = lines(s);
+            in.readLine();
+            send(s, "{\"type\":\"place\",\"method\":\"m\",\"methodType\":\"scale\",\"layer\":\"processing\","
+                    + "\"params\":{\"factor\":2}}\n");
+            JsonNode error = JSON.readTree(in.readLine());
+            assertThat(error.path("type").asText()).isEqualTo("error");
+            assertThat(error.path("code").asText()).isEqualTo("unknown_type");
+            assertThat(error.path("message").asText()).contains("'scale'");
+            assertThat(in.readLine()).as("the worker closes after refusing").isNull();
+        }
+    }
+
+    @Test
+    void audioCrossesAsABinaryBlockAndABadLineCostsOnlyThatLine() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0);
+        try (Socket s = new Socket("127.0.0.1", worker.port())) {
+            s.setSoTimeout(5_000);
+            BufferedReader in = lines(s);
+            in.readLine();
+            send(s, "{\"type\":\"place\",\"method\":\"d\",\"methodType\":\"audio-digest\",\"layer\":\"processing\"}\n");
+            JsonNode placed = JSON.readTree(in.readLine());
+            assertThat(placed.path("type").asText()).isEqualTo("placed");
+            assertThat(placed.path("inputs").toString()).isEqualTo("[\"audio\"]");
+            send(s, "{this is not json\n");
+            byte[] pcm = pcm(3_200);
+            OutputStream out = s.getOutputStream();
+            out.write(("{\"type\":\"sample\",\"input\":\"audio\",\"seq\":1,\"t\":5,\"kind\":\"audio\",\"rateHz\":16000,"
+                    + "\"channels\":1,\"bits\":16,\"bytes\":" + pcm.length + "}\n").getBytes(StandardCharsets.UTF_8));
+            out.write(pcm);
+            out.flush();
+            List<JsonNode> got = new ArrayList<>();
+            while (got.stream().noneMatch(n -> n.path("type").asText().equals("sample"))) {
+                JsonNode n = JSON.readTree(in.readLine());
+                if (!n.path("type").asText().equals("heartbeat")) {
+                    got.add(n);
+                }
+            }
+            assertThat(got.get(0).path("code").asText()).isEqualTo("bad_json");
+            JsonNode sample = got.get(got.size() - 1);
+            assertThat(sample.path("output").asText()).isEqualTo("digest");
+            assertThat(sample.path("t").asLong()).as("the daemon's source time comes back").isEqualTo(5);
+            assertThat(sample.path("value").asText()).isEqualTo(pcm.length + " " + crc(pcm) + " 16000");
+        }
+    }
+
+    // ------------------------------------------------------------------ the daemon's side
+
+    @Test
+    void theDaemonRefusesToStartWhenAWorkerCannotRunAMethodPlacedOnIt() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.audioOnly(), 0);
+        HablaConfig cfg = config(numbers("127.0.0.1:" + worker.port(), Fallback.NONE));
+        assertThatThrownBy(() -> Daemon.start(cfg, WorkerTestMethods.all(), EngineClock.system()))
+                .isInstanceOf(PlacementRefusedException.class)
+                .hasMessageContaining("method 'p' is placed on worker 127.0.0.1:" + worker.port())
+                .hasMessageContaining("cannot run method type 'scale' (it runs: audio-digest)");
+    }
+
+    @Test
+    void numbersGoToTheWorkerAndComeBackWithTheParamsApplied() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0);
+        MethodGraph g = graph(config(numbers("127.0.0.1:" + worker.port(), Fallback.NONE)));
+        BlockingQueue<Sample> seen = listen(point(g, "out"));
+        await(() -> placement(g).path("up").asBoolean(), "the placement comes up");
+        write(g, new NumberValue(21));
+        Sample s = seen.poll(5, TimeUnit.SECONDS);
+        assertThat(s).isNotNull();
+        assertThat(s.payload()).isEqualTo(new NumberValue(63));
+        assertThat(s.stale()).isFalse();
+        assertThat(placement(g).path("received").asLong()).isEqualTo(1);
+        assertThat(worker.sessions()).isEqualTo(1);
+        await(() -> method(g, "p").path("ready").asBoolean(), "the worker's heartbeat says the method is ready");
+    }
+
+    @Test
+    void audioGoesToARemoteMethodAsBinaryAndItsAnswerComesBack() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0);
+        MethodGraph g = graph(config(
+                method("in", "audio-source", Layer.VIRTUAL, Map.of("in", new Source.Control()), 7001),
+                placed("d", "audio-digest", Map.of("audio", out("in")), new NoParams(), "127.0.0.1:" + worker.port(),
+                        Fallback.NONE),
+                method("out", "text-sink", Layer.VIRTUAL, Map.of("in", new Source.MethodOutput("d", "digest")), 7002)));
+        BlockingQueue<Sample> seen = listen(point(g, "out"));
+        await(() -> method(g, "d").path("placement").path("up").asBoolean(), "the placement comes up");
+        byte[] pcm = pcm(32_000);
+        write(g, AudioChunk.of(AudioFormat.MONO_16K, pcm));
+        Sample s = seen.poll(5, TimeUnit.SECONDS);
+        assertThat(s).isNotNull();
+        assertThat(s.payload()).isEqualTo(new TextValue(pcm.length + " " + crc(pcm) + " 16000"));
+    }
+
+    @Test
+    void aLostWorkerMakesTheOutputsStaleUntilTheDaemonReconnects() throws Exception {
+        int port = freePort();
+        WorkerServer worker = worker(WorkerTestMethods.all(), port);
+        MethodGraph g = graph(config(numbers("127.0.0.1:" + port, Fallback.NONE)));
+        BlockingQueue<Sample> seen = new LinkedBlockingQueue<>();
+        BlockingQueue<String> staleness = new LinkedBlockingQueue<>();
+        point(g, "out").subscribe(listener(seen, staleness));
+        await(() -> placement(g).path("up").asBoolean(), "the placement comes up");
+        assertThat(method(g, "out").path("stale").asBoolean()).isFalse();
+
+        worker.close();
+        await(() -> !placement(g).path("up").asBoolean(), "the placement notices the lost worker");
+        assertThat(next(staleness, "stale")).isEqualTo("stale: worker 127.0.0.1:" + port + " of method p is lost");
+        assertThat(method(g, "p").path("stale").asBoolean()).isTrue();
+        assertThat(method(g, "p").path("ready").asBoolean()).isFalse();
+        assertThat(method(g, "p").path("readiness").asText()).isEqualTo("worker 127.0.0.1:" + port + " is lost");
+        assertThat(method(g, "out").path("stale").asBoolean()).as("what depends on it is stale too").isTrue();
+        write(g, new NumberValue(1));
+        await(() -> placement(g).path("dropped").asLong() >= 1, "a sample with nowhere to go is counted");
+        assertThat(seen.poll(300, TimeUnit.MILLISECONDS)).isNull();
+
+        worker(WorkerTestMethods.all(), port);
+        await(() -> placement(g).path("up").asBoolean(), "the daemon reconnects");
+        assertThat(next(staleness, "fresh")).isEqualTo("fresh: all links up");
+        assertThat(placement(g).path("connects").asLong()).isEqualTo(2);
+        write(g, new NumberValue(2));
+        Sample s = seen.poll(5, TimeUnit.SECONDS);
+        assertThat(s).isNotNull();
+        assertThat(s.payload()).isEqualTo(new NumberValue(6));
+        assertThat(s.stale()).isFalse();
+    }
+
+    @Test
+    void withALocalFallbackTheMethodRunsInTheDaemonWhileItsWorkerIsAway() throws Exception {
+        int port = freePort();
+        MethodGraph g = graph(config(numbers("127.0.0.1:" + port, Fallback.LOCAL)));
+        BlockingQueue<Sample> seen = listen(point(g, "out"));
+        await(() -> placement(g).path("failures").asLong() >= 1, "the first connect fails");
+        write(g, new NumberValue(5));
+        Sample local = seen.poll(5, TimeUnit.SECONDS);
+        assertThat(local).isNotNull();
+        assertThat(local.payload()).isEqualTo(new NumberValue(15));
+        assertThat(local.stale()).as("the fallback's outputs are fresh").isFalse();
+        assertThat(placement(g).path("received").asLong()).isZero();
+
+        WorkerServer worker = worker(WorkerTestMethods.all(), port);
+        await(() -> placement(g).path("up").asBoolean(), "the daemon reaches the worker");
+        write(g, new NumberValue(7));
+        Sample remote = seen.poll(5, TimeUnit.SECONDS);
+        assertThat(remote).isNotNull();
+        assertThat(remote.payload()).isEqualTo(new NumberValue(21));
+        assertThat(placement(g).path("received").asLong()).as("now the worker computes it").isEqualTo(1);
+        assertThat(worker.sessions()).isEqualTo(1);
+    }
+
+    // ------------------------------------------------------------------ set-up
+
+    private WorkerServer worker(PluginRegistry registry, int port) throws Exception {
+        EngineClock clock = EngineClock.system();
+        WorkerServer w = new WorkerServer(registry, "127.0.0.1", port, clock, Limits.DEFAULTS);
+        toClose.add(clock::close);
+        toClose.add(w);
+        w.start();
+        return w;
+    }
+
+    private MethodGraph graph(HablaConfig config) {
+        MethodGraph g = MethodGraph.build(config, WorkerTestMethods.all(), EngineClock.system());
+        toClose.add(g);
+        g.start();
+        return g;
+    }
+
+    /** in (control) → p (scale ×3, on a worker) → out (exposed). */
+    private static MethodConfig[] numbers(String host, Fallback fallback) {
+        return new MethodConfig[] {
+            method("in", "number-source", Layer.VIRTUAL, Map.of("in", new Source.Control()), 7001),
+            placed("p", "scale", Map.of("in", out("in")), new WorkerTestMethods.ScaleParams(3), host, fallback),
+            method("out", "number-sink", Layer.VIRTUAL, Map.of("in", new Source.MethodOutput("p", "out")), 7002)};
+    }
+
+    private static Source out(String id) {
+        return new Source.MethodOutput(id, "out");
+    }
+
+    private static MethodConfig method(String id, String type, Layer layer, Map<String, Source> inputs, int port) {
+        return new MethodConfig(id, type, layer, inputs, Map.of(), new NoParams(),
+                Optional.of(new Expose(id, "127.0.0.1", port)), Optional.empty());
+    }
+
+    private static MethodConfig placed(String id, String type, Map<String, Source> inputs, Record params, String host,
+            Fallback fallback) {
+        return new MethodConfig(id, type, Layer.PROCESSING, inputs, Map.of(), params, Optional.empty(),
+                Optional.of(host), fallback);
+    }
+
+    private static HablaConfig config(MethodConfig... methods) {
+        return new HablaConfig("worker-test", Limits.DEFAULTS, new Safety(0), new StatusConfig("127.0.0.1", 0),
+                List.of(), List.of(methods));
+    }
+
+    private static ControlPoint point(MethodGraph g, String name) {
+        return g.controlPoints().stream().filter(p -> p.name().equals(name)).findFirst().orElseThrow();
+    }
+
+    private static void write(MethodGraph g, org.habla.sample.Payload value) throws ControlPoint.Rejected {
+        ControlPoint in = point(g, "in");
+        in.write(in.controlInputs().get(0), value);
+    }
+
+    private static JsonNode method(MethodGraph g, String id) {
+        for (JsonNode m : g.status().path("methods")) {
+            if (m.path("id").asText().equals(id)) {
+                return m;
+            }
+        }
+        throw new AssertionError("no method " + id);
+    }
+
+    private static JsonNode placement(MethodGraph g) {
+        return method(g, "p").path("placement");
+    }
+
+    private static ControlPoint.Listener listener(BlockingQueue<Sample> samples, BlockingQueue<String> staleness) {
+        return new ControlPoint.Listener() {
+            @Override
+            public void onSample(Output<?> output, Sample sample) {
+                samples.add(sample);
+            }
+
+            @Override
+            public void onStale(boolean stale, String why) {
+                staleness.add((stale ? "stale: " : "fresh: ") + why);
+            }
+        };
+    }
+
+    private static BlockingQueue<Sample> listen(ControlPoint p) {
+        BlockingQueue<Sample> q = new LinkedBlockingQueue<>();
+        p.subscribe(listener(q, new LinkedBlockingQueue<>()));
+        return q;
+    }
+
+    private static void await(BooleanSupplier condition, String what) throws InterruptedException {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(15);
+        while (!condition.getAsBoolean()) {
+            if (System.nanoTime() > end) {
+                throw new AssertionError("timed out waiting until " + what);
+            }
+            Thread.sleep(20);
+        }
+    }
+
+    /** The next notice starting with {@code prefix}, skipping others; fails after 5 s. */
+    private static String next(BlockingQueue<String> notices, String prefix) throws InterruptedException {
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+        while (System.nanoTime() < end) {
+            String n = notices.poll(100, TimeUnit.MILLISECONDS);
+            if (n != null && n.startsWith(prefix)) {
+                return n;
+            }
+        }
+        throw new AssertionError("no '" + prefix + "' notice within 5 s");
+    }
+
+    private static int freePort() throws Exception {
+        try (ServerSocket s = new ServerSocket(0)) {
+            return s.getLocalPort();
+        }
+    }
+
+    private static BufferedReader lines(Socket s) throws Exception {
+        return new BufferedReader(new InputStreamReader(s.getInputStream(), StandardCharsets.UTF_8));
+    }
+
+    private static void send(Socket s, String text) throws Exception {
+        s.getOutputStream().write(text.getBytes(StandardCharsets.UTF_8));
+        s.getOutputStream().flush();
+    }
+
+    private static byte[] pcm(int bytes) {
+        byte[] b = new byte[bytes];
+        for (int i = 0; i < bytes; i++) {
+            b[i] = (byte) (i * 31 + (i >> 7));
+        }
+        b[0] = '\n';
+        b[1] = '{';
+        return b;
+    }
+
+    private static String crc(byte[] b) {
+        CRC32 c = new CRC32();
+        c.update(b);
+        return Long.toHexString(c.getValue());
+    }
+}

@@ -1,0 +1,118 @@
+package org.habla.worker;
+
+import java.util.List;
+import java.util.Set;
+import java.util.function.Function;
+import java.util.zip.CRC32;
+import org.habla.method.Delivery;
+import org.habla.method.Input;
+import org.habla.method.Layer;
+import org.habla.method.Method;
+import org.habla.method.Output;
+import org.habla.method.ProcessingMethod;
+import org.habla.method.VirtualMethod;
+import org.habla.plugin.MethodProvider;
+import org.habla.plugin.NoParams;
+import org.habla.plugin.PluginRegistry;
+import org.habla.sample.AudioChunk;
+import org.habla.sample.NumberValue;
+import org.habla.sample.Payload;
+import org.habla.sample.Sample;
+import org.habla.sample.TextValue;
+
+/** Small real methods to place on a worker: a scaler with params, an audio digest, and the daemon's ends. */
+final class WorkerTestMethods {
+
+    private WorkerTestMethods() {
+    }
+
+    /** Params of {@link Scale}; the constructor refuses a zero factor. */
+    record ScaleParams(double factor) {
+        ScaleParams {
+            if (factor == 0) {
+                throw new IllegalArgumentException("factor must not be 0");
+            }
+        }
+    }
+
+    /** Multiplies every number by its factor. */
+    static final class Scale extends ProcessingMethod {
+        final Output<NumberValue> out = output("out", NumberValue.class);
+        final Input<NumberValue> in;
+
+        Scale(ScaleParams p) {
+            in = input("in", NumberValue.class, Delivery.queue(4096), (v, s) -> emit(out, new NumberValue(v.value() * p.factor())));
+        }
+    }
+
+    /** Says how many bytes of PCM it got and their CRC-32, so a test sees the bytes crossed intact. */
+    static final class AudioDigest extends ProcessingMethod {
+        final Output<TextValue> digest = output("digest", TextValue.class);
+        final Input<AudioChunk> audio = input("audio", AudioChunk.class, Delivery.queue(256), this::on);
+
+        private void on(AudioChunk a, Sample s) {
+            CRC32 crc = new CRC32();
+            crc.update(a.pcm());
+            emit(digest, new TextValue(a.byteCount() + " " + Long.toHexString(crc.getValue()) + " "
+                    + a.format().sampleRateHz()));
+        }
+    }
+
+    /** A control input of any payload passed on (the daemon's way in for the test). */
+    static final class Source<P extends Payload> extends VirtualMethod {
+        final Output<P> out;
+        final Input<P> in;
+
+        Source(Class<P> type) {
+            out = output("out", type);
+            in = input("in", type, Delivery.queue(256), (v, s) -> emit(out, v), v -> null);
+        }
+    }
+
+    /** Shows what reaches it on its own output (the daemon's way out for the test). */
+    static final class Sink<P extends Payload> extends VirtualMethod {
+        final Output<P> out;
+        final Input<P> in;
+
+        Sink(Class<P> type) {
+            out = output("out", type);
+            in = input("in", type, Delivery.queue(256), (v, s) -> emit(out, v));
+        }
+    }
+
+    record Provider<R extends Record>(String name, Layer layer, Class<R> paramsType, Function<R, Method> make)
+            implements MethodProvider<R> {
+        @Override
+        public String description() {
+            return "test method " + name;
+        }
+
+        @Override
+        public Set<Layer> layers() {
+            return Set.of(layer);
+        }
+
+        @Override
+        public Method create(Layer l, R params) {
+            return make.apply(params);
+        }
+    }
+
+    /** Every test type: what a daemon knows. */
+    static PluginRegistry all() {
+        return PluginRegistry.of(List.of(
+                new Provider<>("scale", Layer.PROCESSING, ScaleParams.class, Scale::new),
+                new Provider<>("audio-digest", Layer.PROCESSING, NoParams.class, p -> new AudioDigest()),
+                new Provider<>("number-source", Layer.VIRTUAL, NoParams.class, p -> new Source<>(NumberValue.class)),
+                new Provider<>("number-sink", Layer.VIRTUAL, NoParams.class, p -> new Sink<>(NumberValue.class)),
+                new Provider<>("audio-source", Layer.VIRTUAL, NoParams.class, p -> new Source<>(AudioChunk.class)),
+                new Provider<>("text-sink", Layer.VIRTUAL, NoParams.class, p -> new Sink<>(TextValue.class))),
+                List.of());
+    }
+
+    /** A worker that can run the audio digest only. */
+    static PluginRegistry audioOnly() {
+        return PluginRegistry.of(List.of(
+                new Provider<>("audio-digest", Layer.PROCESSING, NoParams.class, p -> new AudioDigest())), List.of());
+    }
+}
