@@ -174,6 +174,9 @@ class RecordAndReplayTest {
         assertThat(commands.recorded()).isEqualTo(10);
         assertThat(commands.matches()).as(commands.toString()).isTrue();
         assertThat(result.cut()).isEmpty();
+
+        ReplayResult paced = replayer.run(new Replayer.Options(8, true, 10_000), Optional.empty(), d -> { });
+        assertThat(paced.streams()).as("replayed at 8 times the recorded pace").allMatch(StreamMatch::matches);
     }
 
     private static long outputs(Daemon d, String method) {
