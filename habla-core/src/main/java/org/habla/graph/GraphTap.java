@@ -27,9 +27,10 @@ public interface GraphTap {
 
     /**
      * Periodic work ran: {@code "watchdog"} (the motion watchdog's check) or {@code "tick:METHOD"} (a method's
-     * tick, when the method took it), so a replay runs it between the same events.
+     * tick, as the method takes it, after it had handled {@code handled} input samples; -1 for the watchdog),
+     * so a replay runs it between the same events.
      */
-    default void periodic(String task, long micros) {
+    default void periodic(String task, long micros, long handled) {
     }
 
     /** An interface link went up or down. */

@@ -1,6 +1,7 @@
 package org.habla.graph;
 
 import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.atomic.LongAdder;
 import org.habla.method.Delivery;
@@ -14,14 +15,19 @@ import org.habla.sample.Sample;
  */
 final class InputSlot {
 
+    /** A sample with its place in the order of arrival at this slot. */
+    private record Arrival(Sample sample, long index) {
+    }
+
     private final Input<?> input;
-    private final AtomicReference<Sample> latest;
-    private final ArrayBlockingQueue<Sample> queue;
-    private final LongAdder offered = new LongAdder();
+    private final AtomicReference<Arrival> latest;
+    private final ArrayBlockingQueue<Arrival> queue;
+    private final AtomicLong offered = new AtomicLong();
     private final LongAdder dropped = new LongAdder();
     private final LongAdder conflated = new LongAdder();
     private final Runnable wake;
     private final WorkCount work;
+    private volatile long consumedThrough;
 
     InputSlot(Input<?> input, Runnable wake, WorkCount work) {
         this.input = input;
@@ -42,18 +48,18 @@ final class InputSlot {
 
     /** Hands a sample to the method; false if a full queue dropped it. */
     boolean offer(Sample sample) {
-        offered.increment();
+        Arrival arrival = new Arrival(sample, offered.incrementAndGet());
         boolean taken;
         if (latest != null) {
             work.begin();
-            if (latest.getAndSet(sample) != null) {
+            if (latest.getAndSet(arrival) != null) {
                 conflated.increment();
                 work.end();
             }
             taken = true;
         } else {
             work.begin();
-            taken = queue.offer(sample);
+            taken = queue.offer(arrival);
             if (!taken) {
                 work.end();
                 dropped.increment();
@@ -70,7 +76,20 @@ final class InputSlot {
      * work count once it has handled it.
      */
     Sample poll() {
-        return latest != null ? latest.getAndSet(null) : queue.poll();
+        Arrival a = latest != null ? latest.getAndSet(null) : queue.poll();
+        if (a == null) {
+            return null;
+        }
+        consumedThrough = a.index();
+        return a.sample();
+    }
+
+    /**
+     * How many of the samples that arrived the method has taken or seen replaced by a newer one it took: what
+     * its state reflects, whether or not a {@code latest} slot skipped some.
+     */
+    long consumedThrough() {
+        return consumedThrough;
     }
 
     boolean isEmpty() {
@@ -82,7 +101,7 @@ final class InputSlot {
     }
 
     long offered() {
-        return offered.sum();
+        return offered.get();
     }
 
     long dropped() {

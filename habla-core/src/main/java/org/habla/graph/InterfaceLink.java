@@ -161,7 +161,7 @@ final class InterfaceLink {
     /** A recorded reading, replayed: published exactly as the driver's session (or the link heartbeat) did. */
     void replayReading(String channel, Payload value, long sourceMicros) {
         if (Driver.LINK_CHANNEL.name().equals(channel)) {
-            tap.reading(config.id(), channel, readings.get(channel).publish(value, sourceMicros, false));
+            readings.get(channel).publish(value, sourceMicros, false, s -> tap.reading(config.id(), channel, s));
             return;
         }
         sink.reading(channel, value, sourceMicros);
@@ -231,8 +231,8 @@ final class InterfaceLink {
         }
         RecordValue value = RecordValue.builder().put("up", up).put("interface", config.id())
                 .put("detail", detail.length() == 0 ? "all connections up" : detail.toString()).build();
-        tap.reading(config.id(), Driver.LINK_CHANNEL.name(),
-                readings.get(Driver.LINK_CHANNEL.name()).publish(value, clock.nowMicros(), false));
+        readings.get(Driver.LINK_CHANNEL.name()).publish(value, clock.nowMicros(), false,
+                s -> tap.reading(config.id(), Driver.LINK_CHANNEL.name(), s));
     }
 
     ObjectNode status() {
@@ -277,7 +277,7 @@ final class InterfaceLink {
                         + d.kind().wireName());
                 return;
             }
-            tap.reading(config.id(), channel, port.publish(value, sourceMicros, false));
+            port.publish(value, sourceMicros, false, s -> tap.reading(config.id(), channel, s));
         }
 
         @Override

@@ -163,6 +163,20 @@ public final class MethodGraph implements AutoCloseable {
         return false;
     }
 
+    /**
+     * The input samples a method's state reflects so far (see {@link GraphTap#periodic}); a replay places
+     * recorded ticks by it.
+     */
+    public long handled(String methodId) {
+        MethodRunner r = runners.get(methodId);
+        return r == null ? -1 : r.consumed();
+    }
+
+    /** Whether readings of an interface can reach a method (the interface is upstream of it). */
+    public boolean reaches(String interfaceId, String methodId) {
+        return upstreamInterfaces.getOrDefault(methodId, Set.of()).contains(interfaceId);
+    }
+
     private InterfaceLink replayedLink(String interfaceId) {
         if (!replayed) {
             throw new IllegalStateException("this graph runs live interfaces, not a recording");
@@ -330,7 +344,7 @@ public final class MethodGraph implements AutoCloseable {
         links.values().forEach(InterfaceLink::start);
         placements.values().forEach(RemotePlacement::start);
         watchdogTicker = clock.every(50_000, () -> {
-            tap.periodic(WATCHDOG_TASK, clock.nowMicros());
+            tap.periodic(WATCHDOG_TASK, clock.nowMicros(), -1);
             watchdog.check();
         });
         LOG.info("graph of '{}' started: {} methods, {} interfaces, {} sockets", config.system(), runners.size(),

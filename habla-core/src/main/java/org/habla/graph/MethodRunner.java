@@ -194,6 +194,18 @@ final class MethodRunner implements MethodContext {
         }
     }
 
+    /**
+     * The input samples the method's state reflects so far: every sample that arrived up to the last one it
+     * took, on every input (a {@code latest} input's skipped samples count, as the newer one replaced them).
+     */
+    long consumed() {
+        long n = 0;
+        for (InputSlot slot : slots) {
+            n += slot.consumedThrough();
+        }
+        return n;
+    }
+
     /** A sample the method published on its worker, published here as if the method had emitted it. */
     void publishFromWorker(Output<?> output, Payload value, long sourceMicros) {
         emit(output, value, sourceMicros);
@@ -212,9 +224,9 @@ final class MethodRunner implements MethodContext {
     /** Asks for a tick; one already waiting takes this one's place (ticks never pile up behind a busy method). */
     void requestTick() {
         if (tickPending.compareAndSet(false, true)) {
-            tap.periodic(TICK_PREFIX + id, clock.nowMicros());
             addTurn(() -> {
                 tickPending.set(false);
+                tap.periodic(TICK_PREFIX + id, clock.nowMicros(), consumed());
                 if (placement == null || !placement.up()) {
                     method.tick(clock.nowMicros());
                 }

@@ -37,7 +37,16 @@ final class OutputPort {
 
     /** Makes a sample of {@code payload} and hands it to every subscriber. */
     Sample publish(Payload payload, long sourceMicros, boolean stale) {
+        return publish(payload, sourceMicros, stale, s -> { });
+    }
+
+    /**
+     * Makes a sample, shows it to {@code first} (a recording's tap, so the reading is written down before any
+     * of its effects can be), then hands it to every subscriber.
+     */
+    Sample publish(Payload payload, long sourceMicros, boolean stale, Consumer<Sample> first) {
         Sample s = new Sample(payload, producer, sequence.incrementAndGet(), sourceMicros, stale);
+        first.accept(s);
         latest = s;
         for (Consumer<Sample> sub : subscribers) {
             sub.accept(s);

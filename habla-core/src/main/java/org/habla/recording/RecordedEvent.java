@@ -36,10 +36,10 @@ public sealed interface RecordedEvent {
     }
 
     /**
-     * Periodic work ran: {@code "watchdog"} or {@code "tick:METHOD"} (a method's tick), so a replay runs it
-     * between the same events.
+     * Periodic work ran: {@code "watchdog"} or {@code "tick:METHOD"} (a method's tick, taken after the method
+     * had handled {@code handled} input samples; -1 when not told), so a replay runs it between the same events.
      */
-    record Tick(long t, String task) implements RecordedEvent {
+    record Tick(long t, String task, long handled) implements RecordedEvent {
     }
 
     /** The recorder had to drop events (its queue was full): {@code total} since the recording began. */

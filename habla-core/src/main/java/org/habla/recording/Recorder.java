@@ -138,8 +138,8 @@ public final class Recorder implements GraphTap, AutoCloseable {
     }
 
     @Override
-    public void periodic(String task, long micros) {
-        offer(new RecordedEvent.Tick(micros, task), 0);
+    public void periodic(String task, long micros, long handled) {
+        offer(new RecordedEvent.Tick(micros, task, handled), 0);
     }
 
     private void offer(RecordedEvent e, long bytes) {

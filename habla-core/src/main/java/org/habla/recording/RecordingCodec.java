@@ -89,7 +89,7 @@ final class RecordingCodec {
                     .put("output", o.output()), o.sample());
             case RecordedEvent.LinkChange l -> Frame.of(base("link", l.t()).put("iface", l.iface()).put("up", l.up()));
             case RecordedEvent.WriterLeft w -> Frame.of(base("left", w.t()).put("socket", w.socket()));
-            case RecordedEvent.Tick k -> Frame.of(base("tick", k.t()).put("task", k.task()));
+            case RecordedEvent.Tick k -> Frame.of(base("tick", k.t()).put("task", k.task()).put("handled", k.handled()));
             case RecordedEvent.Dropped d -> Frame.of(base("dropped", d.t()).put("total", d.total()));
             case RecordedEvent.End x -> Frame.of(base("end", x.t()).put("written", x.written())
                     .put("dropped", x.dropped()));
@@ -115,7 +115,7 @@ final class RecordingCodec {
                         sample(f, text(h, "method") + "." + text(h, "output")));
                 case "link" -> new RecordedEvent.LinkChange(t, text(h, "iface"), h.path("up").asBoolean());
                 case "left" -> new RecordedEvent.WriterLeft(t, text(h, "socket"));
-                case "tick" -> new RecordedEvent.Tick(t, text(h, "task"));
+                case "tick" -> new RecordedEvent.Tick(t, text(h, "task"), h.path("handled").asLong(-1));
                 case "dropped" -> new RecordedEvent.Dropped(t, h.path("total").asLong());
                 case "end" -> new RecordedEvent.End(t, h.path("written").asLong(), h.path("dropped").asLong());
                 default -> null;

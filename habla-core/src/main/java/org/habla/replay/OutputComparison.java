@@ -96,8 +96,8 @@ public final class OutputComparison implements GraphTap {
     }
 
     @Override
-    public void periodic(String task, long micros) {
-        next.periodic(task, micros);
+    public void periodic(String task, long micros, long handled) {
+        next.periodic(task, micros, handled);
     }
 
     @Override

@@ -2,7 +2,12 @@ package org.habla.replay;
 
 import java.io.IOException;
 import java.nio.file.Path;
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.HashSet;
+import java.util.Iterator;
 import java.util.Optional;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import org.habla.config.ConfigException;
@@ -34,6 +39,9 @@ import org.slf4j.LoggerFactory;
 public final class Replayer {
 
     private static final Logger LOG = LoggerFactory.getLogger(Replayer.class);
+    /** How far ahead of the next reading a recorded tick may have been taken before that reading's effect. */
+    private static final long LOOKAHEAD_MICROS = 300_000;
+    private static final String TICK_PREFIX = "tick:";
 
     /**
      * How to replay.
@@ -126,7 +134,24 @@ public final class Replayer {
             onStarted.accept(daemon);
             Feed feed = new Feed(daemon.graph(), clock, options, recordedTicks);
             long wallStart = System.nanoTime();
-            for (RecordedEvent e = reader.next(); e != null; e = reader.next()) {
+            Deque<RecordedEvent> ahead = new ArrayDeque<>();
+            boolean more = true;
+            while (true) {
+                while (more && (ahead.isEmpty() || ahead.peekLast().t() - ahead.peekFirst().t() < LOOKAHEAD_MICROS)) {
+                    RecordedEvent next = reader.next();
+                    if (next == null) {
+                        more = false;
+                    } else {
+                        ahead.addLast(next);
+                    }
+                }
+                RecordedEvent e = ahead.pollFirst();
+                if (e == null) {
+                    break;
+                }
+                if (e instanceof RecordedEvent.Reading r) {
+                    feed.ticksTakenBefore(r, ahead);
+                }
                 feed.event(e, comparison);
             }
             feed.settle();
@@ -227,6 +252,35 @@ public final class Replayer {
 
         private Optional<ControlPoint> point(String socket) {
             return graph.controlPoints().stream().filter(p -> p.name().equals(socket)).findFirst();
+        }
+
+        /**
+         * Runs now, before reading {@code r} is fed, every method tick recorded a little later whose method had
+         * then handled exactly as many samples as it has now, if {@code r} could reach that method: in the
+         * recorded run the tick came before {@code r}'s effect arrived (the reading was still on its way
+         * through the layers), and so it must here.
+         */
+        void ticksTakenBefore(RecordedEvent.Reading r, Deque<RecordedEvent> ahead) throws InterruptedException {
+            if (!recordedTicks) {
+                return;
+            }
+            Set<String> looked = new HashSet<>();
+            for (Iterator<RecordedEvent> it = ahead.iterator(); it.hasNext(); ) {
+                if (!(it.next() instanceof RecordedEvent.Tick k) || !k.task().startsWith(TICK_PREFIX) || k.handled() < 0) {
+                    continue;
+                }
+                String method = k.task().substring(TICK_PREFIX.length());
+                if (!looked.add(method) || k.t() - r.t() > LOOKAHEAD_MICROS || !graph.reaches(r.iface(), method)
+                        || graph.handled(method) != k.handled()) {
+                    continue;
+                }
+                it.remove();
+                advance(k.t());
+                if (graph.replayPeriodic(k.task())) {
+                    ticks++;
+                }
+                settle();
+            }
         }
 
         private void write(RecordedEvent.ControlWrite w) {

@@ -58,15 +58,34 @@ class RecordAndReplayTest {
         }
     }
 
+    /** Says the newest value it was given at every tick, as distance-angle does: its output depends on timing. */
+    static final class Hold extends VirtualMethod {
+        final Output<NumberValue> held = output("held", NumberValue.class);
+        private double value = Double.NaN;
+
+        Hold() {
+            input("in", NumberValue.class, org.habla.method.Delivery.latest(), (v, s) -> value = v.value());
+            tickEvery(Duration.ofMillis(20));
+        }
+
+        @Override
+        protected void onTick(long nowMicros) {
+            if (!Double.isNaN(value)) {
+                emit(held, new NumberValue(value));
+            }
+        }
+    }
+
     private static PluginRegistry registry() {
         PluginRegistry base = TestMethods.registry();
         List<org.habla.plugin.MethodProvider<?>> methods = new ArrayList<>(base.methods().values());
         methods.add(new TestMethods.Simple("tick-counter", Layer.VIRTUAL, TickCounter::new));
+        methods.add(new TestMethods.Simple("hold", Layer.VIRTUAL, Hold::new));
         return PluginRegistry.of(methods, List.of(new LineDriver.Provider()));
     }
 
     private static String config(int robotPort) throws java.io.IOException {
-        int[] ports = org.habla.testing.DaemonProcess.freePorts(3);
+        int[] ports = org.habla.testing.DaemonProcess.freePorts(4);
         return """
                 {"system": "replay-test", "safety": {"watchdogMs": 0}, "status": {"port": 0},
                  "interfaces": [{"id": "robot", "driver": "lines-test", "address": "127.0.0.1:%d",
@@ -81,9 +100,11 @@ class RecordAndReplayTest {
                    {"id": "fwd", "type": "forward-processing", "layer": "processing", "inputs": {"in": "cmd.out"}},
                    {"id": "act", "type": "forward-actuator", "layer": "sensors_actuators", "inputs": {"in": "fwd.out"},
                     "commands": {"out": "@robot.motor"}},
-                   {"id": "ticks", "type": "tick-counter", "layer": "virtual", "expose": {"port": %d, "name": "ticks"}}
+                   {"id": "ticks", "type": "tick-counter", "layer": "virtual", "expose": {"port": %d, "name": "ticks"}},
+                   {"id": "hold", "type": "hold", "layer": "virtual", "inputs": {"in": "p.out"},
+                    "expose": {"port": %d, "name": "hold"}}
                  ]}
-                """.formatted(robotPort, ports[0], ports[1], ports[2]);
+                """.formatted(robotPort, ports[0], ports[1], ports[2], ports[3]);
     }
 
     @Test
@@ -129,7 +150,7 @@ class RecordAndReplayTest {
         assertThat(v).as("the live run's exposed values").hasSize(40).startsWith(4.0, 5.0, 6.0).endsWith(43.0);
 
         Replayer replayer = Replayer.open(file, Optional.empty(), registry);
-        ReplayResult result = replayer.run(Replayer.Options.AS_FAST_AS_POSSIBLE, Optional.empty(), d -> { });
+        ReplayResult result = replayer.run(Replayer.Options.AS_FAST_AS_POSSIBLE, Optional.of(dir.resolve("replayed.habla-rec")), d -> { });
 
         assertThat(recorded.events(RecordedEvent.Reading.class).stream().filter(r -> r.channel().equals("value")))
                 .hasSize(40);
@@ -146,10 +167,16 @@ class RecordAndReplayTest {
         StreamMatch ticks = result.stream("ticks.count").orElseThrow();
         assertThat(ticks.recorded()).as("the ticker ran in the live run").isGreaterThan(3);
         assertThat(ticks.matches()).as(ticks.toString()).isTrue();
+        StreamMatch held = result.stream("hold.held").orElseThrow();
+        assertThat(held.recorded()).as("the hold method ticked in the live run").isGreaterThan(5);
+        assertThat(held.matches()).as(held.toString()).isTrue();
         StreamMatch commands = result.stream("commands").orElseThrow();
         assertThat(commands.recorded()).isEqualTo(10);
         assertThat(commands.matches()).as(commands.toString()).isTrue();
         assertThat(result.cut()).isEmpty();
+
+        ReplayResult paced = replayer.run(new Replayer.Options(8, true, 10_000), Optional.empty(), d -> { });
+        assertThat(paced.streams()).as("replayed at 8 times the recorded pace").allMatch(StreamMatch::matches);
     }
 
     private static long outputs(Daemon d, String method) {

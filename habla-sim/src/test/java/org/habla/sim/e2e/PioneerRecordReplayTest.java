@@ -11,10 +11,7 @@ import org.habla.recording.RecordingReader;
 import org.habla.replay.OutputComparison;
 import org.habla.sample.NumberValue;
 import org.habla.sample.TextValue;
-import org.habla.sim.pioneer.PioneerSim;
-import org.habla.sim.pioneer.PioneerSimOptions;
 import org.habla.sim.scenario.TruthLink;
-import org.habla.sim.world.World;
 import org.habla.testing.DaemonProcess;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
@@ -33,28 +30,19 @@ class PioneerRecordReplayTest {
     private static final List<String> VIRTUAL = List.of("distance.distance_angle", "command.command", "reward.reward");
 
     static SimulatedDeployment rig;
-    static PioneerSim sim;
     static Path dir;
 
     @BeforeAll
     static void start() throws Exception {
         dir = Files.createDirectories(Path.of("target/e2e/pioneer-replay"));
         rig = new SimulatedDeployment("pioneer", "pioneer-room", 1, dir, c -> { });
-        // The simulated Pioneer serves ARCOS, the microphone, the keyboard and the ground truth on loopback;
-        // the daemons under test talk to it only through those sockets, from JVMs of their own.
-        sim = PioneerSim.start(new PioneerSimOptions(World.builtIn("pioneer-room"), 1, 7, 8101 + rig.offset,
-                8110 + rig.offset, 8111 + rig.offset, rig.truthPort(), false, PioneerSimOptions.DEFAULT_SONAR_NOISE_M));
-        rig.truth = TruthLink.connect(rig.truthPort(), 10_000);
-        assertThat(rig.truth.awaitTime(0, 10_000)).as("ground truth streams").isNotNull();
+        rig.startSimulator();
     }
 
     @AfterAll
     static void stop() throws Exception {
         if (rig != null) {
             rig.close();
-        }
-        if (sim != null) {
-            sim.close();
         }
     }
 
