@@ -123,6 +123,41 @@ class WorkerPlacementTest {
         }
     }
 
+    @Test
+    void aPlacedMethodSeesTheMetadataOfTheInterfaceChannelItsInputReads() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0);
+        try (Socket s = new Socket("127.0.0.1", worker.port())) {
+            s.setSoTimeout(5_000);
+            BufferedReader in = lines(s);
+            in.readLine();
+            send(s, "{\"type\":\"place\",\"method\":\"e\",\"methodType\":\"channel-echo\",\"layer\":\"processing\","
+                    + "\"channels\":{\"in\":{\"name\":\"sonar\",\"direction\":\"reading\",\"kind\":\"vector\","
+                    + "\"unit\":\"m\",\"motion\":false,\"metadata\":{\"maxRangeM\":5.0}}}}\n");
+            assertThat(JSON.readTree(in.readLine()).path("type").asText()).isEqualTo("placed");
+            send(s, "{\"type\":\"sample\",\"input\":\"in\",\"seq\":1,\"t\":1,\"kind\":\"number\",\"value\":1}\n");
+            JsonNode n;
+            do {
+                n = JSON.readTree(in.readLine());
+            } while (!n.path("type").asText().equals("sample"));
+            assertThat(n.path("value").asText()).isEqualTo("sonar m {\"maxRangeM\":5.0}");
+        }
+    }
+
+    @Test
+    void aPlaceLineWithABadChannelIsRefusedNamingThePort() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0);
+        try (Socket s = new Socket("127.0.0.1", worker.port())) {
+            s.setSoTimeout(5_000);
+            BufferedReader in = lines(s);
+            in.readLine();
+            send(s, "{\"type\":\"place\",\"method\":\"e\",\"methodType\":\"channel-echo\",\"layer\":\"processing\","
+                    + "\"channels\":{\"in\":{\"name\":\"sonar\",\"direction\":\"sideways\",\"kind\":\"vector\"}}}\n");
+            JsonNode error = JSON.readTree(in.readLine());
+            assertThat(error.path("code").asText()).isEqualTo("bad_place");
+            assertThat(error.path("message").asText()).startsWith("channel of port 'in': ");
+        }
+    }
+
     // ------------------------------------------------------------------ the daemon's side
 
     @Test
