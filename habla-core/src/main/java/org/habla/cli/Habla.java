@@ -24,7 +24,7 @@ import picocli.CommandLine.Option;
  */
 @Command(name = "habla", mixinStandardHelpOptions = true, versionProvider = Habla.Version.class,
         description = "HABLA, the Hardware Abstraction Layer: isolates a robot's control architecture from its hardware.",
-        subcommands = {RunCommand.class, CheckCommand.class, GraphCommand.class, SchemaCommand.class,
+        subcommands = {RunCommand.class, ReplayCommand.class, CheckCommand.class, GraphCommand.class, SchemaCommand.class,
                 PluginsCommand.class, StatusCommand.class, org.habla.worker.WorkerCommand.class})
 public final class Habla implements Runnable {
 

@@ -1,6 +1,10 @@
 package org.habla.cli;
 
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
+import java.nio.file.FileAlreadyExistsException;
+import java.nio.file.Files;
 import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
@@ -11,6 +15,9 @@ import org.habla.config.HablaConfig;
 import org.habla.daemon.Daemon;
 import org.habla.daemon.PlacementRefusedException;
 import org.habla.graph.EngineClock;
+import org.habla.graph.MethodGraph;
+import org.habla.recording.Recorder;
+import org.habla.recording.RecordingHeader;
 import org.habla.plugin.PluginRegistry;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -36,6 +43,11 @@ public final class RunCommand implements Callable<Integer> {
             description = "Run the engine's clock S times faster than the wall clock (watchdog, periodic work, "
                     + "action durations), to drive a simulated robot sped up by the same factor. Never for a real robot.")
     private double timeScale;
+
+    @Option(names = "--record", paramLabel = "FILE",
+            description = "Record every reading, command, control write and exposed output, and the config, to FILE "
+                    + "(a new file; see docs/recording.md). Replay it with 'habla replay FILE'.")
+    private Path record;
     private final PluginRegistry plugins;
 
     public RunCommand() {
@@ -64,27 +76,50 @@ public final class RunCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
         }
+        EngineClock clock = timeScale == 1 ? EngineClock.system() : EngineClock.scaled(timeScale);
+        Recorder recorder = null;
         Daemon daemon;
         try {
-            daemon = Daemon.start(cfg, registry, timeScale == 1 ? EngineClock.system() : EngineClock.scaled(timeScale));
+            if (record != null) {
+                recorder = Recorder.create(record, header(cfg, registry, clock), clock);
+            }
+            daemon = recorder == null ? Daemon.start(cfg, registry, clock) : Daemon.start(cfg, registry, clock, recorder);
         } catch (PlacementRefusedException e) {
             e.refusals().forEach(r -> err.println("habla run: " + r));
             err.println("habla run: the daemon does not start");
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
+        } catch (FileAlreadyExistsException e) {
+            err.println("habla run: " + record + " already exists; a recording is never overwritten");
+            err.flush();
+            return ExitCodes.USAGE_OR_CONFIG;
         } catch (IOException e) {
+            if (recorder != null) {
+                recorder.close();
+            }
             err.println("habla run: " + e.getMessage());
             err.flush();
             return ExitCodes.RUNTIME_FAILURE;
         }
+        Recorder rec = recorder;
         CountDownLatch stopped = new CountDownLatch(1);
         Runtime.getRuntime().addShutdownHook(new Thread(() -> {
             daemon.close();
+            if (rec != null) {
+                rec.close();
+            }
             stopped.countDown();
             // A signal is the normal way to stop a daemon: exit 0, not the JVM's 128+signal.
             Runtime.getRuntime().halt(ExitCodes.OK);
         }, "habla-shutdown"));
         stopped.await();
         return ExitCodes.OK;
+    }
+
+    private RecordingHeader header(HablaConfig cfg, PluginRegistry registry, EngineClock clock) throws IOException {
+        ObjectNode json = (ObjectNode) new ObjectMapper().readTree(Files.readString(config));
+        Path dir = config.toAbsolutePath().getParent();
+        return new RecordingHeader(clock.nowMicros(), timeScale, json, dir == null ? "" : dir.toString(),
+                MethodGraph.channels(cfg, registry));
     }
 }

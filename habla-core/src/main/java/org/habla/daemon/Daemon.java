@@ -7,7 +7,9 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.habla.config.HablaConfig;
+import org.habla.driver.ChannelDescriptor;
 import org.habla.graph.EngineClock;
+import org.habla.graph.GraphTap;
 import org.habla.graph.MethodGraph;
 import org.habla.net.ControlPoint;
 import org.habla.net.ControlServer;
@@ -45,11 +47,37 @@ public final class Daemon implements AutoCloseable {
      * with a {@link PlacementRefusedException}.
      */
     public static Daemon start(HablaConfig config, PluginRegistry registry, EngineClock clock) throws IOException {
+        return start(config, registry, clock, GraphTap.NONE);
+    }
+
+    /** Builds and starts everything with a tap that sees what crosses the graph's edges (a recording). */
+    public static Daemon start(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap)
+            throws IOException {
+        checkPlacements(config);
+        return assemble(config, MethodGraph.build(config, registry, clock, tap), clock);
+    }
+
+    /**
+     * Builds and starts a daemon that replays a recording: the same control sockets, but every interface is
+     * fed from the recording through {@link #graph()} instead of connecting to a robot.
+     */
+    public static Daemon replaying(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
+            Map<String, List<ChannelDescriptor>> channels) throws IOException {
+        checkPlacements(config);
+        return assemble(config, MethodGraph.replaying(config, registry, clock, tap, channels), clock);
+    }
+
+    /** Asks every worker the config places methods on whether it can run them. */
+    private static void checkPlacements(HablaConfig config) throws PlacementRefusedException {
         List<String> refusals = WorkerCheck.refusals(config, WORKER_CHECK_MILLIS);
         if (!refusals.isEmpty()) {
             throw new PlacementRefusedException(refusals);
         }
-        Daemon d = new Daemon(config, MethodGraph.build(config, registry, clock), clock);
+    }
+
+    /** Starts the control sockets and the status endpoint around a built graph, then the graph. */
+    private static Daemon assemble(HablaConfig config, MethodGraph graph, EngineClock clock) throws IOException {
+        Daemon d = new Daemon(config, graph, clock);
         try {
             for (ControlPoint point : d.graph.controlPoints()) {
                 ControlServer server = new ControlServer(point, d.graph.exposeOf(point), config.limits());
@@ -68,6 +96,11 @@ public final class Daemon implements AutoCloseable {
         LOG.info("HABLA daemon '{}' running: {} control sockets{}", config.system(), d.servers.size(),
                 d.statusServer == null ? "" : ", status on port " + d.statusServer.port());
         return d;
+    }
+
+    /** The running graph (a replay pushes the recorded readings into it). */
+    public MethodGraph graph() {
+        return graph;
     }
 
     public HablaConfig config() {

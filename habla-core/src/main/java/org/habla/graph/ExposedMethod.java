@@ -135,6 +135,7 @@ final class ExposedMethod implements ControlPoint {
 
     @Override
     public void writerLeft() {
+        tap.writerLeft(expose.name());
         watchdog.writerLeft();
     }
 

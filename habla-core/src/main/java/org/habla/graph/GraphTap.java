@@ -18,6 +18,20 @@ public interface GraphTap {
     /** A value a control client wrote to an exposed method's input. */
     void control(String socket, String input, Sample sample);
 
+    /**
+     * The last control client that wrote to an exposed method's socket left (the motion watchdog stops the
+     * robot then), so a replay can leave at the same point.
+     */
+    default void writerLeft(String socket) {
+    }
+
+    /**
+     * Periodic work ran: {@code "watchdog"} (the motion watchdog's check) or {@code "tick:METHOD"} (a method's
+     * tick, when the method took it), so a replay runs it between the same events.
+     */
+    default void periodic(String task, long micros) {
+    }
+
     /** An interface link went up or down. */
     void link(String interfaceId, boolean up, long micros);
 

@@ -21,10 +21,12 @@ final class InputSlot {
     private final LongAdder dropped = new LongAdder();
     private final LongAdder conflated = new LongAdder();
     private final Runnable wake;
+    private final WorkCount work;
 
-    InputSlot(Input<?> input, Runnable wake) {
+    InputSlot(Input<?> input, Runnable wake, WorkCount work) {
         this.input = input;
         this.wake = wake;
+        this.work = work;
         if (input.delivery().mode() == Delivery.Mode.LATEST) {
             latest = new AtomicReference<>();
             queue = null;
@@ -43,13 +45,17 @@ final class InputSlot {
         offered.increment();
         boolean taken;
         if (latest != null) {
+            work.begin();
             if (latest.getAndSet(sample) != null) {
                 conflated.increment();
+                work.end();
             }
             taken = true;
         } else {
+            work.begin();
             taken = queue.offer(sample);
             if (!taken) {
+                work.end();
                 dropped.increment();
             }
         }
@@ -59,7 +65,10 @@ final class InputSlot {
         return taken;
     }
 
-    /** The next sample waiting, or null. Called by the method's own thread only. */
+    /**
+     * The next sample waiting, or null. Called by the method's own thread only, which ends the sample's
+     * work count once it has handled it.
+     */
     Sample poll() {
         return latest != null ? latest.getAndSet(null) : queue.poll();
     }

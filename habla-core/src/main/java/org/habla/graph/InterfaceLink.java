@@ -39,6 +39,8 @@ final class InterfaceLink {
     private final Map<String, ConnectionLink> commandRoutes = new HashMap<>();
     private final List<ConnectionLink> connections = new ArrayList<>();
     private final List<Consumer<Boolean>> stateListeners = new ArrayList<>();
+    private final boolean replayed;
+    private final Sink sink = new Sink();
     private final LongAdder malformed = new LongAdder();
     private final LongAdder unknownChannel = new LongAdder();
     private final LongAdder commandsSent = new LongAdder();
@@ -48,7 +50,13 @@ final class InterfaceLink {
     private volatile boolean up;
     private AutoCloseable linkTicker;
 
-    InterfaceLink(InterfaceConfig config, Driver driver, EngineClock clock, GraphTap tap) {
+    /**
+     * @param replayed true when the readings come from a recording instead of the robot: the driver is then
+     *                 only a description of the channels, readings and link changes are pushed in, and commands
+     *                 are absorbed (counted and tapped as sent) instead of written
+     */
+    InterfaceLink(InterfaceConfig config, Driver driver, EngineClock clock, GraphTap tap, boolean replayed) {
+        this.replayed = replayed;
         this.config = config;
         this.clock = clock;
         this.tap = tap;
@@ -61,8 +69,7 @@ final class InterfaceLink {
                 readings.put(c.name(), new OutputPort("@" + config.id() + "." + c.name()));
             }
         }
-        ReadingSink sink = new Sink();
-        for (Connection c : driver.connections()) {
+        for (Connection c : replayed ? List.<Connection>of() : driver.connections()) {
             ConnectionLink link = new ConnectionLink(config.id(), config.address().host(), c, config.reconnect(), sink,
                     this::connectionChanged);
             connections.add(link);
@@ -122,7 +129,7 @@ final class InterfaceLink {
     void command(String channel, Sample sample) {
         ChannelDescriptor d = channels.get(channel);
         ConnectionLink link = commandRoutes.get(channel);
-        if (d == null || link == null) {
+        if (d == null || (link == null && !replayed)) {
             drop(channel, "no connection carries it");
             return;
         }
@@ -132,6 +139,16 @@ final class InterfaceLink {
             drop(channel, "the motion watchdog has stopped the robot");
             return;
         }
+        if (replayed) {
+            if (!up) {
+                tap.command(config.id(), channel, sample, false);
+                drop(channel, "link " + config.id() + " is down in the recording");
+                return;
+            }
+            tap.command(config.id(), channel, sample, true);
+            commandsSent.increment();
+            return;
+        }
         if (!link.command(channel, sample.payload())) {
             tap.command(config.id(), channel, sample, false);
             drop(channel, "link " + config.id() + "/" + link.connection().name() + " is down");
@@ -139,6 +156,26 @@ final class InterfaceLink {
         }
         tap.command(config.id(), channel, sample, true);
         commandsSent.increment();
+    }
+
+    /** A recorded reading, replayed: published exactly as the driver's session (or the link heartbeat) did. */
+    void replayReading(String channel, Payload value, long sourceMicros) {
+        if (Driver.LINK_CHANNEL.name().equals(channel)) {
+            tap.reading(config.id(), channel, readings.get(channel).publish(value, sourceMicros, false));
+            return;
+        }
+        sink.reading(channel, value, sourceMicros);
+    }
+
+    /** A recorded link change, replayed. */
+    void replayLink(boolean isUp) {
+        if (isUp != up) {
+            up = isUp;
+            tap.link(config.id(), isUp, clock.nowMicros());
+            for (Consumer<Boolean> l : stateListeners) {
+                l.accept(isUp);
+            }
+        }
     }
 
     /** Writes the stop of every connection that carries a motion channel, each from a thread of its own. */
@@ -181,6 +218,10 @@ final class InterfaceLink {
     }
 
     private void publishLink() {
+        if (replayed) {
+            // A replay publishes the link records of the recording instead, as they were.
+            return;
+        }
         StringBuilder detail = new StringBuilder();
         for (ConnectionLink c : connections) {
             if (!c.up()) {
@@ -190,7 +231,8 @@ final class InterfaceLink {
         }
         RecordValue value = RecordValue.builder().put("up", up).put("interface", config.id())
                 .put("detail", detail.length() == 0 ? "all connections up" : detail.toString()).build();
-        readings.get(Driver.LINK_CHANNEL.name()).publish(value, clock.nowMicros(), false);
+        tap.reading(config.id(), Driver.LINK_CHANNEL.name(),
+                readings.get(Driver.LINK_CHANNEL.name()).publish(value, clock.nowMicros(), false));
     }
 
     ObjectNode status() {
@@ -199,6 +241,9 @@ final class InterfaceLink {
         n.put("driver", config.driver());
         n.put("address", config.address().toString());
         n.put("up", up);
+        if (replayed) {
+            n.put("replayed", true);
+        }
         n.set("robot", robotInfo);
         ArrayNode conns = n.putArray("connections");
         connections.forEach(c -> conns.add(c.status()));

@@ -44,6 +44,7 @@ public final class MethodGraph implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(MethodGraph.class);
     private static final long STOP_WAIT_MILLIS = 2_000;
+    private static final String WATCHDOG_TASK = "watchdog";
 
     private final HablaConfig config;
     private final EngineClock clock;
@@ -61,9 +62,13 @@ public final class MethodGraph implements AutoCloseable {
     private boolean started;
 
     private final GraphTap tap;
+    private final WorkCount work = new WorkCount();
+    private final boolean replayed;
 
-    private MethodGraph(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap) {
+    private MethodGraph(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
+            Map<String, List<ChannelDescriptor>> recordedChannels) {
         this.tap = tap;
+        this.replayed = recordedChannels != null;
         this.config = config;
         this.clock = clock;
         this.startedMicros = clock.nowMicros();
@@ -75,12 +80,15 @@ public final class MethodGraph implements AutoCloseable {
                     return t;
                 });
         for (InterfaceConfig ic : config.interfaces()) {
-            links.put(ic.id(), new InterfaceLink(ic, createDriver(registry, ic), clock, tap));
+            org.habla.driver.Driver driver = replayed ? new RecordedDriver(recordedChannels.getOrDefault(ic.id(), List.of()))
+                    : createDriver(registry, ic);
+            links.put(ic.id(), new InterfaceLink(ic, driver, clock, tap, replayed));
         }
         this.watchdog = new MotionWatchdog(config.safety().watchdogMs(), clock, List.copyOf(links.values()));
         links.values().forEach(l -> l.watchdog(watchdog));
         for (MethodConfig mc : config.methods()) {
-            runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc), clock, backgroundPool));
+            runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc), clock, backgroundPool,
+                    work, tap));
         }
         for (MethodConfig mc : config.methods()) {
             if (mc.host().isPresent()) {
@@ -105,12 +113,85 @@ public final class MethodGraph implements AutoCloseable {
 
     /** Builds the graph of a checked config. Nothing runs until {@link #start()}. */
     public static MethodGraph build(HablaConfig config, PluginRegistry registry, EngineClock clock) {
-        return new MethodGraph(config, registry, clock, GraphTap.NONE);
+        return new MethodGraph(config, registry, clock, GraphTap.NONE, null);
     }
 
     /** Builds the graph with a tap that sees everything crossing its edges (for recording). */
     public static MethodGraph build(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap) {
-        return new MethodGraph(config, registry, clock, tap);
+        return new MethodGraph(config, registry, clock, tap, null);
+    }
+
+    /**
+     * Builds a graph that replays a recording: every interface has the recorded channels but no connection;
+     * readings and link changes come in through {@link #replayReading} and {@link #replayLink}, and commands
+     * are absorbed — counted and tapped, never written anywhere.
+     */
+    public static MethodGraph replaying(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
+            Map<String, List<ChannelDescriptor>> channels) {
+        return new MethodGraph(config, registry, clock, tap, Map.copyOf(channels));
+    }
+
+    /** Publishes a recorded reading on an interface channel of a replaying graph. */
+    public void replayReading(String interfaceId, String channel, org.habla.sample.Payload value, long sourceMicros) {
+        replayedLink(interfaceId).replayReading(channel, value, sourceMicros);
+    }
+
+    /** Sets the state of an interface link of a replaying graph, as recorded. */
+    public void replayLink(String interfaceId, boolean up) {
+        replayedLink(interfaceId).replayLink(up);
+    }
+
+    /**
+     * Runs recorded periodic work of a replaying graph ({@link GraphTap#periodic}'s task names); false for a
+     * task this graph does not have.
+     */
+    public boolean replayPeriodic(String task) {
+        if (!replayed) {
+            throw new IllegalStateException("this graph runs live interfaces, not a recording");
+        }
+        if (task.equals(WATCHDOG_TASK)) {
+            watchdog.check();
+            return true;
+        }
+        if (task.startsWith(MethodRunner.TICK_PREFIX)) {
+            MethodRunner r = runners.get(task.substring(MethodRunner.TICK_PREFIX.length()));
+            if (r != null) {
+                r.requestTick();
+                return true;
+            }
+        }
+        return false;
+    }
+
+    private InterfaceLink replayedLink(String interfaceId) {
+        if (!replayed) {
+            throw new IllegalStateException("this graph runs live interfaces, not a recording");
+        }
+        InterfaceLink link = links.get(interfaceId);
+        if (link == null) {
+            throw new IllegalArgumentException("no interface '" + interfaceId + "' in the config");
+        }
+        return link;
+    }
+
+    /**
+     * Waits until every effect of what came in has been handled — no sample waiting or being handled, no turn
+     * or background task under way; false if that took longer than {@code millis}.
+     */
+    public boolean awaitIdle(long millis) throws InterruptedException {
+        return work.awaitIdle(millis);
+    }
+
+    /**
+     * Every interface's channels as its driver describes them, in config order, without connecting to
+     * anything (for a recording's header).
+     */
+    public static Map<String, List<ChannelDescriptor>> channels(HablaConfig config, PluginRegistry registry) {
+        Map<String, List<ChannelDescriptor>> m = new LinkedHashMap<>();
+        for (InterfaceConfig ic : config.interfaces()) {
+            m.put(ic.id(), List.copyOf(createDriver(registry, ic).channels()));
+        }
+        return m;
     }
 
     @SuppressWarnings({"unchecked", "rawtypes"})
@@ -248,7 +329,10 @@ public final class MethodGraph implements AutoCloseable {
         runners.values().forEach(MethodRunner::start);
         links.values().forEach(InterfaceLink::start);
         placements.values().forEach(RemotePlacement::start);
-        watchdogTicker = clock.every(50_000, watchdog::check);
+        watchdogTicker = clock.every(50_000, () -> {
+            tap.periodic(WATCHDOG_TASK, clock.nowMicros());
+            watchdog.check();
+        });
         LOG.info("graph of '{}' started: {} methods, {} interfaces, {} sockets", config.system(), runners.size(),
                 links.size(), exposed.size());
     }

@@ -59,14 +59,22 @@ final class MethodRunner implements MethodContext {
     private RemotePlacement placement;
     private volatile boolean localStarted;
 
-    MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool) {
+    static final String TICK_PREFIX = "tick:";
+
+    private final WorkCount work;
+    private final GraphTap tap;
+
+    MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
+            WorkCount work, GraphTap tap) {
+        this.work = work;
+        this.tap = tap;
         this.id = id;
         this.type = type;
         this.method = method;
         this.clock = clock;
         this.backgroundPool = backgroundPool;
         for (Input<?> in : method.inputs()) {
-            InputSlot slot = new InputSlot(in, this::wake);
+            InputSlot slot = new InputSlot(in, this::wake, work);
             slots.add(slot);
             slotByInput.put(in, slot);
         }
@@ -215,9 +223,11 @@ final class MethodRunner implements MethodContext {
         }
     }
 
-    private void requestTick() {
+    /** Asks for a tick; one already waiting takes this one's place (ticks never pile up behind a busy method). */
+    void requestTick() {
         if (tickPending.compareAndSet(false, true)) {
-            turns.add(() -> {
+            tap.periodic(TICK_PREFIX + id, clock.nowMicros());
+            addTurn(() -> {
                 tickPending.set(false);
                 if (placement == null || !placement.up()) {
                     method.tick(clock.nowMicros());
@@ -225,6 +235,11 @@ final class MethodRunner implements MethodContext {
             });
             wake();
         }
+    }
+
+    private void addTurn(Runnable turn) {
+        work.begin();
+        turns.add(turn);
     }
 
     private void wake() {
@@ -255,7 +270,11 @@ final class MethodRunner implements MethodContext {
                 long now = clock.nowMicros();
                 latency.record(now - s.sourceMicros());
                 handled.mark(now);
-                route(slot.input(), s);
+                try {
+                    route(slot.input(), s);
+                } finally {
+                    work.end();
+                }
             }
         }
         for (int n = turns.size(); n > 0; n--) {
@@ -264,7 +283,11 @@ final class MethodRunner implements MethodContext {
                 break;
             }
             worked = true;
-            turn.run();
+            try {
+                turn.run();
+            } finally {
+                work.end();
+            }
         }
         return worked;
     }
@@ -326,17 +349,21 @@ final class MethodRunner implements MethodContext {
 
     @Override
     public <T> void background(String what, Callable<T> task, Consumer<T> done) {
+        work.begin();
         try {
             backgroundPool.execute(() -> {
                 try {
                     T result = task.call();
-                    turns.add(() -> method.runTurn(what, () -> done.accept(result)));
+                    addTurn(() -> method.runTurn(what, () -> done.accept(result)));
                 } catch (Exception | LinkageError e) {
-                    turns.add(() -> method.fail(what, e));
+                    addTurn(() -> method.fail(what, e));
+                } finally {
+                    work.end();
                 }
                 wake();
             });
         } catch (RejectedExecutionException e) {
+            work.end();
             LOG.debug("background work '{}' of {} refused: the engine is stopping", what, id);
         }
     }

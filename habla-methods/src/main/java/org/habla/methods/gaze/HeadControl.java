@@ -19,8 +19,8 @@ import org.habla.sample.VectorValue;
  * towards it: the blob's angular offset from the image centre (from the camera's field of view, input
  * {@code camera} or params) times {@code gain} is added to the head's pan and tilt, and output
  * {@code head} sends the vector {@code [tiltRad, panRad, nodRad]} within the joint limits. The offset
- * is taken from the head's measured pose (input {@code head}) when wired, as the image was taken
- * there, else from the last command. When the target has been out of sight for {@code lostAfterMs}
+ * is taken from the head's measured pose (input {@code head}) when wired — the pose read when the image
+ * was taken, matched by the readings' times — else from the last command. When the target has been out of sight for {@code lostAfterMs}
  * the head scans: the tilt goes to {@code scanTiltRad} and the pan sweeps between
  * ±{@code scanPanRad} at {@code scanSpeedRadps}, one step every {@code periodMs}, until the target
  * shows again.
@@ -33,7 +33,7 @@ public final class HeadControl extends ProcessingMethod {
             Shape.vector("rad", "[tiltRad, panRad, nodRad] that keeps the target in view"));
 
     private CameraModel camera;
-    private HeadPose measured;
+    private final PoseHistory measured = new PoseHistory();
     private HeadPose commanded;
     private long lastSeenMicros = Long.MIN_VALUE;
     private double scanDirection = 1;
@@ -65,7 +65,7 @@ public final class HeadControl extends ProcessingMethod {
     }
 
     private void onHead(RecordValue record, Sample sample) {
-        HeadPose.fromRecord(record).ifPresent(p -> measured = p);
+        HeadPose.fromRecord(record).ifPresent(p -> measured.add(sample.sourceMicros(), p));
     }
 
     private void onBlobs(RecordValue record, Sample sample) {
@@ -87,7 +87,8 @@ public final class HeadControl extends ProcessingMethod {
         double[] ray = cam.ray(blob.get("cx").doubleValue(), blob.get("cy").doubleValue());
         double left = Math.atan(ray[1]);
         double up = Math.atan(ray[2]);
-        HeadPose base = measured != null ? measured : commanded;
+        HeadPose then = measured.at(sample.sourceMicros());
+        HeadPose base = then != null ? then : commanded;
         double pan = base.panRad() + (Math.abs(left) > params.deadbandRad() ? params.gain() * left : 0);
         double tilt = base.tiltRad() + (Math.abs(up) > params.deadbandRad() ? params.gain() * up : 0);
         lastSeenMicros = nowMicros();

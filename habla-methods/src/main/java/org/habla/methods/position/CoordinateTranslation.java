@@ -10,6 +10,7 @@ import org.habla.method.builtin.SimpleMethodProvider;
 import org.habla.methods.geometry.CameraModel;
 import org.habla.methods.geometry.PlanarPose;
 import org.habla.methods.gaze.HeadPose;
+import org.habla.methods.gaze.PoseHistory;
 import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
 
@@ -25,7 +26,8 @@ import org.habla.sample.Sample;
  *   <li>{@code blobs} (with {@code head} and {@code camera}): the image segmentation's blobs; the
  *       largest blob of the {@code label} is located by {@link BlobFix} from its size (a ball of
  *       {@code targetRadiusM}) or from where its ray meets the floor, through the head's pan, tilt and
- *       nod and the camera's geometry. With no such blob the record says {@code seen: false} and keeps
+ *       nod (as they were when the image was taken, matched by the readings' times) and the camera's
+ *       geometry. With no such blob the record says {@code seen: false} and keeps
  *       the last sighting.</li>
  *   <li>{@code odometry} (optional, a pose record {@code xM, yM, thetaRad}): adds the world-frame
  *       {@code xWorldM}, {@code yWorldM} of the target.</li>
@@ -39,7 +41,7 @@ public final class CoordinateTranslation extends ProcessingMethod {
                     "xM", "yM", "distanceM", "angleRad", "seen"));
 
     private CameraModel camera;
-    private HeadPose head = HeadPose.STRAIGHT;
+    private final PoseHistory heads = new PoseHistory();
     private PlanarPose odometry;
     private double lastX;
     private double lastY;
@@ -77,7 +79,7 @@ public final class CoordinateTranslation extends ProcessingMethod {
     }
 
     private void onHead(RecordValue record, Sample sample) {
-        HeadPose.fromRecord(record).ifPresentOrElse(p -> head = p, () -> rejected++);
+        HeadPose.fromRecord(record).ifPresentOrElse(p -> heads.add(sample.sourceMicros(), p), () -> rejected++);
     }
 
     private void onOdometry(RecordValue record, Sample sample) {
@@ -119,7 +121,7 @@ public final class CoordinateTranslation extends ProcessingMethod {
         BlobFix fix = new BlobFix(cam, params.targetRadiusM(), params.cameraXM(), params.lensForwardM(),
                 params.minRadiusPx());
         BlobFix.Fix found = fix.locate(num(blob, "cx"), num(blob, "cy"), num(blob, "x"), num(blob, "y"),
-                num(blob, "w"), num(blob, "h"), head).orElse(null);
+                num(blob, "w"), num(blob, "h"), headAt(sample.sourceMicros())).orElse(null);
         if (found == null) {
             emitPosition(false, null);
             return;
@@ -127,6 +129,12 @@ public final class CoordinateTranslation extends ProcessingMethod {
         remember(found.xM(), found.yM(),
                 Math.max(0, Math.hypot(found.xM(), found.yM()) - params.targetRadiusM() - params.bodyRadiusM()));
         emitPosition(true, found);
+    }
+
+    /** Where the head pointed when the image was taken (its reading time), straight ahead if unknown. */
+    private HeadPose headAt(long imageMicros) {
+        HeadPose p = heads.at(imageMicros);
+        return p == null ? HeadPose.STRAIGHT : p;
     }
 
     /** The camera with this image's size, from the blobs record's width and height. */

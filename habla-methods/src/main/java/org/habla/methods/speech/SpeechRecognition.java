@@ -143,11 +143,25 @@ public final class SpeechRecognition extends ProcessingMethod {
         busy = true;
         Pending next = pending.removeFirst();
         SphinxDecoder d = decoder;
-        background("recognise an utterance", () -> d.decode(next.audio()), decoded -> {
+        background("recognise an utterance", () -> decodeOrSkip(d, next.audio()), decoded -> {
             busy = false;
             decoded.ifPresent(r -> publish(r, next));
             decodeNext();
         });
+    }
+
+    /**
+     * Decodes on the engine's pool. An utterance Sphinx chokes on is skipped with a warning rather than
+     * failing the method: the next one may be fine, and the teacher keeps talking.
+     */
+    private Optional<SphinxDecoder.Decoded> decodeOrSkip(SphinxDecoder d, AudioChunk utterance) {
+        try {
+            return d.decode(utterance);
+        } catch (RuntimeException e) {
+            log().warn("{}: Sphinx-4 could not decode an utterance of {} ms, skipped: {}", id(),
+                    utterance.frameCount() * 1000L / SPHINX_RATE_HZ, e.toString());
+            return Optional.empty();
+        }
     }
 
     private void publish(SphinxDecoder.Decoded r, Pending utterance) {

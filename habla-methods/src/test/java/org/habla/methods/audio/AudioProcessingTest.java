@@ -87,8 +87,12 @@ class AudioProcessingTest {
         assertThat(f.get(5).number("db")).isEqualTo(-120);
         assertThat(f.get(5).number("pitchHz")).isZero();
         // the noise starts loud against digital silence: one long segment at most, then the floor adapts
+        long t0 = System.nanoTime();
         Signals.stream(h.clear(), "audio", Signals.noise(0.05, 3, RATE, new Random(6)), AudioFormat.MONO_16K, 20,
                 4_000_000);
+        double ms = (System.nanoTime() - t0) / 1e6;
+        System.out.printf("audio-processing: 3 s of audio analysed in %.0f ms (%.0f times real time)%n", ms,
+                3000 / ms);
         assertThat(h.values("segments")).isEmpty();
     }
 

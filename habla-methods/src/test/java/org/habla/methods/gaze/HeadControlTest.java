@@ -103,6 +103,17 @@ class HeadControlTest {
     }
 
     @Test
+    void theCorrectionStartsFromThePoseTheImageWasTakenAt() {
+        MethodHarness h = MethodHarness.started("gaze", new HeadControl(HeadControlParams.defaults()));
+        h.push("camera", CAMERA.toRecord());
+        long t0 = h.nowMicros();
+        h.push("head", new HeadPose(-0.2, 0.1, 0).toRecord(), t0);
+        h.push("head", new HeadPose(-0.2, 0.4, 0).toRecord(), t0 + 80_000);
+        h.push("blobs", blobsAt(new double[] {104, 80}, "pink"), t0 + 40_000);
+        assertThat(pose(h.last("head")).panRad()).as("centred in an image taken at pan 0.1").isEqualTo(0.1);
+    }
+
+    @Test
     void blobsOfOtherLabelsAreIgnoredAndCommandsStayWithinTheLimits() {
         MethodHarness h = MethodHarness.started("gaze", new HeadControl(HeadControlParams.defaults()));
         h.push("camera", CAMERA.toRecord());

@@ -69,7 +69,11 @@ class NoteRecognitionTest {
             }
         }
         MethodHarness h = MethodHarness.started("notes", new NoteRecognition(teacherNotes()));
+        long t0 = System.nanoTime();
         stream(h, x);
+        double ms = (System.nanoTime() - t0) / 1e6;
+        System.out.printf("note-recognition: %.0f s of audio analysed in %.0f ms (%.0f times real time)%n",
+                x.length / (double) RATE, ms, x.length / (double) RATE * 1000 / ms);
 
         int[] heard = new int[played.size()];
         int correct = 0;

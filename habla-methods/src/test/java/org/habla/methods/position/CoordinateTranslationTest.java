@@ -165,6 +165,24 @@ class CoordinateTranslationTest {
     }
 
     @Test
+    void aBlobIsPlacedWithTheHeadPoseOfTheMomentItsImageWasTaken() {
+        MethodHarness h = started(CoordinateTranslationParams.defaults(), CAMERA);
+        long t0 = h.nowMicros();
+        HeadPose then = new HeadPose(-0.3, 0.2, 0);
+        HeadPose now = new HeadPose(-0.3, 0.5, 0);
+        h.push("head", then.toRecord(), t0);
+        h.push("head", now.toRecord(), t0 + 100_000);
+        ObjectNode blob = projectedBlob(1.0, 0.3, then, CAMERA, false);
+        h.push("blobs", blobs(CAMERA, blob), t0 + 60_000);
+        RecordValue matched = (RecordValue) h.last("position");
+        assertThat(matched.number("angleRad")).isCloseTo(Math.atan2(0.3, 1.0), within(0.01));
+        h.push("blobs", blobs(CAMERA, blob), t0 + 120_000);
+        RecordValue skewed = (RecordValue) h.last("position");
+        assertThat(skewed.number("angleRad") - Math.atan2(0.3, 1.0)).as("the later pose turns it by the pan moved")
+                .isCloseTo(0.3, within(0.02));
+    }
+
+    @Test
     void noBlobOfTheLabelSaysNotSeenAndKeepsTheLastSighting() {
         MethodHarness h = started(CoordinateTranslationParams.defaults(), CAMERA);
         HeadPose head = new HeadPose(-0.3, 0, 0);

@@ -221,10 +221,12 @@ public final class AiboSimulator implements AutoCloseable {
     private final class Voice implements TeacherVoice {
 
         @Override
-        public void giveCommand(String label) {
+        public double giveCommand(String label) {
             String phrase = scene.world().teacher().phrases().get(label);
-            microphone.play(utterances.take(phrase), MicrophoneServer.samplesAt(time.nowMs()));
+            short[] take = utterances.take(phrase);
+            microphone.play(take, MicrophoneServer.samplesAt(time.nowMs()));
             lastPhrase = phrase;
+            return take.length / 16_000.0;
         }
 
         @Override

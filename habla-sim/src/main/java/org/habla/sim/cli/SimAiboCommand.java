@@ -118,10 +118,6 @@ public final class SimAiboCommand implements Callable<Integer> {
 
     /** A file if one exists at that path, else a built-in world by name (with or without {@code .json}). */
     static World loadWorld(String name) throws IOException {
-        Path file = Path.of(name);
-        if (Files.isRegularFile(file)) {
-            return World.load(file);
-        }
-        return World.builtIn(name.endsWith(".json") ? name.substring(0, name.length() - 5) : name);
+        return World.named(name);
     }
 }

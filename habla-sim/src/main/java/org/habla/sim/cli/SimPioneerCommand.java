@@ -27,8 +27,9 @@ public final class SimPioneerCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
-    @Option(names = "--world", paramLabel = "FILE", description = "A world file (default: the built-in pioneer-room).")
-    private Path world;
+    @Option(names = "--world", paramLabel = "FILE",
+            description = "A world file, or the name of a built-in world (default: pioneer-room).")
+    private String world;
 
     @Option(names = "--speed", paramLabel = "S", defaultValue = "1",
             description = "Sim time runs S times faster than real time, S >= 1 (default ${DEFAULT-VALUE}).")
@@ -78,7 +79,7 @@ public final class SimPioneerCommand implements Callable<Integer> {
             if (!(durationS >= 0)) {
                 throw new IllegalArgumentException("--duration must be >= 0");
             }
-            World w = world == null ? World.builtIn("pioneer-room") : World.load(world);
+            World w = world == null ? World.builtIn("pioneer-room") : World.named(world);
             options = new PioneerSimOptions(w, speed, seed, port, micPort, keysPort, truthPort, teacher.equals("on"),
                     sonarNoiseM);
         } catch (IOException | IllegalArgumentException e) {

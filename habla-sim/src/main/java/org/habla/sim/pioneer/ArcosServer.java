@@ -11,6 +11,7 @@ import java.net.Socket;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.LongAdder;
 import java.util.function.Consumer;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -96,7 +97,7 @@ final class ArcosServer implements AutoCloseable {
         private final Socket socket;
         private final BlockingQueue<byte[]> outbox = new ArrayBlockingQueue<>(OUTBOX_PACKETS);
         private volatile boolean gone;
-        private long dropped;
+        private final LongAdder dropped = new LongAdder();
 
         Client(Socket socket) {
             this.socket = socket;
@@ -105,7 +106,7 @@ final class ArcosServer implements AutoCloseable {
         @Override
         public void accept(byte[] wire) {
             if (!gone && !outbox.offer(wire)) {
-                dropped++;
+                dropped.increment();
             }
         }
 
@@ -156,8 +157,8 @@ final class ArcosServer implements AutoCloseable {
             }
             gone = true;
             controller.detach(this);
-            if (dropped > 0) {
-                LOG.info("{} packets to the ARCOS client were dropped because it did not read them", dropped);
+            if (dropped.sum() > 0) {
+                LOG.info("{} packets to the ARCOS client were dropped because it did not read them", dropped.sum());
             }
             try {
                 socket.close();

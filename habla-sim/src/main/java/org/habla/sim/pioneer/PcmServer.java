@@ -10,6 +10,7 @@ import java.net.Socket;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.LongAdder;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -28,7 +29,7 @@ final class PcmServer implements AutoCloseable {
     private final ServerSocket listener;
     private volatile boolean closed;
     private volatile Listener current;
-    private volatile long droppedChunks;
+    private final LongAdder droppedChunks = new LongAdder();
 
     PcmServer(int port) throws IOException {
         ServerSocket server = new ServerSocket();
@@ -51,7 +52,7 @@ final class PcmServer implements AutoCloseable {
     }
 
     long droppedChunks() {
-        return droppedChunks;
+        return droppedChunks.sum();
     }
 
     /** Whether a client is connected. */
@@ -63,7 +64,7 @@ final class PcmServer implements AutoCloseable {
     void send(byte[] pcm) {
         Listener l = current;
         if (l != null && !l.outbox.offer(pcm)) {
-            droppedChunks++;
+            droppedChunks.increment();
         }
     }
 

@@ -24,12 +24,13 @@ final class PioneerTeacherVoice implements TeacherVoice {
     }
 
     @Override
-    public void giveCommand(String label) {
+    public double giveCommand(String label) {
         NoteName note = notes.get(label);
         if (note == null) {
             throw new IllegalArgumentException("no note for the command '" + label + "'");
         }
         microphone.play(note);
+        return Microphone.NOTE_S;
     }
 
     @Override

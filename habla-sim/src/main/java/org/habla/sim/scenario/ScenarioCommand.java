@@ -84,8 +84,16 @@ public final class ScenarioCommand implements Callable<Integer> {
         Path dir = report != null ? report : root.resolve("reports").resolve(robot);
         ScenarioRunner.Options opts = new ScenarioRunner.Options(sc, episodes != null ? episodes : sc.episodes(), s, seed,
                 dir, portOffset, root);
-        List<EpisodeLog> logs = new ScenarioRunner(opts, out).run();
-        ScenarioReports.write(dir, robot, opts, logs);
+        List<EpisodeResult> logs;
+        try {
+            logs = new ScenarioRunner(opts, out).run();
+        } catch (IOException e) {
+            err.println("habla scenario: " + e.getMessage());
+            err.println("logs of the simulator, the daemon and the control program are in " + dir);
+            err.flush();
+            return ExitCodes.RUNTIME_FAILURE;
+        }
+        ScenarioReport.write(dir, robot, logs);
         out.println("report: " + dir.resolve("report.md"));
         out.flush();
         return ExitCodes.OK;

@@ -34,7 +34,7 @@ final class ScenarioRunner {
         this.out = out;
     }
 
-    List<EpisodeLog> run() throws IOException, InterruptedException {
+    List<EpisodeResult> run() throws IOException, InterruptedException {
         ScenarioFile sc = o.scenario();
         Files.createDirectories(o.reportDir());
         Path robotConfig = o.home().resolve(sc.config());
@@ -47,11 +47,17 @@ final class ScenarioRunner {
         }
         Path derived = DerivedConfig.write(robotConfig, o.speed(), o.portOffset(), o.reportDir().resolve("daemon-config.json"));
         int truthPort = (sc.robot().equals("pioneer") ? 8199 : 10199) + o.portOffset();
-        List<EpisodeLog> episodes = new ArrayList<>();
+        List<EpisodeResult> episodes = new ArrayList<>();
         try (Children children = new Children()) {
             Children.Child sim = children.start("simulator", simCommand(truthPort), o.home(), o.reportDir().resolve("simulator.log"));
             say("simulated %s started (speed %sx); waiting for its ground truth on port %d", sc.robot(), fmt(o.speed()), truthPort);
-            try (TruthLink truth = TruthLink.connect(truthPort, 60_000)) {
+            TruthLink link;
+            try {
+                link = TruthLink.connect(truthPort, 60_000, sim::alive);
+            } catch (IOException e) {
+                throw new IOException(e.getMessage() + "; see " + sim.log() + ": " + tail(sim.log()), e);
+            }
+            try (TruthLink truth = link) {
                 truth.send(TruthLink.op("teacher").put("present", false));
                 Children.Child daemon = children.start("daemon",
                         Children.habla("run", derived.toString(), "--time-scale", fmt(o.speed())), o.home(),
@@ -93,48 +99,68 @@ final class ScenarioRunner {
         return Children.habla(args.toArray(String[]::new));
     }
 
-    private EpisodeLog episode(int n, TruthLink truth, List<Children.Child> procs) throws IOException, InterruptedException {
+    private EpisodeResult episode(int n, TruthLink truth, List<Children.Child> procs) throws IOException, InterruptedException {
         ScenarioFile sc = o.scenario();
-        ScenarioFile.StartPose start = sc.starts().get((n - 1) % sc.starts().size());
-        ObjectNode reset = TruthLink.op("reset");
-        reset.putObject("robot").put("xM", start.xM()).put("yM", start.yM()).put("thetaRad", start.thetaRad());
-        truth.send(reset);
-        JsonNode first = next(truth, Double.NEGATIVE_INFINITY, procs);
-        double t0 = first.path("t").asDouble();
+        List<ScenarioFile.StartPose> starts = sc.starts();
+        ScenarioFile.StartPose start = starts.get((n - 1) % starts.size());
+        place(truth, start);
+        JsonNode s = next(truth, Double.NEGATIVE_INFINITY, procs);
+        double t0 = s.path("t").asDouble();
         truth.send(TruthLink.op("teacher").put("present", true));
-        say("episode %d/%d: teacher present for %ss, robot at (%.2f, %.2f)", n, o.episodes(), fmt(sc.teacherS()),
+        say("episode %d/%d: the teacher is present for %ss; robot at (%.2f, %.2f)", n, o.episodes(), fmt(sc.teacherS()),
                 start.xM(), start.yM());
-        List<double[]> distance = new ArrayList<>();
-        int[][] counts = new int[3][];
+        List<DistanceSample> distance = new ArrayList<>();
+        List<PhaseObedience> phases = new ArrayList<>();
         double[] thirds = {t0 + sc.teacherS() / 3, t0 + 2 * sc.teacherS() / 3, t0 + sc.teacherS()};
+        String[] names = {"taught, first third", "taught, second third", "taught, last third"};
         int third = 0;
+        int[] before = {0, 0};
+        int reachedWhileTaught = 0;
+        int[] base = {0, 0, 0};   // counts before a restart of the teacher's episode counts
         double lastSay = t0;
-        JsonNode s = first;
         while (third < 3) {
             s = next(truth, s.path("t").asDouble(), procs);
             double t = s.path("t").asDouble();
-            distance.add(new double[] {t - t0, s.path("distanceM").asDouble()});
+            double d = s.path("distanceM").asDouble();
+            distance.add(new DistanceSample(t - t0, d));
+            JsonNode tch = s.path("teacher");
+            int commands = base[0] + tch.path("commands").asInt();
+            int plus = base[1] + tch.path("plus").asInt();
+            int minus = base[2] + tch.path("minus").asInt();
             while (third < 3 && t >= thirds[third]) {
-                JsonNode tch = s.path("teacher");
-                counts[third++] = new int[] {tch.path("commands").asInt(), tch.path("plus").asInt(), tch.path("minus").asInt()};
+                int judged = plus + minus - before[0] - before[1];
+                phases.add(new PhaseObedience(names[third], judged, plus - before[0]));
+                before = new int[] {plus, minus};
+                third++;
+            }
+            if (third < 3 && d <= sc.reachM()) {
+                // Reached while taught: teaching goes on from another start.
+                reachedWhileTaught++;
+                base = new int[] {commands, plus, minus};
+                place(truth, starts.get((n + reachedWhileTaught) % starts.size()));
+                s = next(truth, t, procs);
             }
             if (t - lastSay >= 15) {
                 lastSay = t;
-                JsonNode tch = s.path("teacher");
-                say("  episode %d  taught  t=%5.1fs  distance %.2f m  rewards +%d −%d", n, t - t0,
-                        s.path("distanceM").asDouble(), tch.path("plus").asInt(), tch.path("minus").asInt());
+                say("  episode %d  taught  t=%5.1fs  distance %.2f m  commands %d  rewards +%d −%d", n, t - t0, d,
+                        commands, plus, minus);
             }
         }
         truth.send(TruthLink.op("teacher").put("present", false));
+        // The robot is put at a fresh start, away from the object, for the phase that counts.
+        ScenarioFile.StartPose alone = starts.get((n + starts.size() / 2) % starts.size());
+        place(truth, alone);
+        s = next(truth, s.path("t").asDouble(), procs);
         double left = s.path("t").asDouble();
-        say("  episode %d  teacher left at t=%.1fs; distance %.2f m", n, left - t0, s.path("distanceM").asDouble());
+        say("  episode %d  the teacher left at t=%.1fs (object reached %d times while taught); robot put at (%.2f, %.2f), "
+                + "%.2f m from the object", n, left - t0, reachedWhileTaught, alone.xM(), alone.yM(), s.path("distanceM").asDouble());
         boolean reached = false;
         double reachAfter = Double.NaN;
         while (s.path("t").asDouble() < left + sc.aloneS()) {
             s = next(truth, s.path("t").asDouble(), procs);
             double t = s.path("t").asDouble();
             double d = s.path("distanceM").asDouble();
-            distance.add(new double[] {t - t0, d});
+            distance.add(new DistanceSample(t - t0, d));
             if (d <= sc.reachM()) {
                 reached = true;
                 reachAfter = t - left;
@@ -145,20 +171,19 @@ final class ScenarioRunner {
                 say("  episode %d  alone   t=%5.1fs  distance %.2f m", n, t - t0, d);
             }
         }
-        double[] obedience = new double[3];
-        int[] prev = {0, 0, 0};
-        for (int i = 0; i < 3; i++) {
-            int plus = counts[i][1] - prev[1];
-            int minus = counts[i][2] - prev[2];
-            obedience[i] = plus + minus == 0 ? Double.NaN : (double) plus / (plus + minus);
-            prev = counts[i];
-        }
-        EpisodeLog log = new EpisodeLog(n, start, obedience, counts[2][0], counts[2][1], counts[2][2], distance,
-                left - t0, reached, reachAfter, s.path("distanceM").asDouble());
-        say("  episode %d: obedience %s; %s", n, pct(log.overallObedience()),
+        EpisodeResult r = new EpisodeResult(n, phases, distance, reached, reachAfter);
+        int judged = phases.stream().mapToInt(PhaseObedience::commands).sum();
+        int obeyed = phases.stream().mapToInt(PhaseObedience::obeyed).sum();
+        say("  episode %d: obeyed %d of %d judged commands; %s", n, obeyed, judged,
                 reached ? String.format(Locale.ROOT, "reached the object %.1fs after the teacher left", reachAfter)
-                        : String.format(Locale.ROOT, "did not reach the object (%.2f m left)", log.finalDistanceM()));
-        return log;
+                        : String.format(Locale.ROOT, "did not reach the object (%.2f m left)", s.path("distanceM").asDouble()));
+        return r;
+    }
+
+    private static void place(TruthLink truth, ScenarioFile.StartPose p) throws IOException, InterruptedException {
+        ObjectNode reset = TruthLink.op("reset");
+        reset.putObject("robot").put("xM", p.xM()).put("yM", p.yM()).put("thetaRad", p.thetaRad());
+        truth.send(reset);
     }
 
     /** The next state line after simulated time {@code after}; fails if a process died or the world stalled. */
@@ -181,6 +206,16 @@ final class ScenarioRunner {
         throw new IOException("the simulated world did not advance for 20 s");
     }
 
+    /** The last lines of a log, for an error message. */
+    static String tail(Path log) {
+        try {
+            List<String> lines = Files.readAllLines(log);
+            return String.join(" | ", lines.subList(Math.max(0, lines.size() - 3), lines.size()));
+        } catch (IOException e) {
+            return "(unreadable)";
+        }
+    }
+
     private static void awaitPort(int port, long timeoutMs, Children.Child owner) throws IOException, InterruptedException {
         long end = System.nanoTime() + timeoutMs * 1_000_000L;
         while (System.nanoTime() < end) {
@@ -197,15 +232,19 @@ final class ScenarioRunner {
         throw new IOException("port " + port + " did not open within " + timeoutMs + " ms; see " + owner.log());
     }
 
-    private void summary(List<EpisodeLog> eps) {
+    private void summary(List<EpisodeResult> eps) {
         say("");
-        say("%-8s %-10s %-10s %-10s %-10s %-9s %s", "episode", "obey 1/3", "obey 2/3", "obey 3/3", "commands", "reached", "after");
+        say("%-8s %-12s %-12s %-12s %-9s %s", "episode", "obeyed 1/3", "obeyed 2/3", "obeyed 3/3", "reached", "after");
         int reached = 0;
-        for (EpisodeLog e : eps) {
+        for (EpisodeResult e : eps) {
             reached += e.reached() ? 1 : 0;
-            say("%-8d %-10s %-10s %-10s %-10d %-9s %s", e.episode(), pct(e.obedience()[0]), pct(e.obedience()[1]),
-                    pct(e.obedience()[2]), e.commands(), e.reached() ? "yes" : "no",
-                    e.reached() ? String.format(Locale.ROOT, "%.1fs", e.reachAfterS()) : "-");
+            String[] ob = new String[3];
+            for (int i = 0; i < 3; i++) {
+                PhaseObedience p = i < e.obedience().size() ? e.obedience().get(i) : null;
+                ob[i] = p == null || p.commands() == 0 ? "-" : p.obeyed() + "/" + p.commands();
+            }
+            say("%-8d %-12s %-12s %-12s %-9s %s", e.episode(), ob[0], ob[1], ob[2], e.reached() ? "yes" : "no",
+                    e.reached() ? String.format(Locale.ROOT, "%.1fs", e.timeToReachS()) : "-");
         }
         say("reached after the teacher left: %d of %d episodes (%s)", reached, eps.size(),
                 pct(eps.isEmpty() ? Double.NaN : (double) reached / eps.size()));

@@ -40,9 +40,18 @@ public final class TruthLink implements AutoCloseable {
 
     /** Connects, retrying until {@code timeoutMs} has passed (the simulator may still be starting). */
     public static TruthLink connect(int port, long timeoutMs) throws IOException, InterruptedException {
+        return connect(port, timeoutMs, () -> true);
+    }
+
+    /** Connects, retrying while {@code serverAlive} says the simulator still runs. */
+    public static TruthLink connect(int port, long timeoutMs, java.util.function.BooleanSupplier serverAlive)
+            throws IOException, InterruptedException {
         long end = System.nanoTime() + timeoutMs * 1_000_000L;
         IOException last = null;
         while (System.nanoTime() < end) {
+            if (!serverAlive.getAsBoolean()) {
+                throw new IOException("the simulator stopped before its ground truth on port " + port + " opened");
+            }
             Socket s = new Socket();
             try {
                 s.connect(new InetSocketAddress("127.0.0.1", port), 1_000);

@@ -10,7 +10,8 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
  * @param angleRad  bearing of the target's centre in the robot's frame, + left
  */
 public record GroundTruth(double t, Pose2 robot, Target target, double distanceM, double angleRad, boolean stalled,
-                          boolean teacherPresent, String lastCommand, Double lastReward, int episode) {
+                          boolean teacherPresent, String lastCommand, Double lastReward, int commands, int plus,
+                          int minus, int episode) {
 
     /** The contract's JSON shape. */
     public ObjectNode toJson() {
@@ -35,6 +36,9 @@ public record GroundTruth(double t, Pose2 robot, Target target, double distanceM
         } else {
             teacher.put("lastReward", lastReward);
         }
+        teacher.put("commands", commands);
+        teacher.put("plus", plus);
+        teacher.put("minus", minus);
         o.put("episode", episode);
         return o;
     }

@@ -13,6 +13,7 @@ import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.LongAdder;
 import java.util.function.UnaryOperator;
 import org.habla.net.FrameException;
 import org.habla.net.LineFramer;
@@ -39,7 +40,7 @@ public final class LineServer implements AutoCloseable {
     private final Set<Client> clients = ConcurrentHashMap.newKeySet();
     private final ServerSocket listener;
     private volatile boolean closed;
-    private volatile long dropped;
+    private final LongAdder dropped = new LongAdder();
 
     /**
      * Binds 127.0.0.1:{@code port} (0 for any free port) and starts accepting.
@@ -75,7 +76,7 @@ public final class LineServer implements AutoCloseable {
 
     /** Lines dropped because a client did not keep up. */
     public long droppedLines() {
-        return dropped;
+        return dropped.sum();
     }
 
     /** Sends a line (without its newline) to every connected client; never blocks. */
@@ -128,7 +129,7 @@ public final class LineServer implements AutoCloseable {
 
         void offer(byte[] line) {
             if (!gone && !outbox.offer(line)) {
-                dropped++;
+                dropped.increment();
             }
         }
 

@@ -70,6 +70,7 @@ public final class Scene implements SimClock.Stepper {
         }
         target = t;
         body.placeAt(p);
+        teacher.newEpisode();
         episode++;
     }
 
@@ -101,6 +102,7 @@ public final class Scene implements SimClock.Stepper {
         Target t = target;
         double distance = Math.max(0, t.surfaceDistance(robot.xM(), robot.yM()) - body.limits().radiusM());
         return new GroundTruth(nowS, robot, t, distance, robot.bearingTo(t.xM(), t.yM()), body.stalled(),
-                teacher.present(), teacher.lastCommand(), teacher.lastReward(), episode);
+                teacher.present(), teacher.lastCommand(), teacher.lastReward(), teacher.episodeCommands(),
+                teacher.episodePlus(), teacher.episodeMinus(), episode);
     }
 }

@@ -25,6 +25,9 @@ public final class Teacher {
     private double judgeAtS;
     private String lastCommand;
     private Double lastReward;
+    private int episodeCommands;
+    private int episodePlus;
+    private int episodeMinus;
     private int commands;
     private int rewards;
 
@@ -131,16 +134,55 @@ public final class Teacher {
     private void command(String label, Pose2 robot) {
         pendingLabel = label;
         pendingFrom = robot;
-        judgeAtS = nowS + settings.judgeAfterS();
-        nextCommandS = nowS + settings.commandEveryS();
         lastCommand = label;
         commands++;
-        voice.giveCommand(label);
+        episodeCommands++;
+        double soundS = voice.giveCommand(label);
+        // Judged from the end of the note or the utterance: a robot cannot act on a command before it heard it.
+        judgeAtS = nowS + soundS + settings.judgeAfterS();
+        nextCommandS = Math.max(nowS + settings.commandEveryS(), judgeAtS + 0.5);
     }
 
     private void reward(double value) {
         lastReward = value;
         rewards++;
+        if (value > 0) {
+            episodePlus++;
+        } else if (value < 0) {
+            episodeMinus++;
+        }
         voice.giveReward(value);
+    }
+
+    /** A new episode: the counts start again and a command not yet judged is forgotten. */
+    public synchronized void newEpisode() {
+        pendingLabel = null;
+        episodeCommands = 0;
+        episodePlus = 0;
+        episodeMinus = 0;
+    }
+
+    /** What the teacher gave since the episode began: commands, rewards of pleasure (> 0) and of pain (< 0). */
+    public record Tally(int commands, int plus, int minus) {
+    }
+
+    /** The episode's counts at once. */
+    public synchronized Tally episodeTally() {
+        return new Tally(episodeCommands, episodePlus, episodeMinus);
+    }
+
+    /** Commands given since the episode began. */
+    public synchronized int episodeCommands() {
+        return episodeCommands;
+    }
+
+    /** Rewards of pleasure given since the episode began. */
+    public synchronized int episodePlus() {
+        return episodePlus;
+    }
+
+    /** Rewards of pain given since the episode began. */
+    public synchronized int episodeMinus() {
+        return episodeMinus;
     }
 }

@@ -7,8 +7,13 @@ package org.habla.sim.world;
  */
 public interface TeacherVoice {
 
-    /** Gives the command {@code label} (one of {@link TeacherSettings#LABELS}) the way this robot perceives it. */
-    void giveCommand(String label);
+    /**
+     * Gives the command {@code label} (one of {@link TeacherSettings#LABELS}) the way this robot perceives it.
+     *
+     * @return how long, in sim seconds, the command takes to give (the note or the utterance): the teacher
+     *         judges the robot from the end of it
+     */
+    double giveCommand(String label);
 
     /** Gives a reward in [-1, 1]: positive is pleasure, negative is pain. */
     void giveReward(double value);

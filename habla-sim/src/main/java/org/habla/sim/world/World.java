@@ -31,6 +31,20 @@ public record World(String name, List<Segment> walls, Target target, Pose2 robot
         }
     }
 
+    /** A world file if {@code name} is one, else the built-in world of that name (with or without {@code .json}). */
+    public static World named(String name) throws IOException {
+        Path file = Path.of(name);
+        if (Files.isRegularFile(file)) {
+            return load(file);
+        }
+        try {
+            return builtIn(name.endsWith(".json") ? name.substring(0, name.length() - 5) : name);
+        } catch (IllegalArgumentException e) {
+            throw new IOException("'" + name + "' is neither a world file nor a built-in world (pioneer-room, "
+                    + "pioneer-hall, aibo-arena)");
+        }
+    }
+
     /** Reads one of the world files shipped with HABLA, e.g. {@code pioneer-room} or {@code aibo-arena}. */
     public static World builtIn(String name) {
         String resource = "/worlds/" + name + ".json";

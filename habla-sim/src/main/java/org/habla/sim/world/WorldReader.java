@@ -47,7 +47,7 @@ final class WorldReader {
     }
 
     static World world(JsonNode root) {
-        object(root, "$", Set.of("name", "arena", "target", "robot", "teacher"));
+        object(root, "$", Set.of("name", "description", "arena", "target", "robot", "teacher"));
         String name = text(root, "name", "$");
         JsonNode arena = required(root, "arena", "$");
         object(arena, "$.arena", Set.of("walls"));

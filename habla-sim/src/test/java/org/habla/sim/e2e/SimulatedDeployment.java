@@ -86,9 +86,17 @@ final class SimulatedDeployment implements AutoCloseable {
     }
 
     void startDaemon() throws Exception {
-        daemon = DaemonProcess.start(dir.resolve("daemon.log"), "run", config.toString(), "--time-scale", fmt(speed));
-        assertThat(DaemonProcess.awaitPort(port("distance_angle"), 60_000)).as("daemon sockets up; log: %s",
-                dir.resolve("daemon.log")).isTrue();
+        startDaemon(new String[0]);
+    }
+
+    /** Starts the daemon with extra arguments to {@code habla run} (e.g. {@code --record FILE}). */
+    void startDaemon(String... extra) throws Exception {
+        List<String> args = new ArrayList<>(List.of("run", config.toString(), "--time-scale", fmt(speed)));
+        args.addAll(List.of(extra));
+        Path log = dir.resolve(extra.length == 0 ? "daemon.log" : "daemon-" + System.nanoTime() + ".log");
+        daemon = DaemonProcess.start(log, args.toArray(String[]::new));
+        assertThat(DaemonProcess.awaitPort(port("distance_angle"), 60_000)).as("daemon sockets up; log: %s", log)
+                .isTrue();
     }
 
     /** Waits until every method of the daemon says it is ready (models loaded), as its status endpoint tells. */

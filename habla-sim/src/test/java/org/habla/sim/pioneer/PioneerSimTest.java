@@ -102,6 +102,22 @@ class PioneerSimTest {
     }
 
     @Test
+    void backingUpFromTheOriginRollsThe15BitPositionOverAndOdometryStaysContinuous() throws Exception {
+        try (DriverHarness h = connect()) {
+            Pose2 start = sim.scene().body().pose();
+            h.command("motion", VectorValue.of(-0.25, 0));
+            h.await("odometry", RecordValue.class, o -> o.number("xM") < -0.3, WAIT_MS);
+            h.command("motion", VectorValue.of(0, 0));
+            h.await("odometry", RecordValue.class, o -> o.number("vMps") == 0, WAIT_MS);
+            waitSim(0.3);
+            // Raw XPOS went 0 → 0x7FFF and below; the driver reads a negative, continuous position.
+            assertThat(odometry(h).number("xM"))
+                    .isCloseTo(sim.scene().body().pose().xM() - start.xM(), within(0.005))
+                    .isLessThan(-0.3);
+        }
+    }
+
+    @Test
     void odometryFollowsARotationCommand() throws Exception {
         try (DriverHarness h = connect()) {
             h.command("motion", VectorValue.of(0, 0.5));

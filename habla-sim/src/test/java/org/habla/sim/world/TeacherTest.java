@@ -14,8 +14,9 @@ class TeacherTest {
         final List<String> said = new ArrayList<>();
 
         @Override
-        public synchronized void giveCommand(String label) {
+        public synchronized double giveCommand(String label) {
             said.add(label);
+            return 0;
         }
 
         @Override
@@ -54,6 +55,37 @@ class TeacherTest {
         assertThat(voice.said).containsExactly("right", "+", "right", "-");
         assertThat(teacher.lastCommand()).isEqualTo("right");
         assertThat(teacher.lastReward()).isEqualTo(-1.0);
+    }
+
+    @Test
+    void theEpisodeTallyCountsCommandsPleasureAndPainAndStartsAgainWithEachEpisode() {
+        Pose2 facingAway = new Pose2(1, 1, Math.PI / 2);
+        teacher.step(3.0, facingAway, target);
+        teacher.step(4.5, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        teacher.step(6.0, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        teacher.step(7.5, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        teacher.rewardNow(0.5);
+        assertThat(teacher.episodeTally()).isEqualTo(new Teacher.Tally(2, 2, 1));
+        var json = new GroundTruth(7.5, facingAway, target, 1, 0, false, true, teacher.lastCommand(),
+                teacher.lastReward(), teacher.episodeCommands(), teacher.episodePlus(), teacher.episodeMinus(), 0).toJson();
+        assertThat(json.path("teacher").path("commands").asInt()).isEqualTo(2);
+        assertThat(json.path("teacher").path("plus").asInt()).isEqualTo(2);
+        assertThat(json.path("teacher").path("minus").asInt()).isEqualTo(1);
+        teacher.newEpisode();
+        assertThat(teacher.episodeTally()).isEqualTo(new Teacher.Tally(0, 0, 0));
+        assertThat(teacher.commandCount()).as("the totals keep counting").isEqualTo(2);
+    }
+
+    @Test
+    void aNewEpisodeDropsTheJudgementOfTheCommandBeforeIt() {
+        Pose2 facingAway = new Pose2(1, 1, Math.PI / 2);
+        teacher.step(3.0, facingAway, target);
+        teacher.newEpisode();
+        teacher.step(4.5, new Pose2(2, 1, 0), target);
+        teacher.step(5.9, new Pose2(2, 1, 0), target);
+        assertThat(voice.said).containsExactly("right");
+        teacher.step(6.0, new Pose2(2, 1, 0), target);
+        assertThat(voice.said).containsExactly("right", "forward");
     }
 
     @Test

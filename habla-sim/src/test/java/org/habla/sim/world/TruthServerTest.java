@@ -27,8 +27,9 @@ class TruthServerTest {
     void start() throws IOException {
         TeacherVoice voice = new TeacherVoice() {
             @Override
-            public synchronized void giveCommand(String label) {
+            public synchronized double giveCommand(String label) {
                 heard.add(label);
+                return 0;
             }
 
             @Override

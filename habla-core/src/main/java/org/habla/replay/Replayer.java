@@ -1,0 +1,282 @@
+package org.habla.replay;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Optional;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import org.habla.config.ConfigException;
+import org.habla.config.ConfigLoader;
+import org.habla.config.HablaConfig;
+import org.habla.config.Source;
+import org.habla.daemon.Daemon;
+import org.habla.graph.GraphTap;
+import org.habla.graph.MethodGraph;
+import org.habla.method.Input;
+import org.habla.net.ControlPoint;
+import org.habla.recording.RecordedEvent;
+import org.habla.recording.Recorder;
+import org.habla.recording.RecordingException;
+import org.habla.recording.RecordingHeader;
+import org.habla.recording.RecordingReader;
+import org.habla.plugin.PluginRegistry;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * Runs a daemon on a recording instead of a robot. The recorded readings and link changes go into the same
+ * interface channels, the recorded control writes into the same control inputs, and the recorded runs of
+ * periodic work (method ticks, the watchdog) happen between the same events — at the recorded times scaled by
+ * the speed, or as fast as possible. After every event the replay waits until the graph is idle, so each
+ * method sees the same sequence of inputs as in the recorded run whatever the speed; what the exposed methods
+ * emit and the commands the graph would send are compared with the recording. Commands go nowhere.
+ */
+public final class Replayer {
+
+    private static final Logger LOG = LoggerFactory.getLogger(Replayer.class);
+
+    /**
+     * How to replay.
+     *
+     * @param speed         how many times faster than recorded; 0 for as fast as possible
+     * @param controlWrites whether to replay the recorded control writes (off: only live clients write)
+     * @param settleMillis  the longest wait for the graph to go idle after an event
+     */
+    public record Options(double speed, boolean controlWrites, long settleMillis) {
+
+        public static final Options AS_FAST_AS_POSSIBLE = new Options(0, true, 10_000);
+
+        public Options {
+            if (speed < 0 || !Double.isFinite(speed)) {
+                throw new IllegalArgumentException("speed must be positive (or 0 for as fast as possible), was " + speed);
+            }
+        }
+    }
+
+    private final Path file;
+    private final RecordingHeader header;
+    private final HablaConfig config;
+    private final PluginRegistry registry;
+
+    private Replayer(Path file, RecordingHeader header, HablaConfig config, PluginRegistry registry) {
+        this.file = file;
+        this.header = header;
+        this.config = config;
+        this.registry = registry;
+    }
+
+    /**
+     * Reads a recording's header and the config to replay it with: the recorded one, or {@code override}
+     * (whose interfaces and channels must be those of the recording).
+     */
+    public static Replayer open(Path file, Optional<Path> override, PluginRegistry registry)
+            throws IOException, RecordingException, ConfigException {
+        RecordingHeader header;
+        try (RecordingReader r = RecordingReader.open(file)) {
+            header = r.header();
+        }
+        ConfigLoader loader = new ConfigLoader(registry);
+        HablaConfig config = override.isPresent() ? loader.load(override.get())
+                : loader.parse(header.config().toString(),
+                        header.configDir().isEmpty() ? Path.of("").toAbsolutePath() : Path.of(header.configDir()));
+        for (var ic : config.interfaces()) {
+            if (!header.interfaces().containsKey(ic.id())) {
+                throw new RecordingException("interface '" + ic.id() + "' of the config is not in the recording "
+                        + "(it has " + header.interfaces().keySet() + ")");
+            }
+        }
+        for (var mc : config.methods()) {
+            for (var e : mc.inputs().entrySet()) {
+                if (e.getValue() instanceof Source.Channel ch && header.interfaces().get(ch.interfaceId()).stream()
+                        .noneMatch(c -> c.name().equals(ch.channel())) && !ch.channel().equals("link")) {
+                    throw new RecordingException("method '" + mc.id() + "' reads @" + ch.interfaceId() + "."
+                            + ch.channel() + ", which the recording does not have");
+                }
+            }
+        }
+        return new Replayer(file, header, config, registry);
+    }
+
+    public HablaConfig config() {
+        return config;
+    }
+
+    public RecordingHeader header() {
+        return header;
+    }
+
+    /**
+     * Replays the whole recording and stops the daemon.
+     *
+     * @param recordTo  a new file to record the replay to, if wanted
+     * @param onStarted called once the daemon's sockets are up, before the first event
+     */
+    public ReplayResult run(Options options, Optional<Path> recordTo, Consumer<Daemon> onStarted)
+            throws IOException, RecordingException, InterruptedException {
+        boolean recordedTicks = hasTicks();
+        ReplayClock clock = new ReplayClock(header.startMicros());
+        Recorder recorder = null;
+        if (recordTo.isPresent()) {
+            recorder = Recorder.create(recordTo.get(), new RecordingHeader(header.startMicros(), header.timeScale(),
+                    header.config(), header.configDir(), header.interfaces()), clock);
+        }
+        OutputComparison comparison = new OutputComparison(recorder == null ? GraphTap.NONE : recorder);
+        Daemon daemon = Daemon.replaying(config, registry, clock, comparison, header.interfaces());
+        try (RecordingReader reader = RecordingReader.open(file)) {
+            onStarted.accept(daemon);
+            Feed feed = new Feed(daemon.graph(), clock, options, recordedTicks);
+            long wallStart = System.nanoTime();
+            for (RecordedEvent e = reader.next(); e != null; e = reader.next()) {
+                feed.event(e, comparison);
+            }
+            feed.settle();
+            long wallMillis = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - wallStart);
+            return new ReplayResult(feed.readings, feed.controlWrites, feed.rejected, feed.ticks, feed.unsettled,
+                    Math.max(0, feed.lastMicros - header.startMicros()), wallMillis, comparison.matches(),
+                    reader.cut(), feed.complete, feed.recordedDrops);
+        } finally {
+            daemon.close();
+            if (recorder != null) {
+                recorder.close();
+            }
+        }
+    }
+
+    private boolean hasTicks() throws IOException {
+        try (RecordingReader r = RecordingReader.open(file)) {
+            for (RecordedEvent e = r.next(); e != null; e = r.next()) {
+                if (e instanceof RecordedEvent.Tick) {
+                    return true;
+                }
+            }
+        } catch (RecordingException e) {
+            return false;
+        }
+        return false;
+    }
+
+    /** The replay's thread: paces, feeds and settles. */
+    private final class Feed {
+        private final MethodGraph graph;
+        private final ReplayClock clock;
+        private final Options options;
+        private final boolean recordedTicks;
+        private final long wallStartNanos = System.nanoTime();
+        long readings;
+        long controlWrites;
+        long rejected;
+        long ticks;
+        long unsettled;
+        long recordedDrops;
+        long lastMicros = header.startMicros();
+        boolean complete;
+
+        Feed(MethodGraph graph, ReplayClock clock, Options options, boolean recordedTicks) {
+            this.graph = graph;
+            this.clock = clock;
+            this.options = options;
+            this.recordedTicks = recordedTicks;
+        }
+
+        void event(RecordedEvent e, OutputComparison comparison) throws InterruptedException {
+            switch (e) {
+                case RecordedEvent.Output o -> comparison.expectOutput(o.method(), o.output(), o.sample());
+                case RecordedEvent.Command c -> {
+                    if (c.sent()) {
+                        comparison.expectCommand(c.iface(), c.channel(), c.sample());
+                    }
+                }
+                case RecordedEvent.Dropped d -> recordedDrops = d.total();
+                case RecordedEvent.End x -> complete = true;
+                case RecordedEvent.Reading r -> {
+                    advance(r.t());
+                    graph.replayReading(r.iface(), r.channel(), r.sample().payload(), r.sample().sourceMicros());
+                    readings++;
+                    settle();
+                }
+                case RecordedEvent.LinkChange l -> {
+                    advance(l.t());
+                    graph.replayLink(l.iface(), l.up());
+                    settle();
+                }
+                case RecordedEvent.ControlWrite w -> {
+                    if (options.controlWrites()) {
+                        advance(w.t());
+                        write(w);
+                        settle();
+                    }
+                }
+                case RecordedEvent.WriterLeft w -> {
+                    if (options.controlWrites()) {
+                        advance(w.t());
+                        point(w.socket()).ifPresent(ControlPoint::writerLeft);
+                        settle();
+                    }
+                }
+                case RecordedEvent.Tick k -> {
+                    if (recordedTicks) {
+                        advance(k.t());
+                        if (graph.replayPeriodic(k.task())) {
+                            ticks++;
+                        }
+                        settle();
+                    }
+                }
+            }
+        }
+
+        private Optional<ControlPoint> point(String socket) {
+            return graph.controlPoints().stream().filter(p -> p.name().equals(socket)).findFirst();
+        }
+
+        private void write(RecordedEvent.ControlWrite w) {
+            ControlPoint point = point(w.socket()).orElse(null);
+            Input<?> input = point == null ? null : point.controlInputs().stream()
+                    .filter(i -> i.name().equals(w.input())).findFirst().orElse(null);
+            if (input == null) {
+                rejected++;
+                LOG.warn("replay: the config has no control input {}.{}; a recorded write was skipped", w.socket(), w.input());
+                return;
+            }
+            try {
+                point.write(input, w.sample().payload());
+                controlWrites++;
+            } catch (ControlPoint.Rejected ex) {
+                rejected++;
+                LOG.warn("replay: control write to {} refused: {}", w.socket(), ex.getMessage());
+            }
+        }
+
+        private void advance(long t) throws InterruptedException {
+            if (options.speed() > 0) {
+                long dueNanos = wallStartNanos + (long) ((t - header.startMicros()) * 1_000 / options.speed());
+                long wait = dueNanos - System.nanoTime();
+                if (wait > 0) {
+                    TimeUnit.NANOSECONDS.sleep(wait);
+                }
+            }
+            lastMicros = Math.max(lastMicros, t);
+            clock.advanceTo(t, !recordedTicks, () -> {
+                ticks++;
+                settleQuietly();
+            });
+        }
+
+        void settle() throws InterruptedException {
+            if (!graph.awaitIdle(options.settleMillis())) {
+                unsettled++;
+                if (unsettled == 1) {
+                    LOG.warn("replay: the graph did not go idle within {} ms; going on", options.settleMillis());
+                }
+            }
+        }
+
+        private void settleQuietly() {
+            try {
+                settle();
+            } catch (InterruptedException ex) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+}

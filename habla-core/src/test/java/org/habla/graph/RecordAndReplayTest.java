@@ -1,0 +1,163 @@
+package org.habla.graph;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.OutputStream;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+import org.habla.config.ConfigLoader;
+import org.habla.config.HablaConfig;
+import org.habla.daemon.Daemon;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.method.VirtualMethod;
+import org.habla.plugin.PluginRegistry;
+import org.habla.recording.RecordedEvent;
+import org.habla.recording.Recorder;
+import org.habla.recording.Recording;
+import org.habla.recording.RecordingHeader;
+import org.habla.recording.RecordingReader;
+import org.habla.replay.ReplayResult;
+import org.habla.replay.Replayer;
+import org.habla.replay.StreamMatch;
+import org.habla.sample.NumberValue;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * A daemon recorded against a robot on loopback, then replayed from the file alone: the exposed methods say
+ * the same values in the same order, and the commands the replay would send are the recorded ones.
+ */
+@Timeout(60)
+class RecordAndReplayTest {
+
+    @TempDir
+    Path dir;
+
+    /** Counts its own ticks: what it says depends only on how often the clock ran it. */
+    static final class TickCounter extends VirtualMethod {
+        final Output<NumberValue> count = output("count", NumberValue.class);
+        private int n;
+
+        TickCounter() {
+            tickEvery(Duration.ofMillis(50));
+        }
+
+        @Override
+        protected void onTick(long nowMicros) {
+            emit(count, new NumberValue(++n));
+        }
+    }
+
+    private static PluginRegistry registry() {
+        PluginRegistry base = TestMethods.registry();
+        List<org.habla.plugin.MethodProvider<?>> methods = new ArrayList<>(base.methods().values());
+        methods.add(new TestMethods.Simple("tick-counter", Layer.VIRTUAL, TickCounter::new));
+        return PluginRegistry.of(methods, List.of(new LineDriver.Provider()));
+    }
+
+    private static String config(int robotPort) throws java.io.IOException {
+        int[] ports = org.habla.testing.DaemonProcess.freePorts(3);
+        return """
+                {"system": "replay-test", "safety": {"watchdogMs": 0}, "status": {"port": 0},
+                 "interfaces": [{"id": "robot", "driver": "lines-test", "address": "127.0.0.1:%d",
+                                 "reconnect": {"initialMs": 50, "maxMs": 200}}],
+                 "methods": [
+                   {"id": "s", "type": "add-one-sensor", "layer": "sensors_actuators", "inputs": {"in": "@robot.value"}},
+                   {"id": "p", "type": "add-one-processing", "layer": "processing", "inputs": {"in": "s.out"}},
+                   {"id": "v", "type": "add-one-virtual", "layer": "virtual", "inputs": {"in": "p.out"},
+                    "expose": {"port": %d, "name": "v"}},
+                   {"id": "cmd", "type": "command-virtual", "layer": "virtual", "inputs": {"in": "control"},
+                    "expose": {"port": %d, "name": "cmd"}},
+                   {"id": "fwd", "type": "forward-processing", "layer": "processing", "inputs": {"in": "cmd.out"}},
+                   {"id": "act", "type": "forward-actuator", "layer": "sensors_actuators", "inputs": {"in": "fwd.out"},
+                    "commands": {"out": "@robot.motor"}},
+                   {"id": "ticks", "type": "tick-counter", "layer": "virtual", "expose": {"port": %d, "name": "ticks"}}
+                 ]}
+                """.formatted(robotPort, ports[0], ports[1], ports[2]);
+    }
+
+    @Test
+    void aRecordedRunReplayedAsFastAsPossibleSaysTheSameValuesInTheSameOrder() throws Exception {
+        PluginRegistry registry = registry();
+        Path file = dir.resolve("run.habla-rec");
+        Path configFile = dir.resolve("replay-test.json");
+        try (FakeLineRobot robot = new FakeLineRobot(0)) {
+            Files.writeString(configFile, config(robot.port()));
+            HablaConfig cfg = new ConfigLoader(registry).load(configFile);
+            EngineClock clock = EngineClock.system();
+            ObjectNode json = (ObjectNode) new ObjectMapper().readTree(Files.readString(configFile));
+            try (Recorder recorder = Recorder.create(file, new RecordingHeader(clock.nowMicros(), 1, json,
+                    dir.toString(), MethodGraph.channels(cfg, registry)), clock);
+                    Daemon daemon = Daemon.start(cfg, registry, clock, recorder)) {
+                assertThat(robot.awaitClient(5_000)).isTrue();
+                long end = System.nanoTime() + 5_000_000_000L;
+                while (!daemon.status().path("interfaces").get(0).path("up").asBoolean() && System.nanoTime() < end) {
+                    Thread.sleep(5);
+                }
+                try (Socket control = new Socket("127.0.0.1", daemon.port("cmd"))) {
+                    OutputStream out = control.getOutputStream();
+                    for (int i = 1; i <= 40; i++) {
+                        robot.send("value " + i);
+                        if (i % 4 == 0) {
+                            out.write(("{\"value\": " + (i / 100.0) + "}\n").getBytes(StandardCharsets.UTF_8));
+                            out.flush();
+                            assertThat(robot.next(5_000)).isEqualTo("cmd motor " + (i / 100.0));
+                        }
+                        Thread.sleep(7);
+                    }
+                }
+                end = System.nanoTime() + 5_000_000_000L;
+                while (outputs(daemon, "v") < 40 && System.nanoTime() < end) {
+                    Thread.sleep(5);
+                }
+            }
+        }
+        Recording recorded = RecordingReader.readAll(file);
+        assertThat(recorded.complete()).isTrue();
+        List<Double> v = recorded.events(RecordedEvent.Output.class).stream().filter(o -> o.method().equals("v"))
+                .map(o -> ((NumberValue) o.sample().payload()).value()).toList();
+        assertThat(v).as("the live run's exposed values").hasSize(40).startsWith(4.0, 5.0, 6.0).endsWith(43.0);
+
+        Replayer replayer = Replayer.open(file, Optional.empty(), registry);
+        ReplayResult result = replayer.run(Replayer.Options.AS_FAST_AS_POSSIBLE, Optional.empty(), d -> { });
+
+        assertThat(recorded.events(RecordedEvent.Reading.class).stream().filter(r -> r.channel().equals("value")))
+                .hasSize(40);
+        assertThat(result.readings()).as("the robot's readings and the link's records")
+                .isEqualTo(recorded.events(RecordedEvent.Reading.class).size());
+        assertThat(result.controlWrites()).isEqualTo(10);
+        assertThat(result.unsettled()).isZero();
+        StreamMatch values = result.stream("v.out").orElseThrow();
+        assertThat(values.recorded()).isEqualTo(40);
+        assertThat(values.matches()).as(values.toString()).isTrue();
+        StreamMatch echoes = result.stream("cmd.out").orElseThrow();
+        assertThat(echoes.recorded()).isEqualTo(10);
+        assertThat(echoes.matches()).as(echoes.toString()).isTrue();
+        StreamMatch ticks = result.stream("ticks.count").orElseThrow();
+        assertThat(ticks.recorded()).as("the ticker ran in the live run").isGreaterThan(3);
+        assertThat(ticks.matches()).as(ticks.toString()).isTrue();
+        StreamMatch commands = result.stream("commands").orElseThrow();
+        assertThat(commands.recorded()).isEqualTo(10);
+        assertThat(commands.matches()).as(commands.toString()).isTrue();
+        assertThat(result.cut()).isEmpty();
+    }
+
+    private static long outputs(Daemon d, String method) {
+        for (var m : d.status().path("methods")) {
+            if (m.path("id").asText().equals(method)) {
+                return m.path("outputs").path("out").asLong();
+            }
+        }
+        return 0;
+    }
+}
