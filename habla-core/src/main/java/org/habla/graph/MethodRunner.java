@@ -172,7 +172,7 @@ final class MethodRunner implements MethodContext {
 
     /** From the placement, on any thread: the worker was lost and the fallback is to run here. */
     void fallBackToLocal() {
-        turns.add(this::startLocal);
+        addTurn(this::startLocal);
         wake();
     }
 
