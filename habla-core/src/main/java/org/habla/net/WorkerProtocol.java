@@ -5,9 +5,14 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Collection;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
+import org.habla.driver.ChannelDescriptor;
+import org.habla.sample.PayloadKind;
 import org.habla.sample.Sample;
 
 /**
@@ -19,7 +24,7 @@ import org.habla.sample.Sample;
  *   daemon                                              worker
  *     |  &lt;-- {"type":"hello","protocol":"habla-worker/1","types":["speech-recognition",...]}
  *     |  --&gt; {"type":"place","method":"speech","methodType":"speech-recognition",
- *     |        "layer":"processing","params":{...}}
+ *     |        "layer":"processing","params":{...},"channels":{},"commandChannels":{}}
  *     |  &lt;-- {"type":"placed","method":"speech","inputs":["segments"],"outputs":["words"]}
  *     |        or {"type":"error","code":"unknown_type","message":"..."} and the worker closes
  *     |  --&gt; {"type":"sample","input":"segments","seq":7,"t":MICROS,"stale":false,
@@ -89,12 +94,56 @@ public final class WorkerProtocol {
         return h;
     }
 
-    /** Asks the worker to make and start one method. */
-    public static ObjectNode place(String methodId, String methodType, String layer, ObjectNode params) {
+    /**
+     * Asks the worker to make and start one method; {@code channels} and {@code commandChannels} describe the
+     * interface channels its inputs read and its outputs write (port name → channel), so the method sees
+     * the same metadata (sonar poses, speed limits) as in the daemon.
+     */
+    public static ObjectNode place(String methodId, String methodType, String layer, ObjectNode params,
+            Map<String, ChannelDescriptor> channels, Map<String, ChannelDescriptor> commandChannels) {
         ObjectNode h = NODES.objectNode().put("type", "place").put("method", methodId).put("methodType", methodType)
                 .put("layer", layer);
         h.set("params", params);
+        ObjectNode ch = h.putObject("channels");
+        channels.forEach((port, c) -> ch.set(port, channel(c)));
+        ObjectNode cc = h.putObject("commandChannels");
+        commandChannels.forEach((port, c) -> cc.set(port, channel(c)));
         return h;
+    }
+
+    /** A channel description as JSON. */
+    public static ObjectNode channel(ChannelDescriptor c) {
+        ObjectNode n = NODES.objectNode().put("name", c.name())
+                .put("direction", c.direction().name().toLowerCase(java.util.Locale.ROOT))
+                .put("kind", c.kind().wireName()).put("unit", c.unit()).put("motion", c.motion());
+        n.set("metadata", c.metadata());
+        return n;
+    }
+
+    /** Reads the channel descriptions of a place line's {@code field} (port name → channel). */
+    public static Map<String, ChannelDescriptor> channels(Frame place, String field) throws FrameException {
+        Map<String, ChannelDescriptor> out = new LinkedHashMap<>();
+        JsonNode node = place.header().get(field);
+        if (node == null) {
+            return out;
+        }
+        if (!node.isObject()) {
+            throw FrameException.badValue("\"" + field + "\" must be an object of port name -> channel");
+        }
+        for (Iterator<Map.Entry<String, JsonNode>> it = node.fields(); it.hasNext(); ) {
+            Map.Entry<String, JsonNode> e = it.next();
+            JsonNode c = e.getValue();
+            try {
+                out.put(e.getKey(), new ChannelDescriptor(c.path("name").asText(null),
+                        ChannelDescriptor.Direction.valueOf(c.path("direction").asText("").toUpperCase(java.util.Locale.ROOT)),
+                        PayloadKind.fromWire(c.path("kind").asText("")), c.path("unit").asText(""),
+                        c.path("motion").asBoolean(false),
+                        c.get("metadata") instanceof ObjectNode m ? m : null));
+            } catch (IllegalArgumentException ex) {
+                throw FrameException.badValue("channel of port '" + e.getKey() + "': " + ex.getMessage());
+            }
+        }
+        return out;
     }
 
     /** The worker's answer once the method runs: its port names. */
