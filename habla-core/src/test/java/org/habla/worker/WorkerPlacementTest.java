@@ -260,9 +260,23 @@ class WorkerPlacementTest {
                 }
             }
             assertThat(written).isEqualTo(600);
-            for (int i = 0; i < written; i++) {
-                assertThat(local.poll(10, TimeUnit.SECONDS)).as("local digest %d of %d", i + 1, written).isNotNull();
+            // The local branch goes on: every chunk comes out of it, except the ones its own bounded queue
+            // dropped and counted when this test wrote faster than it digests (on a loaded machine).
+            long dropped = 0;
+            int received = 0;
+            long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
+            while (System.nanoTime() < until) {
+                JsonNode in = method(g, "here").path("inputs").path("audio");
+                dropped = in.path("dropped").asLong() + in.path("conflated").asLong();
+                if (received + dropped >= written) {
+                    break;
+                }
+                if (local.poll(100, TimeUnit.MILLISECONDS) != null) {
+                    received++;
+                }
             }
+            assertThat(received + dropped).as("local digests %d + counted drops %d", received, dropped).isEqualTo(written);
+            assertThat(received).as("most chunks digested locally").isGreaterThan(written / 2);
             await(() -> method(g, "d").path("placement").path("dropped").asLong() > 0,
                     "samples the silent worker cannot take are dropped and counted");
             assertThat(method(g, "d").path("placement").path("up").asBoolean()).as("heartbeats keep it up").isTrue();
