@@ -44,6 +44,18 @@ public final class HostedMethod implements AutoCloseable {
                 new IllegalArgumentException("no input '" + name + "'"));
     }
 
+    /** Tells the method which interface channel an input reads (its metadata); call before {@link #start}. */
+    public void bindChannel(String input, org.habla.driver.ChannelDescriptor channel) {
+        runner.bindChannel(runner.method().input(input).orElseThrow(() ->
+                new IllegalArgumentException("no input '" + input + "'")), channel);
+    }
+
+    /** Tells the method which interface channel an output writes; call before {@link #start}. */
+    public void bindCommandChannel(String output, org.habla.driver.ChannelDescriptor channel) {
+        runner.bindCommandChannel(runner.method().output(output).orElseThrow(() ->
+                new IllegalArgumentException("no output '" + output + "'")), channel);
+    }
+
     /** Sends every published sample to {@code listener}; call before {@link #start}. */
     public void onOutput(OutputListener listener) {
         for (Output<?> out : runner.method().outputs()) {

@@ -112,6 +112,20 @@ final class MethodRunner implements MethodContext {
         commandChannels.put(output, channel);
     }
 
+    /** The interface channels the inputs read, by input name (for a worker running the method). */
+    Map<String, ChannelDescriptor> channelsByInput() {
+        Map<String, ChannelDescriptor> m = new java.util.LinkedHashMap<>();
+        channels.forEach((in, c) -> m.put(in.name(), c));
+        return m;
+    }
+
+    /** The interface channels the outputs write, by output name (for a worker running the method). */
+    Map<String, ChannelDescriptor> commandChannelsByOutput() {
+        Map<String, ChannelDescriptor> m = new java.util.LinkedHashMap<>();
+        commandChannels.forEach((out, c) -> m.put(out.name(), c));
+        return m;
+    }
+
     void stale(boolean isStale) {
         stale = isStale;
     }
@@ -158,7 +172,7 @@ final class MethodRunner implements MethodContext {
 
     /** From the placement, on any thread: the worker was lost and the fallback is to run here. */
     void fallBackToLocal() {
-        turns.add(this::startLocal);
+        addTurn(this::startLocal);
         wake();
     }
 

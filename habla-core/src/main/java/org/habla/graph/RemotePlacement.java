@@ -190,7 +190,7 @@ final class RemotePlacement {
             throw new IOException(refusal);
         }
         writer.send(WorkerProtocol.place(config.id(), config.type(), config.layer().configName(),
-                ParamsJson.write(config.params())));
+                ParamsJson.write(config.params()), runner.channelsByInput(), runner.commandChannelsByOutput()));
         Frame answer = next(reader);
         if (!answer.type().equals("placed")) {
             throw new IOException("the worker did not place the method: " + answer.header().path("message")

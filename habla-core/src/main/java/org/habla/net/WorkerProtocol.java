@@ -5,9 +5,14 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Collection;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
+import org.habla.driver.ChannelDescriptor;
+import org.habla.sample.PayloadKind;
 import org.habla.sample.Sample;
 
 /**
@@ -17,9 +22,9 @@ import org.habla.sample.Sample;
  *
  * <pre>
  *   daemon                                              worker
- *     |  &lt;-- {"type":"hello","protocol":1,"types":["speech-recognition",...]}
+ *     |  &lt;-- {"type":"hello","protocol":"habla-worker/1","types":["speech-recognition",...]}
  *     |  --&gt; {"type":"place","method":"speech","methodType":"speech-recognition",
- *     |        "layer":"processing","params":{...}}
+ *     |        "layer":"processing","params":{...},"channels":{},"commandChannels":{}}
  *     |  &lt;-- {"type":"placed","method":"speech","inputs":["segments"],"outputs":["words"]}
  *     |        or {"type":"error","code":"unknown_type","message":"..."} and the worker closes
  *     |  --&gt; {"type":"sample","input":"segments","seq":7,"t":MICROS,"stale":false,
@@ -34,8 +39,8 @@ import org.habla.sample.Sample;
  */
 public final class WorkerProtocol {
 
-    /** The protocol version this build speaks; a worker of another version is refused. */
-    public static final int VERSION = 1;
+    /** The protocol and version this build speaks; a worker of another version is refused. */
+    public static final String PROTOCOL = "habla-worker/1";
     /** The port {@code habla worker} listens on unless told otherwise. */
     public static final int DEFAULT_PORT = 7600;
     /** How often a worker tells the daemon it is alive. */
@@ -47,7 +52,7 @@ public final class WorkerProtocol {
     }
 
     /** What a worker says on connect: the protocol version and the method types it can run. */
-    public record Hello(int protocol, Set<String> types) {
+    public record Hello(String protocol, Set<String> types) {
 
         public Hello {
             types = Set.copyOf(types);
@@ -61,18 +66,18 @@ public final class WorkerProtocol {
             }
             JsonNode protocol = frame.header().get("protocol");
             JsonNode types = frame.header().get("types");
-            if (protocol == null || !protocol.canConvertToInt() || types == null || !types.isArray()) {
+            if (protocol == null || !protocol.isTextual() || types == null || !types.isArray()) {
                 throw FrameException.fatal("bad_hello", "a worker's hello needs \"protocol\" and \"types\"");
             }
             Set<String> names = new TreeSet<>();
             types.forEach(t -> names.add(t.asText()));
-            return new Hello(protocol.intValue(), names);
+            return new Hello(protocol.textValue(), names);
         }
 
         /** Why this worker cannot run a method of {@code type}, or null when it can. */
         public String refusal(String type) {
-            if (protocol != VERSION) {
-                return "the worker speaks protocol " + protocol + ", this daemon " + VERSION;
+            if (!protocol.equals(PROTOCOL)) {
+                return "the worker speaks " + protocol + ", this daemon " + PROTOCOL;
             }
             if (!types.contains(type)) {
                 return "the worker cannot run method type '" + type + "' (it runs: "
@@ -83,18 +88,62 @@ public final class WorkerProtocol {
     }
 
     public static ObjectNode hello(Collection<String> types) {
-        ObjectNode h = NODES.objectNode().put("type", "hello").put("protocol", VERSION).put("role", "worker");
+        ObjectNode h = NODES.objectNode().put("type", "hello").put("protocol", PROTOCOL);
         ArrayNode a = h.putArray("types");
         new TreeSet<>(types).forEach(a::add);
         return h;
     }
 
-    /** Asks the worker to make and start one method. */
-    public static ObjectNode place(String methodId, String methodType, String layer, ObjectNode params) {
+    /**
+     * Asks the worker to make and start one method; {@code channels} and {@code commandChannels} describe the
+     * interface channels its inputs read and its outputs write (port name → channel), so the method sees
+     * the same metadata (sonar poses, speed limits) as in the daemon.
+     */
+    public static ObjectNode place(String methodId, String methodType, String layer, ObjectNode params,
+            Map<String, ChannelDescriptor> channels, Map<String, ChannelDescriptor> commandChannels) {
         ObjectNode h = NODES.objectNode().put("type", "place").put("method", methodId).put("methodType", methodType)
                 .put("layer", layer);
         h.set("params", params);
+        ObjectNode ch = h.putObject("channels");
+        channels.forEach((port, c) -> ch.set(port, channel(c)));
+        ObjectNode cc = h.putObject("commandChannels");
+        commandChannels.forEach((port, c) -> cc.set(port, channel(c)));
         return h;
+    }
+
+    /** A channel description as JSON. */
+    public static ObjectNode channel(ChannelDescriptor c) {
+        ObjectNode n = NODES.objectNode().put("name", c.name())
+                .put("direction", c.direction().name().toLowerCase(java.util.Locale.ROOT))
+                .put("kind", c.kind().wireName()).put("unit", c.unit()).put("motion", c.motion());
+        n.set("metadata", c.metadata());
+        return n;
+    }
+
+    /** Reads the channel descriptions of a place line's {@code field} (port name → channel). */
+    public static Map<String, ChannelDescriptor> channels(Frame place, String field) throws FrameException {
+        Map<String, ChannelDescriptor> out = new LinkedHashMap<>();
+        JsonNode node = place.header().get(field);
+        if (node == null) {
+            return out;
+        }
+        if (!node.isObject()) {
+            throw FrameException.badValue("\"" + field + "\" must be an object of port name -> channel");
+        }
+        for (Iterator<Map.Entry<String, JsonNode>> it = node.fields(); it.hasNext(); ) {
+            Map.Entry<String, JsonNode> e = it.next();
+            JsonNode c = e.getValue();
+            try {
+                out.put(e.getKey(), new ChannelDescriptor(c.path("name").asText(null),
+                        ChannelDescriptor.Direction.valueOf(c.path("direction").asText("").toUpperCase(java.util.Locale.ROOT)),
+                        PayloadKind.fromWire(c.path("kind").asText("")), c.path("unit").asText(""),
+                        c.path("motion").asBoolean(false),
+                        c.get("metadata") instanceof ObjectNode m ? m : null));
+            } catch (IllegalArgumentException ex) {
+                throw FrameException.badValue("channel of port '" + e.getKey() + "': " + ex.getMessage());
+            }
+        }
+        return out;
     }
 
     /** The worker's answer once the method runs: its port names. */

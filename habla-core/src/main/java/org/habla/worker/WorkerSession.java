@@ -5,6 +5,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.net.Socket;
+import java.util.Map;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.TimeUnit;
@@ -14,6 +15,7 @@ import org.habla.config.ConfigError;
 import org.habla.config.ConfigException;
 import org.habla.config.Limits;
 import org.habla.config.ParamsJson;
+import org.habla.driver.ChannelDescriptor;
 import org.habla.graph.EngineClock;
 import org.habla.graph.HostedMethod;
 import org.habla.method.Layer;
@@ -135,9 +137,20 @@ final class WorkerSession implements Runnable {
             return new Refusal("bad_place", "type '" + type + "' cannot be placed in the " + layer.configName() + " layer");
         }
         JsonNode params = f.header().get("params");
+        Map<String, ChannelDescriptor> channels;
+        Map<String, ChannelDescriptor> commandChannels;
+        try {
+            channels = WorkerProtocol.channels(f, "channels");
+            commandChannels = WorkerProtocol.channels(f, "commandChannels");
+        } catch (FrameException e) {
+            return new Refusal("bad_place", e.getMessage());
+        }
         try {
             Record bound = ParamsJson.read(params, provider.paramsType());
-            hosted = new HostedMethod(methodId, type, make(provider, layer, bound), clock, backgroundPool);
+            HostedMethod h = new HostedMethod(methodId, type, make(provider, layer, bound), clock, backgroundPool);
+            channels.forEach(h::bindChannel);
+            commandChannels.forEach(h::bindCommandChannel);
+            hosted = h;
             return null;
         } catch (ConfigException e) {
             return new Refusal("bad_params", e.errors().stream().map(ConfigError::toString)

@@ -68,7 +68,7 @@ class WorkerPlacementTest {
             s.setSoTimeout(5_000);
             JsonNode hello = JSON.readTree(lines(s).readLine());
             assertThat(hello.path("type").asText()).isEqualTo("hello");
-            assertThat(hello.path("protocol").asInt()).isEqualTo(1);
+            assertThat(hello.path("protocol").asText()).isEqualTo("habla-worker/1");
             assertThat(hello.path("types").toString()).contains("\"scale\"", "\"audio-digest\"");
         }
     }
@@ -123,6 +123,41 @@ class WorkerPlacementTest {
         }
     }
 
+    @Test
+    void aPlacedMethodSeesTheMetadataOfTheInterfaceChannelItsInputReads() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0);
+        try (Socket s = new Socket("127.0.0.1", worker.port())) {
+            s.setSoTimeout(5_000);
+            BufferedReader in = lines(s);
+            in.readLine();
+            send(s, "{\"type\":\"place\",\"method\":\"e\",\"methodType\":\"channel-echo\",\"layer\":\"processing\","
+                    + "\"channels\":{\"in\":{\"name\":\"sonar\",\"direction\":\"reading\",\"kind\":\"vector\","
+                    + "\"unit\":\"m\",\"motion\":false,\"metadata\":{\"maxRangeM\":5.0}}}}\n");
+            assertThat(JSON.readTree(in.readLine()).path("type").asText()).isEqualTo("placed");
+            send(s, "{\"type\":\"sample\",\"input\":\"in\",\"seq\":1,\"t\":1,\"kind\":\"number\",\"value\":1}\n");
+            JsonNode n;
+            do {
+                n = JSON.readTree(in.readLine());
+            } while (!n.path("type").asText().equals("sample"));
+            assertThat(n.path("value").asText()).isEqualTo("sonar m {\"maxRangeM\":5.0}");
+        }
+    }
+
+    @Test
+    void aPlaceLineWithABadChannelIsRefusedNamingThePort() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0);
+        try (Socket s = new Socket("127.0.0.1", worker.port())) {
+            s.setSoTimeout(5_000);
+            BufferedReader in = lines(s);
+            in.readLine();
+            send(s, "{\"type\":\"place\",\"method\":\"e\",\"methodType\":\"channel-echo\",\"layer\":\"processing\","
+                    + "\"channels\":{\"in\":{\"name\":\"sonar\",\"direction\":\"sideways\",\"kind\":\"vector\"}}}\n");
+            JsonNode error = JSON.readTree(in.readLine());
+            assertThat(error.path("code").asText()).isEqualTo("bad_place");
+            assertThat(error.path("message").asText()).startsWith("channel of port 'in': ");
+        }
+    }
+
     // ------------------------------------------------------------------ the daemon's side
 
     @Test
@@ -133,6 +168,25 @@ class WorkerPlacementTest {
                 .isInstanceOf(PlacementRefusedException.class)
                 .hasMessageContaining("method 'p' is placed on worker 127.0.0.1:" + worker.port())
                 .hasMessageContaining("cannot run method type 'scale' (it runs: audio-digest)");
+    }
+
+    @Test
+    void theDaemonRefusesAWorkerOfAnotherProtocolVersion() throws Exception {
+        try (ServerSocket fake = new ServerSocket(0, 50, java.net.InetAddress.getLoopbackAddress())) {
+            Thread.ofVirtual().start(() -> {
+                while (!fake.isClosed()) {
+                    try (Socket s = fake.accept()) {
+                        send(s, "{\"type\":\"hello\",\"protocol\":\"habla-worker/2\",\"types\":[\"scale\"]}\n");
+                    } catch (Exception e) {
+                        return;
+                    }
+                }
+            });
+            HablaConfig cfg = config(numbers("127.0.0.1:" + fake.getLocalPort(), Fallback.LOCAL));
+            assertThatThrownBy(() -> Daemon.start(cfg, WorkerTestMethods.all(), EngineClock.system()))
+                    .isInstanceOf(PlacementRefusedException.class)
+                    .hasMessageEndingWith("but the worker speaks habla-worker/2, this daemon habla-worker/1");
+        }
     }
 
     @Test
@@ -166,6 +220,53 @@ class WorkerPlacementTest {
         Sample s = seen.poll(5, TimeUnit.SECONDS);
         assertThat(s).isNotNull();
         assertThat(s.payload()).isEqualTo(new TextValue(pcm.length + " " + crc(pcm) + " 16000"));
+    }
+
+    @Test
+    void aWorkerThatStopsReadingCostsDroppedSamplesOnlyAndTheRestOfTheGraphGoesOn() throws Exception {
+        try (ServerSocket fake = new ServerSocket(0, 50, java.net.InetAddress.getLoopbackAddress())) {
+            // Says hello, places the method, sends heartbeats, and never reads a byte.
+            Thread.ofVirtual().start(() -> {
+                try (Socket s = fake.accept()) {
+                    send(s, "{\"type\":\"hello\",\"protocol\":\"habla-worker/1\",\"types\":[\"audio-digest\"]}\n");
+                    send(s, "{\"type\":\"placed\",\"method\":\"d\",\"inputs\":[\"audio\"],\"outputs\":[\"digest\"]}\n");
+                    while (!fake.isClosed()) {
+                        send(s, "{\"type\":\"heartbeat\",\"ready\":true,\"readiness\":\"\"}\n");
+                        Thread.sleep(300);
+                    }
+                } catch (Exception e) {
+                    // the test is over
+                }
+            });
+            MethodGraph g = graph(config(
+                    method("in", "audio-source", Layer.VIRTUAL, Map.of("in", new Source.Control()), 7001),
+                    placed("d", "audio-digest", Map.of("audio", out("in")), new NoParams(),
+                            "127.0.0.1:" + fake.getLocalPort(), Fallback.NONE),
+                    new MethodConfig("here", "audio-digest", Layer.PROCESSING, Map.of("audio", out("in")), Map.of(),
+                            new NoParams(), Optional.empty(), Optional.empty()),
+                    method("out", "text-sink", Layer.VIRTUAL, Map.of("in", new Source.MethodOutput("here", "digest")),
+                            7002)));
+            BlockingQueue<Sample> local = listen(point(g, "out"));
+            await(() -> method(g, "d").path("placement").path("up").asBoolean(), "the placement comes up");
+            byte[] pcm = pcm(32_000);
+            int written = 0;
+            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
+            while (written < 600 && System.nanoTime() < end) {
+                try {
+                    write(g, AudioChunk.of(AudioFormat.MONO_16K, pcm));
+                    written++;
+                } catch (ControlPoint.Rejected e) {
+                    Thread.sleep(1);
+                }
+            }
+            assertThat(written).isEqualTo(600);
+            for (int i = 0; i < written; i++) {
+                assertThat(local.poll(10, TimeUnit.SECONDS)).as("local digest %d of %d", i + 1, written).isNotNull();
+            }
+            await(() -> method(g, "d").path("placement").path("dropped").asLong() > 0,
+                    "samples the silent worker cannot take are dropped and counted");
+            assertThat(method(g, "d").path("placement").path("up").asBoolean()).as("heartbeats keep it up").isTrue();
+        }
     }
 
     @Test

@@ -58,6 +58,17 @@ final class WorkerTestMethods {
         }
     }
 
+    /** Says what it knows of the interface channel its input reads: name, unit and metadata. */
+    static final class ChannelEcho extends ProcessingMethod {
+        final Output<TextValue> said = output("said", TextValue.class);
+        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(16), this::on);
+
+        private void on(NumberValue v, Sample s) {
+            emit(said, new TextValue(channelOf(in).map(c -> c.name() + " " + c.unit() + " " + c.metadata())
+                    .orElse("no channel")));
+        }
+    }
+
     /** A control input of any payload passed on (the daemon's way in for the test). */
     static final class Source<P extends Payload> extends VirtualMethod {
         final Output<P> out;
@@ -103,6 +114,7 @@ final class WorkerTestMethods {
         return PluginRegistry.of(List.of(
                 new Provider<>("scale", Layer.PROCESSING, ScaleParams.class, Scale::new),
                 new Provider<>("audio-digest", Layer.PROCESSING, NoParams.class, p -> new AudioDigest()),
+                new Provider<>("channel-echo", Layer.PROCESSING, NoParams.class, p -> new ChannelEcho()),
                 new Provider<>("number-source", Layer.VIRTUAL, NoParams.class, p -> new Source<>(NumberValue.class)),
                 new Provider<>("number-sink", Layer.VIRTUAL, NoParams.class, p -> new Sink<>(NumberValue.class)),
                 new Provider<>("audio-source", Layer.VIRTUAL, NoParams.class, p -> new Source<>(AudioChunk.class)),

@@ -220,13 +220,17 @@ public final class AiboSimulator implements AutoCloseable {
     /** The Aibo's teacher: commands spoken into the microphone, rewards by touch (back = pleasure, head = pain). */
     private final class Voice implements TeacherVoice {
 
+        private double lastSeconds;
+
         @Override
         public double giveCommand(String label) {
             String phrase = scene.world().teacher().phrases().get(label);
             short[] take = utterances.take(phrase);
-            microphone.play(take, MicrophoneServer.samplesAt(time.nowMs()));
+            long now = MicrophoneServer.samplesAt(time.nowMs());
+            long start = microphone.play(take, now);
+            lastSeconds = (double) (start + take.length - now) / Microphone.RATE_HZ;
             lastPhrase = phrase;
-            return take.length / 16_000.0;
+            return lastSeconds;
         }
 
         @Override

@@ -59,10 +59,6 @@ final class MenuItem {
         return guiClass;
     }
 
-    synchronized boolean running() {
-        return server != null && server.isOn();
-    }
-
     synchronized String displayedName() {
         if (server == null) {
             return name;

@@ -41,11 +41,6 @@ public final class Microphone {
         return start;
     }
 
-    /** The sample at which the queued sounds end (now or earlier when none is playing). */
-    public synchronized long busyUntil(long nowSample) {
-        return sounds.isEmpty() ? nowSample : Math.max(nowSample, sounds.peekLast().end());
-    }
-
     /** {@code frames} stereo frames from {@code fromSample}, interleaved left, right. */
     synchronized short[] stereo(long fromSample, int frames) {
         while (!sounds.isEmpty() && sounds.peekFirst().end() <= fromSample) {

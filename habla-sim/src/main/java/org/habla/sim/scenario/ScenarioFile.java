@@ -24,10 +24,12 @@ import java.util.List;
  * @param reachM      distance to the object's edge under which it counts as reached
  * @param speed       default time scale
  * @param stepS       simulated seconds the control program waits for an action's effect
+ * @param rewardWaitS simulated seconds the control program waits beyond that for the teacher's reward (a spoken
+ *                    command is heard later than a note, so its reward comes later too)
  * @param starts      start poses, used in turn
  */
 public record ScenarioFile(String robot, String config, String world, int episodes, double teacherS, double aloneS,
-        double reachM, double speed, double stepS, List<StartPose> starts) {
+        double reachM, double speed, double stepS, double rewardWaitS, List<StartPose> starts) {
 
     /** A start pose of the robot in the world frame. */
     public record StartPose(double xM, double yM, double thetaRad) {
@@ -37,7 +39,7 @@ public record ScenarioFile(String robot, String config, String world, int episod
         if (!robot.equals("pioneer") && !robot.equals("aibo")) {
             throw new IllegalArgumentException("robot must be pioneer or aibo, was '" + robot + "'");
         }
-        if (episodes < 1 || teacherS <= 0 || aloneS <= 0 || reachM <= 0 || speed < 1 || stepS <= 0) {
+        if (episodes < 1 || teacherS <= 0 || aloneS <= 0 || reachM <= 0 || speed < 1 || stepS <= 0 || rewardWaitS < 0) {
             throw new IllegalArgumentException("episodes ≥ 1, teacherS, aloneS, reachM, stepS > 0 and speed ≥ 1 are required");
         }
         if (starts.isEmpty()) {
@@ -68,7 +70,8 @@ public record ScenarioFile(String robot, String config, String world, int episod
             }
             return new ScenarioFile(text(n, "robot"), text(n, "config"), text(n, "world"), n.path("episodes").asInt(10),
                     n.path("teacherS").asDouble(90), n.path("aloneS").asDouble(60), n.path("reachM").asDouble(0.3),
-                    n.path("speed").asDouble(4), n.path("stepS").asDouble(1.2), starts);
+                    n.path("speed").asDouble(4), n.path("stepS").asDouble(1.2), n.path("rewardWaitS").asDouble(1.0),
+                    starts);
         } catch (IllegalArgumentException e) {
             throw new IOException("scenario: " + e.getMessage(), e);
         }
@@ -82,6 +85,6 @@ public record ScenarioFile(String robot, String config, String world, int episod
     }
 
     public ScenarioFile withEpisodes(int n) {
-        return new ScenarioFile(robot, config, world, n, teacherS, aloneS, reachM, speed, stepS, starts);
+        return new ScenarioFile(robot, config, world, n, teacherS, aloneS, reachM, speed, stepS, rewardWaitS, starts);
     }
 }

@@ -71,11 +71,14 @@ final class ScenarioRunner {
                     }
                 }
                 awaitPort(ports[1], 120_000, daemon);
+                say("control program: %s (SHA-256 %s), the same file for every robot", o.home().toAbsolutePath().relativize(mdb.toAbsolutePath()),
+                        sha256(mdb));
                 say("daemon up: command %d, distance_angle %d, reward %d, action %d", ports[0], ports[1], ports[2], ports[3]);
                 Children.Child control = children.start("control", List.of("python3", "-u", mdb.toString(),
                         "--host", "127.0.0.1", "--command-port", "" + ports[0], "--distance-angle-port", "" + ports[1],
                         "--reward-port", "" + ports[2], "--action-port", "" + ports[3], "--seed", "" + o.seed(),
-                        "--speed", fmt(o.speed()), "--step-s", fmt(sc.stepS() / o.speed()), "--log", o.reportDir().resolve("control.jsonl").toString()),
+                        "--speed", fmt(o.speed()), "--step-s", fmt(sc.stepS() / o.speed()),
+                        "--reward-wait-s", fmt(sc.rewardWaitS() / o.speed()), "--log", o.reportDir().resolve("control.jsonl").toString()),
                         o.home(), o.reportDir().resolve("control.log"));
                 for (int e = 1; e <= o.episodes(); e++) {
                     episodes.add(episode(e, truth, List.of(sim, daemon, control)));
@@ -204,6 +207,15 @@ final class ScenarioRunner {
             }
         }
         throw new IOException("the simulated world did not advance for 20 s");
+    }
+
+    static String sha256(Path file) throws IOException {
+        try {
+            return java.util.HexFormat.of().formatHex(
+                    java.security.MessageDigest.getInstance("SHA-256").digest(Files.readAllBytes(file)));
+        } catch (java.security.NoSuchAlgorithmException e) {
+            throw new IllegalStateException(e);
+        }
     }
 
     /** The last lines of a log, for an error message. */

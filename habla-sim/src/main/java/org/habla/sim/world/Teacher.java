@@ -5,7 +5,8 @@ import java.util.Objects;
 /**
  * The scripted teacher of the paper's experiments. While present, every {@code commandEveryS} it gives the command
  * that brings the robot towards the target (|bearing| above {@code turnThresholdRad} → {@code left}/{@code right},
- * else {@code forward}), then after {@code judgeAfterS} judges what the robot did meanwhile: +1 if the heading
+ * else {@code forward}), then {@code judgeAfterS} after the command got across (at once for a note, at the end
+ * of a spoken phrase) judges what the robot did meanwhile: +1 if the heading
  * changed the commanded way (turns) or the robot moved forward/back as commanded, −1 otherwise. Commands and
  * rewards go out through a {@link TeacherVoice}. An operator (the ground-truth server) may also make it say a
  * command or give a reward at once, present or not.

@@ -203,25 +203,7 @@ final class SimulatedDeployment implements AutoCloseable {
         return d;
     }
 
-    /** A port offset under which every port the set-up uses is free (up to the extras at +13 and status). */
     private static int freeOffset() throws IOException {
-        int[] bases = {7001, 7002, 7003, 7004, 7010, 7011, 7012, 7013, 7099, 8101, 8110, 8111, 8199, 10011, 10020,
-                10031, 10050, 10052, 10053, 10070, 10071, 10199};
-        for (int attempt = 0; attempt < 50; attempt++) {
-            int offset = 100 * ThreadLocalRandom.current().nextInt(150, 500);
-            boolean free = true;
-            for (int b : bases) {
-                try (ServerSocket s = new ServerSocket()) {
-                    s.bind(new InetSocketAddress("127.0.0.1", b + offset));
-                } catch (IOException e) {
-                    free = false;
-                    break;
-                }
-            }
-            if (free) {
-                return offset;
-            }
-        }
-        throw new IOException("no free block of ports found");
+        return org.habla.sim.PortBlock.freeOffset();
     }
 }

@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 class TeacherTest {
 
     /** A voice that writes down what the teacher gives. */
-    static final class Transcript implements TeacherVoice {
+    static class Transcript implements TeacherVoice {
         final List<String> said = new ArrayList<>();
 
         @Override
@@ -74,6 +74,25 @@ class TeacherTest {
         teacher.newEpisode();
         assertThat(teacher.episodeTally()).isEqualTo(new Teacher.Tally(0, 0, 0));
         assertThat(teacher.commandCount()).as("the totals keep counting").isEqualTo(2);
+    }
+
+    @Test
+    void aSpokenCommandIsJudgedFromTheEndOfThePhrase() {
+        Transcript slow = new Transcript() {
+            @Override
+            public synchronized double giveCommand(String label) {
+                super.giveCommand(label);
+                return 1.0;
+            }
+        };
+        Teacher speaking = new Teacher(TeacherSettings.DEFAULTS, slow);
+        Pose2 facingAway = new Pose2(1, 1, Math.PI / 2);
+        speaking.step(3.0, facingAway, target);
+        speaking.step(4.5, facingAway, target);
+        assertThat(slow.said).as("not judged 1.5 s after the phrase began").containsExactly("right");
+        speaking.step(5.4, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        speaking.step(5.5, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        assertThat(slow.said).as("judged 1.5 s after it ended").containsExactly("right", "+");
     }
 
     @Test
