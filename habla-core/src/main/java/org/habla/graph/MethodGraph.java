@@ -177,6 +177,31 @@ public final class MethodGraph implements AutoCloseable {
         return upstreamInterfaces.getOrDefault(methodId, Set.of()).contains(interfaceId);
     }
 
+    /** Whether what a control client writes to socket {@code socket} can reach a method. */
+    public boolean reachesFromControl(String socket, String methodId) {
+        for (ExposedMethod x : exposed) {
+            if (x.name().equals(socket)) {
+                return downstream(x.methodId(), new LinkedHashSet<>()).contains(methodId);
+            }
+        }
+        return false;
+    }
+
+    /** The method and every method its outputs feed, directly or not. */
+    private Set<String> downstream(String methodId, Set<String> found) {
+        if (!found.add(methodId)) {
+            return found;
+        }
+        for (MethodConfig mc : config.methods()) {
+            for (Source s : mc.inputs().values()) {
+                if (s instanceof Source.MethodOutput mo && mo.methodId().equals(methodId)) {
+                    downstream(mc.id(), found);
+                }
+            }
+        }
+        return found;
+    }
+
     private InterfaceLink replayedLink(String interfaceId) {
         if (!replayed) {
             throw new IllegalStateException("this graph runs live interfaces, not a recording");

@@ -10,8 +10,8 @@ import org.habla.driver.ChannelDescriptor;
 
 /**
  * The first record of a recording: the config the daemon ran, where its relative file params were
- * taken from, and every interface's channels as the drivers described them (so a replay needs no robot
- * and no driver).
+ * taken from, and every interface's channels as the drivers described them, with their metadata (so a
+ * replay needs no robot: the channels come from here, not from a connection).
  *
  * @param startMicros the engine clock when the recording began
  * @param timeScale   the engine clock's speed against the wall clock (1 for a real robot)

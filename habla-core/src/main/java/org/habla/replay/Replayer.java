@@ -150,7 +150,9 @@ public final class Replayer {
                     break;
                 }
                 if (e instanceof RecordedEvent.Reading r) {
-                    feed.ticksTakenBefore(r, ahead);
+                    feed.ticksTakenBefore(r.t(), m -> daemon.graph().reaches(r.iface(), m), ahead);
+                } else if (e instanceof RecordedEvent.ControlWrite w && options.controlWrites()) {
+                    feed.ticksTakenBefore(w.t(), m -> daemon.graph().reachesFromControl(w.socket(), m), ahead);
                 }
                 feed.event(e, comparison);
             }
@@ -255,12 +257,13 @@ public final class Replayer {
         }
 
         /**
-         * Runs now, before reading {@code r} is fed, every method tick recorded a little later whose method had
-         * then handled exactly as many samples as it has now, if {@code r} could reach that method: in the
-         * recorded run the tick came before {@code r}'s effect arrived (the reading was still on its way
-         * through the layers), and so it must here.
+         * Runs now, before an event at {@code t} is fed (a reading, a control write), every method tick recorded
+         * a little later whose method had then taken exactly as many samples as it has now, if the event can
+         * reach that method: in the recorded run the tick came before the event's effect arrived (it was still
+         * on its way through the layers), and so it must here.
          */
-        void ticksTakenBefore(RecordedEvent.Reading r, Deque<RecordedEvent> ahead) throws InterruptedException {
+        void ticksTakenBefore(long t, java.util.function.Predicate<String> reaches, Deque<RecordedEvent> ahead)
+                throws InterruptedException {
             if (!recordedTicks) {
                 return;
             }
@@ -270,7 +273,7 @@ public final class Replayer {
                     continue;
                 }
                 String method = k.task().substring(TICK_PREFIX.length());
-                if (!looked.add(method) || k.t() - r.t() > LOOKAHEAD_MICROS || !graph.reaches(r.iface(), method)
+                if (!looked.add(method) || k.t() - t > LOOKAHEAD_MICROS || !reaches.test(method)
                         || graph.handled(method) != k.handled()) {
                     continue;
                 }

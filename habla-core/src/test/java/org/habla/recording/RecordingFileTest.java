@@ -170,6 +170,28 @@ class RecordingFileTest {
         assertThat(Files.size(file)).isEqualTo(size);
     }
 
+    @Test
+    void everyEventOfferedFasterThanTheDiskTakesItIsWrittenOrCountedAsDroppedNeverWaitedFor() throws Exception {
+        Path file = dir.resolve("flood.habla-rec");
+        int offered = 200_000;
+        ManualClock clock = new ManualClock(1_000_000);
+        Sample s = new Sample(new NumberValue(0.5), "@robot.value", 1, 1_000_000, false);
+        try (Recorder r = Recorder.create(file, header(), clock)) {
+            for (int i = 0; i < offered; i++) {
+                r.reading("robot", "value", s);
+            }
+        }
+        Recording rec = RecordingReader.readAll(file);
+        RecordedEvent.End end = (RecordedEvent.End) rec.events().get(rec.events().size() - 1);
+        assertThat(end.written() + end.dropped()).as("written %s, dropped %s", end.written(), end.dropped())
+                .isEqualTo(offered);
+        assertThat(rec.events(RecordedEvent.Reading.class)).hasSize((int) end.written());
+        List<RecordedEvent.Dropped> drops = rec.events(RecordedEvent.Dropped.class);
+        if (end.dropped() > 0 && !drops.isEmpty()) {
+            assertThat(drops.get(drops.size() - 1).total()).isLessThanOrEqualTo(end.dropped());
+        }
+    }
+
     private static byte[] encode(org.habla.net.Frame f) throws IOException {
         ByteArrayOutputStream b = new ByteArrayOutputStream();
         FrameWriter w = new FrameWriter(b);
