@@ -186,9 +186,15 @@ class Evolution:
         return self.best_error
 
 
-def motion_features(distance_m, angle_rad):
-    """The inputs of a motion model: what a move does to distance and angle depends on where the target is."""
-    return (1.0, math.cos(angle_rad), math.sin(angle_rad), math.sin(angle_rad) / max(distance_m, 0.25))
+def planar_move(distance_m, angle_rad, forward_m, sideways_m, turn_rad, reach_m):
+    """What a move of the robot does to a target at `distance_m` and `angle_rad` (+ left): a step of
+    `forward_m` along the heading and `sideways_m` to the left, then a turn of `turn_rad`
+    counter-clockwise. Returns (change of distance, change of angle), to first order. `reach_m` is added
+    to the distance where the bearing turns: the distance sensed is to the target's edge, and the bearing
+    is that of its centre, seen from the robot's."""
+    c, s = math.cos(angle_rad), math.sin(angle_rad)
+    return (-(forward_m * c + sideways_m * s),
+            (forward_m * s - sideways_m * c) / max(distance_m + reach_m, 0.1) - turn_rad)
 
 
 class Prediction(collections.namedtuple("Prediction", "distance_m angle_rad relevance")):
@@ -198,12 +204,15 @@ class Prediction(collections.namedtuple("Prediction", "distance_m angle_rad rele
 class WorldModel:
     """Predicts the next perception from the current one and an action.
 
-    Per action a motion model (8 parameters): the change of distance and of angle are each a linear
-    function of `motion_features`, in units of `distance_scale_m` and `angle_scale_rad`. One relevance
+    Per action a motion model of 4 parameters — a step forward and sideways and a turn (`planar_move`),
+    in units of `distance_scale_m` and `angle_scale_rad`, and the reach from the sensed edge to the
+    target's centre — so that a move learned with the target ahead is also known with it behind: a
+    teacher asks for turns when the target is to a side and for forward when it is ahead, and a model
+    free to fit each region on its own would guess anything where it has not been shown. One relevance
     table (actions x commands): the reward the teacher is expected to give for an action after a command.
     Each part is its own evolving population, scored on the experiences it can explain."""
 
-    MOTION_DIM = 8
+    MOTION_DIM = 4
     RELEVANCE_DECAY = 0.05  # pulls untried entries of the table towards 0: neither good nor bad
     RELEVANCE_GENERATIONS = 3  # the table gets this many times the generations: commands are few and precious
 
@@ -213,10 +222,9 @@ class WorldModel:
         self.relevance = Evolution(len(ACTIONS) * len(COMMANDS), rng, size=population, init_scale=0.05)
 
     def _motion(self, params, distance_m, angle_rad):
-        f = motion_features(distance_m, angle_rad)
-        dd = self.ds * sum(w * x for w, x in zip(params[:4], f))
-        da = self.as_ * sum(w * x for w, x in zip(params[4:], f))
-        return dd, da
+        forward, sideways, turn, reach = params
+        return planar_move(distance_m, angle_rad, self.ds * forward, self.ds * sideways, self.as_ * turn,
+                           self.ds * abs(reach))
 
     @staticmethod
     def _relevance(params, action, command):
@@ -399,7 +407,7 @@ class Runner:
     """The decision loop over a `ContractLink`: wait for a fresh perception (or a command), decide, write
     the action, learn while it takes effect, then record the experience with the reward it earned."""
 
-    def __init__(self, link, brain, step_s=1.2, reward_wait_s=1.0, absent_after_s=8.0, log=None, clock=time.monotonic,
+    def __init__(self, link, brain, step_s=1.2, reward_wait_s=2.0, absent_after_s=8.0, log=None, clock=time.monotonic,
                  smooth=3):
         self.link, self.brain = link, brain
         self.smooth = max(1, smooth)
@@ -452,7 +460,7 @@ class Runner:
     def _step(self, before, sample_number, start):
         link, brain = self.link, self.brain
         action, explored, scores = brain.decide(before)
-        rewards_mark = link.rewards_heard
+        rewards_mark, commands_mark = link.rewards_heard, link.commands_heard
         if not link.act(action):
             self.log({"event": "not_written", "action": action})
             return
@@ -466,7 +474,9 @@ class Runner:
         if link.distance_angle is not None and link.distance_angle.number <= sample_number:
             link.wait_until(lambda: link.distance_angle.number > sample_number, 0.5)
         if before.command is not None:
-            link.wait_until(lambda: link.rewards_heard > rewards_mark,
+            # a teacher judges a while after the command (a spoken one is heard late), and a touch takes
+            # time too: wait for the reward, but not past the next command — that one is the next step's
+            link.wait_until(lambda: link.rewards_heard > rewards_mark or link.commands_heard > commands_mark,
                             written_at + self.step_s + self.reward_wait_s - self.clock())
         rewards = link.rewards_after(rewards_mark)
         reward = rewards[-1].value if rewards else None
@@ -500,7 +510,7 @@ def parse_args(argv):
     p.add_argument("--speed", type=float, default=1.0,
                    help="divides the default times below, for a world that runs S times faster")
     p.add_argument("--step-s", type=float, help="how long an action is given to take effect (default 1.2)")
-    p.add_argument("--reward-wait-s", type=float, help="extra wait for the reward after a command (default 1.0)")
+    p.add_argument("--reward-wait-s", type=float, help="extra wait for the reward after a command, ended by the next command (default 2.0)")
     p.add_argument("--absent-after-s", type=float, help="no command for this long: the teacher has gone (default 8)")
     p.add_argument("--smooth", type=int, default=3, help="distance_angle samples a perception is the median of")
     p.add_argument("--horizon", type=int, default=2, choices=(1, 2),
@@ -514,7 +524,7 @@ def parse_args(argv):
     args = p.parse_args(argv)
     if args.speed < 1.0:
         p.error("--speed must be at least 1")
-    for name, default in (("step_s", 1.2), ("reward_wait_s", 1.0), ("absent_after_s", 8.0)):
+    for name, default in (("step_s", 1.2), ("reward_wait_s", 2.0), ("absent_after_s", 8.0)):
         if getattr(args, name) is None:
             setattr(args, name, default / args.speed)
     return args

@@ -213,16 +213,16 @@ class SonarBearingTest(unittest.TestCase):
     def sensed(self, d, a):
         return mdb.Perception(d, self.STEP_RAD * round(a / self.STEP_RAD), True, None)
 
-    def approach(self, horizon):
-        rng = random.Random(5)
-        brain = mdb.Brain(seed=5, memory=200, epsilon=0.0, epsilon_min=0.0, horizon=horizon)
+    def approach(self, seed, horizon):
+        rng = random.Random(seed)
+        brain = mdb.Brain(seed=seed, memory=200, epsilon=0.0, epsilon_min=0.0, horizon=horizon)
         for e in taught(rng, 150, obedience=0.8):
             b, a = self.sensed(e.before.distance_m, e.before.angle_rad), self.sensed(e.after.distance_m, e.after.angle_rad)
             brain.remember(e._replace(before=b._replace(command=e.before.command), after=a))
         for _ in range(60):
             brain.learn()
         reached = 0
-        for start in (0.3, -0.3, 0.45, -0.45, 2.0):
+        for start in (0.3, -0.3, 0.45, -0.45, 2.0, -2.0, 2.9, -2.9):
             d, a = 1.6, start
             for _ in range(25):
                 if d <= 0.1:
@@ -232,7 +232,12 @@ class SonarBearingTest(unittest.TestCase):
         return reached
 
     def test_looking_two_steps_ahead_does_not_dither_between_turns_near_the_object(self):
-        self.assertEqual(5, self.approach(horizon=2))
+        one = sum(self.approach(seed, horizon=1) for seed in (1, 2, 3))
+        two = sum(self.approach(seed, horizon=2) for seed in (1, 2, 3))
+        print("\nMDB sonar bearings: reached from %d of 24 starts looking one step ahead, %d of 24 looking two"
+              % (one, two), file=sys.stderr)
+        self.assertGreaterEqual(two, 21)
+        self.assertGreater(two, one + 3)
 
 
 class MemoryTest(unittest.TestCase):
