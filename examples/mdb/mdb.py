@@ -186,15 +186,9 @@ class Evolution:
         return self.best_error
 
 
-def planar_move(distance_m, angle_rad, forward_m, sideways_m, turn_rad, reach_m):
-    """What a move of the robot does to a target at `distance_m` and `angle_rad` (+ left): a step of
-    `forward_m` along the heading and `sideways_m` to the left, then a turn of `turn_rad`
-    counter-clockwise. Returns (change of distance, change of angle), to first order. `reach_m` is added
-    to the distance where the bearing turns: the distance sensed is to the target's edge, and the bearing
-    is that of its centre, seen from the robot's."""
-    c, s = math.cos(angle_rad), math.sin(angle_rad)
-    return (-(forward_m * c + sideways_m * s),
-            (forward_m * s - sideways_m * c) / max(distance_m + reach_m, 0.1) - turn_rad)
+def motion_features(distance_m, angle_rad):
+    """The inputs of a motion model: what a move does to distance and angle depends on where the target is."""
+    return (1.0, math.cos(angle_rad), math.sin(angle_rad), math.sin(angle_rad) / max(distance_m, 0.25))
 
 
 class Prediction(collections.namedtuple("Prediction", "distance_m angle_rad relevance")):
@@ -204,15 +198,12 @@ class Prediction(collections.namedtuple("Prediction", "distance_m angle_rad rele
 class WorldModel:
     """Predicts the next perception from the current one and an action.
 
-    Per action a motion model of 4 parameters — a step forward and sideways and a turn (`planar_move`),
-    in units of `distance_scale_m` and `angle_scale_rad`, and the reach from the sensed edge to the
-    target's centre — so that a move learned with the target ahead is also known with it behind: a
-    teacher asks for turns when the target is to a side and for forward when it is ahead, and a model
-    free to fit each region on its own would guess anything where it has not been shown. One relevance
+    Per action a motion model (8 parameters): the change of distance and of angle are each a linear
+    function of `motion_features`, in units of `distance_scale_m` and `angle_scale_rad`. One relevance
     table (actions x commands): the reward the teacher is expected to give for an action after a command.
     Each part is its own evolving population, scored on the experiences it can explain."""
 
-    MOTION_DIM = 4
+    MOTION_DIM = 8
     RELEVANCE_DECAY = 0.05  # pulls untried entries of the table towards 0: neither good nor bad
     RELEVANCE_GENERATIONS = 3  # the table gets this many times the generations: commands are few and precious
 
@@ -222,9 +213,10 @@ class WorldModel:
         self.relevance = Evolution(len(ACTIONS) * len(COMMANDS), rng, size=population, init_scale=0.05)
 
     def _motion(self, params, distance_m, angle_rad):
-        forward, sideways, turn, reach = params
-        return planar_move(distance_m, angle_rad, self.ds * forward, self.ds * sideways, self.as_ * turn,
-                           self.ds * abs(reach))
+        f = motion_features(distance_m, angle_rad)
+        dd = self.ds * sum(w * x for w, x in zip(params[:4], f))
+        da = self.as_ * sum(w * x for w, x in zip(params[4:], f))
+        return dd, da
 
     @staticmethod
     def _relevance(params, action, command):
