@@ -352,9 +352,11 @@ class Brain:
         to the other looks like facing it better, and the turn back looks the same; over two steps a turn
         and its undoing lead back to where they started, while closing in and then turning leads closer.
 
-        A plan is only as good as the experience behind it: its satisfaction is pulled towards the worst
-        of the moment in proportion to how little the world models of its actions have seen (the least
-        `confidence` of them), so a rarely tried action is not taken on a badly trained model's word. The
+        A plan is only as good as the experience behind it: its satisfaction is pulled towards that of
+        staying where the robot is — what an unknown move is worth, neither gain nor loss — in proportion
+        to how little the world models of its actions have seen (the least `confidence` of them), so a
+        rarely tried action is not taken on a badly trained model's word, yet is not ruled out either when
+        everything known makes matters worse. The
         relevance table needs no such care: its untried entries sit at 0, below rewarded ones."""
         self.predictions = {a: self.world.predict(perception, a) for a in ACTIONS}
         if perception.command in COMMANDS:
@@ -380,8 +382,8 @@ class Brain:
                 middle = Perception(p.distance_m, p.angle_rad, True, None)
                 ends = [(self.world.predict(middle, a), min(trust[first], trust[a])) for a in ACTIONS]
             plans[first] = [(self.satisfaction.induced_of(perception, e.distance_m, e.angle_rad), c) for e, c in ends]
-        worst = min(v for ends in plans.values() for v, _ in ends)
-        return {a: max(worst + c * (v - worst) for v, c in ends) for a, ends in plans.items()}
+        stay = self.satisfaction.induced_of(perception, perception.distance_m, perception.angle_rad)
+        return {a: max(stay + c * (v - stay) for v, c in ends) for a, ends in plans.items()}
 
     def remember(self, experience):
         self.memory.add(experience)

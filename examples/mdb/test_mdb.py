@@ -188,7 +188,8 @@ class CautionTest(unittest.TestCase):
         brain.horizon = 1  # one step: the blend is plain to see
         action, _, scores = brain.decide(here)
         self.assertEqual("forward", action, scores)
-        self.assertAlmostEqual(min(scores.values()) + 0.25 * (raw - min(scores.values())), scores["back"])
+        stay = brain.satisfaction.induced_of(here, here.distance_m, here.angle_rad)
+        self.assertAlmostEqual(stay + 0.25 * (raw - stay), scores["back"])
         brain.horizon = 2
         self.assertEqual("forward", brain.decide(here)[0])
 
