@@ -24,6 +24,7 @@ sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."
 from habla_client import ControlError, ControlSocket  # noqa: E402  (the path above is where it lives)
 
 DEFAULT_PORTS = {"command": 7001, "distance_angle": 7002, "reward": 7003, "action": 7004}
+SAMPLES_KEPT = 32  # distance_angle samples remembered, for a caller that smooths over a few
 EVENTS_KEPT = 256  # commands and rewards remembered; older ones are dropped (numbering goes on)
 
 
@@ -51,6 +52,7 @@ class ContractLink:
         self._connected = False
         self.connections = 0  # how many times all four sockets came up
         self.distance_angle = None
+        self._recent = collections.deque(maxlen=SAMPLES_KEPT)
         self._commands = collections.deque(maxlen=EVENTS_KEPT)
         self._rewards = collections.deque(maxlen=EVENTS_KEPT)
         self.commands_heard = 0
@@ -98,6 +100,11 @@ class ContractLink:
                 if value or remaining <= 0 or self._closed:
                     return value
                 self._cv.wait(min(remaining, 0.25))
+
+    def samples_after(self, number):
+        """The distance_angle samples numbered above `number` still remembered, oldest first."""
+        with self._cv:
+            return [e for e in self._recent if e.number > number]
 
     def commands_after(self, number):
         """The commands numbered above `number`, oldest first."""
@@ -212,6 +219,7 @@ class ContractLink:
                 self.samples_seen += 1
                 self.distance_angle = DistanceAngle(float(d), float(a), bool(value.get("seen", True)),
                                                     self.samples_seen, now, bool(line.get("stale")))
+                self._recent.append(self.distance_angle)
             elif name == "command":
                 value = line.get("value")
                 if isinstance(value, str) and not line.get("stale"):

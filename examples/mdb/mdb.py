@@ -58,6 +58,23 @@ class Perception(collections.namedtuple("Perception", "distance_m angle_rad seen
     target is perceived now, and the command just heard (a label, or None)."""
 
 
+def settled(samples, command=None):
+    """One perception from a few consecutive distance_angle samples: the median distance and the median
+    angle (taken round the latest, so that +-pi is no seam), seen if most of them saw the target. A
+    sonar's angle jumps between neighbouring transducers' directions from one scan to the next; the
+    median of three keeps one odd scan from steering the robot."""
+    latest = samples[-1]
+    distances = sorted(s.distance_m for s in samples)
+    offsets = sorted(wrap(s.angle_rad - latest.angle_rad) for s in samples)
+    mid = len(samples) // 2
+    if len(samples) % 2:
+        d, o = distances[mid], offsets[mid]
+    else:
+        d, o = (distances[mid - 1] + distances[mid]) / 2, (offsets[mid - 1] + offsets[mid]) / 2
+    seen = 2 * sum(1 for s in samples if s.seen) > len(samples)
+    return Perception(d, wrap(latest.angle_rad + o), seen, command)
+
+
 class Experience(collections.namedtuple("Experience", "before action after reward")):
     """One step: the perception before, the action taken, the perception after, and the reward heard
     for it (None when no reward came)."""
@@ -292,17 +309,27 @@ class SatisfactionModel:
 class Brain:
     """Memory, models and action selection; the part of the architecture that knows no sockets."""
 
+    TRUSTED_AFTER = 8  # experiences of an action after which its world model is fully trusted
+
     def __init__(self, seed=0, memory=80, population=16, generations=3, epsilon=0.2, epsilon_decay=0.97,
-                 epsilon_min=0.02, distance_scale_m=0.2, angle_scale_rad=0.5):
+                 epsilon_min=0.02, distance_scale_m=0.2, angle_scale_rad=0.5, horizon=2):
         self.rng = random.Random(seed)
         self.memory = ShortTermMemory(memory)
         self.world = WorldModel(self.rng, distance_scale_m, angle_scale_rad, population)
         self.satisfaction = SatisfactionModel(self.rng, distance_scale_m, angle_scale_rad, population)
         self.generations = generations
+        self.horizon = horizon
         self.epsilon0, self.epsilon_decay, self.epsilon_min = epsilon, epsilon_decay, epsilon_min
         self.decisions = 0
         self.errors = {}
         self.predictions = {}
+
+    def confidence(self, action):
+        """How far the world model of `action` can be trusted, 0..1: n / TRUSTED_AFTER, n being the
+        experiences of that action it has learned from, at most 1. An action tried a few times has a model
+        fitted to a few points, whose guesses away from them are anybody's."""
+        n = sum(1 for e in self.memory.experiences() if e.action == action and usable(e, self.world.ds))
+        return min(1.0, n / self.TRUSTED_AFTER)
 
     @property
     def epsilon(self):
@@ -316,9 +343,26 @@ class Brain:
         return self.satisfaction.induced_of(perception, predicted.distance_m, predicted.angle_rad)
 
     def decide(self, perception):
-        """Chooses an action; returns (action, explored, scores by action)."""
+        """Chooses an action; returns (action, explored, scores by action).
+
+        With a command, an action's score is the relevance the world model predicts for it. Without one,
+        the induced satisfaction model scores where a short plan leads: for `horizon` 2, every action
+        followed by the best next action, the first action scored by its best plan. One step alone rewards
+        moves that only seem to gain — near the object, a turn that flips a sonar's bearing from one side
+        to the other looks like facing it better, and the turn back looks the same; over two steps a turn
+        and its undoing lead back to where they started, while closing in and then turning leads closer.
+
+        A plan is only as good as the experience behind it: its satisfaction is pulled towards that of
+        staying where the robot is — what an unknown move is worth, neither gain nor loss — in proportion
+        to how little the world models of its actions have seen (the least `confidence` of them), so a
+        rarely tried action is not taken on a badly trained model's word, yet is not ruled out either when
+        everything known makes matters worse. The
+        relevance table needs no such care: its untried entries sit at 0, below rewarded ones."""
         self.predictions = {a: self.world.predict(perception, a) for a in ACTIONS}
-        scores = {a: self.score(perception, a) for a in ACTIONS}
+        if perception.command in COMMANDS:
+            scores = {a: self.score(perception, a) for a in ACTIONS}
+        else:
+            scores = self._plan_scores(perception)
         explored = self.rng.random() < self.epsilon
         if explored:
             action = self.rng.choice(ACTIONS)
@@ -327,6 +371,19 @@ class Brain:
             action = self.rng.choice([a for a in ACTIONS if scores[a] >= top - 1e-9])
         self.decisions += 1
         return action, explored, scores
+
+    def _plan_scores(self, perception):
+        trust = {a: self.confidence(a) for a in ACTIONS}
+        plans = {}  # first action -> [(satisfaction, confidence)] of its plans
+        for first, p in self.predictions.items():
+            if self.horizon < 2:
+                ends = [(p, trust[first])]
+            else:
+                middle = Perception(p.distance_m, p.angle_rad, True, None)
+                ends = [(self.world.predict(middle, a), min(trust[first], trust[a])) for a in ACTIONS]
+            plans[first] = [(self.satisfaction.induced_of(perception, e.distance_m, e.angle_rad), c) for e, c in ends]
+        stay = self.satisfaction.induced_of(perception, perception.distance_m, perception.angle_rad)
+        return {a: max(stay + c * (v - stay) for v, c in ends) for a, ends in plans.items()}
 
     def remember(self, experience):
         self.memory.add(experience)
@@ -344,8 +401,10 @@ class Runner:
     """The decision loop over a `ContractLink`: wait for a fresh perception (or a command), decide, write
     the action, learn while it takes effect, then record the experience with the reward it earned."""
 
-    def __init__(self, link, brain, step_s=1.2, reward_wait_s=1.0, absent_after_s=8.0, log=None, clock=time.monotonic):
+    def __init__(self, link, brain, step_s=1.2, reward_wait_s=2.0, absent_after_s=8.0, log=None, clock=time.monotonic,
+                 smooth=3):
         self.link, self.brain = link, brain
+        self.smooth = max(1, smooth)
         self.step_s, self.reward_wait_s, self.absent_after_s = step_s, reward_wait_s, absent_after_s
         self.log = log or (lambda record: None)
         self.clock = clock
@@ -383,21 +442,35 @@ class Runner:
                 used_sample = da.number
                 continue
             used_sample = da.number
-            self._step(Perception(da.distance_m, da.angle_rad, da.seen, command), da.number, start)
+            self._step(self._perceive(da, command), da.number, start)
+
+    def _perceive(self, latest, command):
+        """The perception from the last `smooth` fresh samples up to `latest` (fewer if the link has only
+        those)."""
+        recent = [s for s in self.link.samples_after(latest.number - self.smooth)
+                  if s.number <= latest.number and not s.stale]
+        return settled(recent or [latest], command)
 
     def _step(self, before, sample_number, start):
         link, brain = self.link, self.brain
         action, explored, scores = brain.decide(before)
-        rewards_mark = link.rewards_heard
+        rewards_mark, commands_mark = link.rewards_heard, link.commands_heard
         if not link.act(action):
             self.log({"event": "not_written", "action": action})
             return
         written_at = self.clock()
         errors = brain.learn()
         link.wait_until(lambda: False, written_at + self.step_s - self.clock())
-        link.wait_until(lambda: link.distance_angle is not None and link.distance_angle.number > sample_number, 0.5)
+        # the move is over: wait for `smooth` samples taken since, so that the perception after is one at rest
+        mark = max(sample_number, link.distance_angle.number if link.distance_angle is not None else 0)
+        link.wait_until(lambda: link.distance_angle is not None and link.distance_angle.number >= mark + self.smooth,
+                        0.5)
+        if link.distance_angle is not None and link.distance_angle.number <= sample_number:
+            link.wait_until(lambda: link.distance_angle.number > sample_number, 0.5)
         if before.command is not None:
-            link.wait_until(lambda: link.rewards_heard > rewards_mark,
+            # a teacher judges a while after the command (a spoken one is heard late), and a touch takes
+            # time too: wait for the reward, but not past the next command — that one is the next step's
+            link.wait_until(lambda: link.rewards_heard > rewards_mark or link.commands_heard > commands_mark,
                             written_at + self.step_s + self.reward_wait_s - self.clock())
         rewards = link.rewards_after(rewards_mark)
         reward = rewards[-1].value if rewards else None
@@ -405,7 +478,7 @@ class Runner:
         if da.number <= sample_number or da.stale:
             self.log({"event": "no_fresh_perception", "action": action})  # the daemon went away meanwhile
             return
-        after = Perception(da.distance_m, da.angle_rad, da.seen, None)
+        after = self._perceive(da, None)
         brain.remember(Experience(before, action, after, reward))
         self.steps += 1
         self.log({"t": round(self.clock() - start, 3), "step": self.steps, "command": before.command,
@@ -431,8 +504,11 @@ def parse_args(argv):
     p.add_argument("--speed", type=float, default=1.0,
                    help="divides the default times below, for a world that runs S times faster")
     p.add_argument("--step-s", type=float, help="how long an action is given to take effect (default 1.2)")
-    p.add_argument("--reward-wait-s", type=float, help="extra wait for the reward after a command (default 1.0)")
+    p.add_argument("--reward-wait-s", type=float, help="extra wait for the reward after a command, ended by the next command (default 2.0)")
     p.add_argument("--absent-after-s", type=float, help="no command for this long: the teacher has gone (default 8)")
+    p.add_argument("--smooth", type=int, default=3, help="distance_angle samples a perception is the median of")
+    p.add_argument("--horizon", type=int, default=2, choices=(1, 2),
+                   help="steps a plan looks ahead when no command is heard")
     p.add_argument("--memory", type=int, default=80, help="experiences kept in short-term memory")
     p.add_argument("--population", type=int, default=16, help="individuals per evolving model")
     p.add_argument("--generations", type=int, default=3, help="generations per model after each experience")
@@ -442,7 +518,7 @@ def parse_args(argv):
     args = p.parse_args(argv)
     if args.speed < 1.0:
         p.error("--speed must be at least 1")
-    for name, default in (("step_s", 1.2), ("reward_wait_s", 1.0), ("absent_after_s", 8.0)):
+    for name, default in (("step_s", 1.2), ("reward_wait_s", 2.0), ("absent_after_s", 8.0)):
         if getattr(args, name) is None:
             setattr(args, name, default / args.speed)
     return args
@@ -464,8 +540,8 @@ def main(argv=None):
              "reward": args.reward_port, "action": args.action_port}
     link = ContractLink(args.host, ports, on_event=lambda kind, detail: log({"event": kind, "detail": detail}))
     brain = Brain(seed=args.seed, memory=args.memory, population=args.population, generations=args.generations,
-                  epsilon=args.epsilon, epsilon_decay=args.epsilon_decay, epsilon_min=args.epsilon_min)
-    runner = Runner(link, brain, args.step_s, args.reward_wait_s, args.absent_after_s, log)
+                  epsilon=args.epsilon, epsilon_decay=args.epsilon_decay, epsilon_min=args.epsilon_min, horizon=args.horizon)
+    runner = Runner(link, brain, args.step_s, args.reward_wait_s, args.absent_after_s, log, smooth=args.smooth)
     signal.signal(signal.SIGTERM, _interrupt)
     link.start()
     try:
