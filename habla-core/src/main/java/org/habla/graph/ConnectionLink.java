@@ -9,9 +9,7 @@ import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.InetSocketAddress;
 import java.net.Socket;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 import org.habla.config.Reconnect;
 import org.habla.driver.Connection;
@@ -35,11 +33,10 @@ final class ConnectionLink {
     private final String host;
     private final Connection connection;
     private final Reconnect reconnect;
+    private final BackOff backOff;
     private final ReadingSink sink;
     private final Runnable onStateChange;
     private final ReentrantLock writeLock = new ReentrantLock();
-    private final ReentrantLock sleepLock = new ReentrantLock();
-    private final Condition wakeUp = sleepLock.newCondition();
     private final AtomicLong connects = new AtomicLong();
     private final AtomicLong failures = new AtomicLong();
     private volatile boolean running;
@@ -57,6 +54,7 @@ final class ConnectionLink {
         this.host = host;
         this.connection = connection;
         this.reconnect = reconnect;
+        this.backOff = new BackOff(reconnect);
         this.sink = sink;
         this.onStateChange = onStateChange;
     }
@@ -81,12 +79,7 @@ final class ConnectionLink {
             write("goodbye", (s, o) -> s.goodbye(o));
         }
         closeSocket();
-        sleepLock.lock();
-        try {
-            wakeUp.signalAll();
-        } finally {
-            sleepLock.unlock();
-        }
+        backOff.wake();
         if (thread != null) {
             try {
                 thread.join(2_000);
@@ -97,11 +90,10 @@ final class ConnectionLink {
     }
 
     private void loop() {
-        long backoff = reconnect.initialMs();
         while (running) {
             try {
                 runOnce();
-                backoff = reconnect.initialMs();
+                backOff.reset();
             } catch (IOException | RuntimeException e) {
                 if (!running) {
                     break;
@@ -117,8 +109,9 @@ final class ConnectionLink {
                 markDown();
             }
             if (running) {
-                sleep(backoff);
-                backoff = Math.min(reconnect.maxMs(), backoff * 2);
+                if (!backOff.pause(() -> running)) {
+                    running = false;
+                }
             }
         }
     }
@@ -200,17 +193,6 @@ final class ConnectionLink {
         }
     }
 
-    private void sleep(long millis) {
-        sleepLock.lock();
-        try {
-            wakeUp.await(millis, TimeUnit.MILLISECONDS);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            running = false;
-        } finally {
-            sleepLock.unlock();
-        }
-    }
 
     /** Writes a command now; false if the connection is down or the write failed. */
     boolean command(String channel, Payload value) {

@@ -9,8 +9,6 @@ import java.net.Socket;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.concurrent.locks.Condition;
-import java.util.concurrent.locks.ReentrantLock;
 import org.habla.config.Fallback;
 import org.habla.config.Limits;
 import org.habla.config.MethodConfig;
@@ -55,10 +53,9 @@ final class RemotePlacement {
     private final MethodRunner runner;
     private final Limits limits;
     private final Reconnect reconnect;
+    private final BackOff backOff;
     private final Runnable onStateChange;
     private final ArrayBlockingQueue<Frame> outbound = new ArrayBlockingQueue<>(QUEUE_SAMPLES);
-    private final ReentrantLock sleepLock = new ReentrantLock();
-    private final Condition wakeUp = sleepLock.newCondition();
     private final AtomicLong sent = new AtomicLong();
     private final AtomicLong received = new AtomicLong();
     private final AtomicLong dropped = new AtomicLong();
@@ -82,6 +79,7 @@ final class RemotePlacement {
         this.runner = runner;
         this.limits = limits;
         this.reconnect = reconnect;
+        this.backOff = new BackOff(reconnect);
         this.onStateChange = onStateChange;
     }
 
@@ -113,12 +111,7 @@ final class RemotePlacement {
     void stop() {
         running = false;
         closeSocket();
-        sleepLock.lock();
-        try {
-            wakeUp.signalAll();
-        } finally {
-            sleepLock.unlock();
-        }
+        backOff.wake();
         if (thread != null) {
             try {
                 thread.join(2_000);
@@ -141,11 +134,10 @@ final class RemotePlacement {
     }
 
     private void loop() {
-        long backoff = reconnect.initialMs();
         while (running) {
             try {
                 runOnce();
-                backoff = reconnect.initialMs();
+                backOff.reset();
             } catch (IOException | RuntimeException e) {
                 if (!running) {
                     break;
@@ -165,8 +157,9 @@ final class RemotePlacement {
                 if (fallsBackToLocal()) {
                     runner.fallBackToLocal();
                 }
-                sleep(backoff);
-                backoff = Math.min(reconnect.maxMs(), backoff * 2);
+                if (!backOff.pause(() -> running)) {
+                    running = false;
+                }
             }
         }
     }
@@ -319,20 +312,6 @@ final class RemotePlacement {
         }
     }
 
-    private void sleep(long millis) {
-        sleepLock.lock();
-        try {
-            long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(millis);
-            long left;
-            while (running && (left = deadline - System.nanoTime()) > 0) {
-                wakeUp.awaitNanos(left);
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        } finally {
-            sleepLock.unlock();
-        }
-    }
 
     ObjectNode status() {
         ObjectNode n = JsonNodeFactory.instance.objectNode();
