@@ -53,6 +53,7 @@ public final class TekkotsuServers implements AutoCloseable {
             MenuItem root = menu();
             controller = add(new TekkotsuSocket("controller", ports.controller(), true,
                     new ControllerServer(root, settings)));
+            sockets.forEach(TekkotsuSocket::releaseReservation);
         } catch (IOException | RuntimeException e) {
             close();
             throw e;

@@ -35,6 +35,8 @@ final class TekkotsuSocket implements AutoCloseable {
     private Socket current;
     private Thread serving;
     private boolean closed;
+    /** The first socket of a server off at boot, kept until every server has its port (see {@link #releaseReservation}). */
+    private ServerSocket reserved;
 
     TekkotsuSocket(String name, int port, boolean onAtBoot, Client client) throws IOException {
         this.name = name;
@@ -44,8 +46,17 @@ final class TekkotsuSocket implements AutoCloseable {
         if (onAtBoot) {
             listen(first);
         } else {
-            first.close();
+            reserved = first;
         }
+    }
+
+    /**
+     * Closes the socket that held the port of a server off at boot. Until then a free port chosen for it cannot
+     * be handed out again to another server of the same robot.
+     */
+    synchronized void releaseReservation() {
+        closeQuietly(reserved);
+        reserved = null;
     }
 
     String name() {
@@ -71,7 +82,9 @@ final class TekkotsuSocket implements AutoCloseable {
             }
             if (running) {
                 try {
-                    listen(bind(port));
+                    ServerSocket held = reserved;
+                    reserved = null;
+                    listen(held != null ? held : bind(port));
                 } catch (IOException e) {
                     LOG.warn("{}: cannot listen on port {} again: {}", name, port, e.getMessage());
                 }
@@ -165,6 +178,7 @@ final class TekkotsuSocket implements AutoCloseable {
 
     @Override
     public void close() {
+        releaseReservation();
         switchOn(false);
         synchronized (this) {
             closed = true;

@@ -78,6 +78,7 @@ class PioneerRecordReplayTest {
     void aRecordedPioneerEpisodeReplaysToTheSameVirtualOutputsValueForValue() throws Exception {
         Path file = dir.resolve("episode-" + System.nanoTime() + ".habla-rec");
         rig.startDaemon("--record", file.toString());
+        rig.awaitReady(60_000);
         episode();
         assertThat(rig.daemon.terminate(10_000)).as("the daemon stops on SIGTERM").isZero();
 
@@ -107,6 +108,7 @@ class PioneerRecordReplayTest {
     void aDaemonKilledMidRecordingLeavesAFileThatReplays() throws Exception {
         Path file = dir.resolve("killed-" + System.nanoTime() + ".habla-rec");
         rig.startDaemon("--record", file.toString());
+        rig.awaitReady(60_000);
         rig.place(1.2, 0.8, 0.0);
         rig.truth.send(TruthLink.op("say").put("label", "right"));
         rig.probe(20_000, "act", "" + rig.port("action"), "right", "0.3");

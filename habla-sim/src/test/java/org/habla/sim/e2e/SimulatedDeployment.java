@@ -99,7 +99,7 @@ final class SimulatedDeployment implements AutoCloseable {
                 .isTrue();
     }
 
-    /** Waits until every method of the daemon says it is ready (models loaded), as its status endpoint tells. */
+    /** Waits until every method of the daemon is ready (models loaded) and every link to the robot is up, as its status endpoint tells. */
     void awaitReady(long timeoutMs) throws Exception {
         int port = JSON.readTree(Files.readString(config)).path("status").path("port").asInt();
         long end = System.nanoTime() + timeoutMs * 1_000_000L;
@@ -113,6 +113,11 @@ final class SimulatedDeployment implements AutoCloseable {
                 for (JsonNode m : status.path("methods")) {
                     if (!m.path("ready").asBoolean()) {
                         notReady += m.path("id").asText() + " ";
+                    }
+                }
+                for (JsonNode i : status.path("interfaces")) {
+                    if (!i.path("up").asBoolean()) {
+                        notReady += "link:" + i.path("id").asText() + " ";
                     }
                 }
                 if (notReady.isEmpty()) {
