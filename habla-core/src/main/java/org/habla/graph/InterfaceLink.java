@@ -9,7 +9,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
-import java.util.function.Consumer;
 import org.habla.config.InterfaceConfig;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.driver.Connection;
@@ -38,7 +37,7 @@ final class InterfaceLink {
     private final Map<String, OutputPort> readings = new HashMap<>();
     private final Map<String, ConnectionLink> commandRoutes = new HashMap<>();
     private final List<ConnectionLink> connections = new ArrayList<>();
-    private final List<Consumer<Boolean>> stateListeners = new ArrayList<>();
+    private final LinkStates states;
     private final boolean replayed;
     private final Sink sink = new Sink();
     private final LongAdder malformed = new LongAdder();
@@ -55,8 +54,10 @@ final class InterfaceLink {
      *                 only a description of the channels, readings and link changes are pushed in, and commands
      *                 are absorbed (counted and tapped as sent) instead of written
      */
-    InterfaceLink(InterfaceConfig config, Driver driver, EngineClock clock, GraphTap tap, boolean replayed) {
+    InterfaceLink(InterfaceConfig config, Driver driver, EngineClock clock, GraphTap tap, boolean replayed,
+            LinkStates states) {
         this.replayed = replayed;
+        this.states = states;
         this.config = config;
         this.clock = clock;
         this.tap = tap;
@@ -96,10 +97,6 @@ final class InterfaceLink {
         this.watchdog = w;
     }
 
-    void onStateChange(Consumer<Boolean> listener) {
-        stateListeners.add(listener);
-    }
-
     boolean up() {
         return up;
     }
@@ -108,8 +105,8 @@ final class InterfaceLink {
         for (ConnectionLink c : connections) {
             c.start();
         }
-        linkTicker = clock.every(1_000_000, this::publishLink);
-        publishLink();
+        linkTicker = clock.every(1_000_000, () -> states.locked(this::publishLink));
+        states.locked(this::publishLink);
     }
 
     void stop() {
@@ -169,13 +166,13 @@ final class InterfaceLink {
 
     /** A recorded link change, replayed. */
     void replayLink(boolean isUp) {
-        if (isUp != up) {
-            up = isUp;
-            tap.link(config.id(), isUp, clock.nowMicros());
-            for (Consumer<Boolean> l : stateListeners) {
-                l.accept(isUp);
+        states.locked(() -> {
+            if (isUp != up) {
+                up = isUp;
+                tap.link(config.id(), isUp, clock.nowMicros());
+                states.refreshStaleness();
             }
-        }
+        });
     }
 
     /** Writes the stop of every connection that carries a motion channel, each from a thread of its own. */
@@ -205,18 +202,24 @@ final class InterfaceLink {
         }
     }
 
+    /**
+     * A connection went up or down: the interface is up when all its connections are. The staleness of what
+     * depends on it changes first, then the link record goes out, so the record arrives with the stale flag of
+     * the state it tells of.
+     */
     private void connectionChanged() {
-        boolean all = connections.stream().allMatch(ConnectionLink::up);
-        if (all != up) {
-            up = all;
-            tap.link(config.id(), all, clock.nowMicros());
-            publishLink();
-            for (Consumer<Boolean> l : stateListeners) {
-                l.accept(all);
+        states.locked(() -> {
+            boolean all = connections.stream().allMatch(ConnectionLink::up);
+            if (all != up) {
+                up = all;
+                tap.link(config.id(), all, clock.nowMicros());
+                states.refreshStaleness();
+                publishLink();
             }
-        }
+        });
     }
 
+    /** Publishes the link record; under the link-state lock, so it never overtakes a change. */
     private void publishLink() {
         if (replayed) {
             // A replay publishes the link records of the recording instead, as they were.

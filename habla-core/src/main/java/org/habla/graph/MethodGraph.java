@@ -54,7 +54,7 @@ public final class MethodGraph implements AutoCloseable {
     private final Map<String, Set<String>> upstreamInterfaces = new HashMap<>();
     private final Map<String, RemotePlacement> placements = new LinkedHashMap<>();
     private final Map<String, Set<String>> upstreamPlacements = new HashMap<>();
-    private final Object staleLock = new Object();
+    private final LinkStates linkStates = new LinkStates();
     private final List<ExposedMethod> exposed = new ArrayList<>();
     private final MotionWatchdog watchdog;
     private final long startedMicros;
@@ -82,7 +82,7 @@ public final class MethodGraph implements AutoCloseable {
         for (InterfaceConfig ic : config.interfaces()) {
             org.habla.driver.Driver driver = replayed ? new RecordedDriver(recordedChannels.getOrDefault(ic.id(), List.of()))
                     : createDriver(registry, ic);
-            links.put(ic.id(), new InterfaceLink(ic, driver, clock, tap, replayed));
+            links.put(ic.id(), new InterfaceLink(ic, driver, clock, tap, replayed, linkStates));
         }
         this.watchdog = new MotionWatchdog(config.safety().watchdogMs(), clock, List.copyOf(links.values()));
         links.values().forEach(l -> l.watchdog(watchdog));
@@ -93,8 +93,7 @@ public final class MethodGraph implements AutoCloseable {
         for (MethodConfig mc : config.methods()) {
             if (mc.host().isPresent()) {
                 MethodRunner runner = runners.get(mc.id());
-                RemotePlacement p = new RemotePlacement(mc, runner, config.limits(), Reconnect.DEFAULTS,
-                        () -> refreshStale("worker " + mc.host().get() + " of method " + mc.id()));
+                RemotePlacement p = new RemotePlacement(mc, runner, config.limits(), Reconnect.DEFAULTS, linkStates);
                 runner.placeOn(p);
                 placements.put(mc.id(), p);
             }
@@ -106,9 +105,7 @@ public final class MethodGraph implements AutoCloseable {
             upstreamInterfaces.put(mc.id(), upstream(mc.id(), new LinkedHashSet<>()));
             upstreamPlacements.put(mc.id(), upstreamPlacements(mc.id(), new LinkedHashSet<>()));
         }
-        for (InterfaceLink link : links.values()) {
-            link.onStateChange(up -> refreshStale("interface " + link.id()));
-        }
+        linkStates.onChange(this::refreshStale);
     }
 
     /** Builds the graph of a checked config. Nothing runs until {@link #start()}. */
@@ -316,15 +313,10 @@ public final class MethodGraph implements AutoCloseable {
 
     /**
      * Marks stale every method that depends on an interface that is down or on a worker that is lost
-     * without a local fallback, and fresh again the others; {@code changed} names what just changed.
+     * without a local fallback, and fresh again the others. Runs under the link-state lock, as part of the
+     * change that caused it.
      */
-    private void refreshStale(String changed) {
-        synchronized (staleLock) {
-            refreshStaleLocked(changed);
-        }
-    }
-
-    private void refreshStaleLocked(String changed) {
+    private void refreshStale() {
         for (MethodRunner r : runners.values()) {
             String why = staleness(r.id());
             boolean stale = why != null;
@@ -391,8 +383,12 @@ public final class MethodGraph implements AutoCloseable {
         watchdog.trip(reason);
     }
 
-    /** A snapshot for the status endpoint. */
+    /** A snapshot for the status endpoint: link states and staleness as one consistent moment. */
     public ObjectNode status() {
+        return linkStates.read(this::statusNow);
+    }
+
+    private ObjectNode statusNow() {
         long now = clock.nowMicros();
         ObjectNode n = JsonNodeFactory.instance.objectNode();
         n.put("system", config.system());

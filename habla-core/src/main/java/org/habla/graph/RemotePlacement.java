@@ -54,7 +54,7 @@ final class RemotePlacement {
     private final Limits limits;
     private final Reconnect reconnect;
     private final BackOff backOff;
-    private final Runnable onStateChange;
+    private final LinkStates states;
     private final ArrayBlockingQueue<Frame> outbound = new ArrayBlockingQueue<>(QUEUE_SAMPLES);
     private final AtomicLong sent = new AtomicLong();
     private final AtomicLong received = new AtomicLong();
@@ -68,8 +68,7 @@ final class RemotePlacement {
     private volatile Socket socket;
     private Thread thread;
 
-    RemotePlacement(MethodConfig config, MethodRunner runner, Limits limits, Reconnect reconnect,
-            Runnable onStateChange) {
+    RemotePlacement(MethodConfig config, MethodRunner runner, Limits limits, Reconnect reconnect, LinkStates states) {
         this.config = config;
         String text = config.host().orElseThrow();
         int colon = text.lastIndexOf(':');
@@ -80,7 +79,7 @@ final class RemotePlacement {
         this.limits = limits;
         this.reconnect = reconnect;
         this.backOff = new BackOff(reconnect);
-        this.onStateChange = onStateChange;
+        this.states = states;
     }
 
     /** The worker as the config names it ({@code host:port}). */
@@ -193,9 +192,11 @@ final class RemotePlacement {
         outbound.clear();
         connects.incrementAndGet();
         lastError = "";
-        up = true;
+        states.locked(() -> {
+            up = true;
+            states.refreshStaleness();
+        });
         LOG.info("method {} runs on worker {}", config.id(), host());
-        onStateChange.run();
         Thread writerThread = Thread.ofVirtual().name("habla-worker-out-" + config.id())
                 .start(() -> writeLoop(writer, s));
         try {
@@ -290,14 +291,16 @@ final class RemotePlacement {
 
     private void markLost() {
         closeSocket();
-        boolean was = up;
-        up = false;
+        states.locked(() -> {
+            boolean was = up;
+            up = false;
+            if (was || connects.get() == 0 && failures.get() == 1) {
+                states.refreshStaleness();
+            }
+        });
         outbound.clear();
         if (!fallsBackToLocal()) {
             runner.readiness(false, "worker " + host() + " is lost");
-        }
-        if (was || connects.get() == 0 && failures.get() == 1) {
-            onStateChange.run();
         }
     }
 

@@ -50,6 +50,8 @@ import org.junit.jupiter.api.Timeout;
 class WorkerPlacementTest {
 
     private static final ObjectMapper JSON = new ObjectMapper();
+    /** Chunks of 32 KB that more than fill a silent worker's queue and both socket buffers on loopback. */
+    private static final int MAX_CHUNKS = 5_000;
     private final List<AutoCloseable> toClose = new ArrayList<>();
 
     @AfterEach
@@ -248,41 +250,19 @@ class WorkerPlacementTest {
                             7002)));
             BlockingQueue<Sample> local = listen(point(g, "out"));
             await(() -> method(g, "d").path("placement").path("up").asBoolean(), "the placement comes up");
+            // Each chunk is written once the local branch has digested the one before, so the local branch never
+            // has to drop; the writes go on until the silent worker's queue and socket buffers are full and the
+            // placement drops (a few hundred chunks of 32 KB on loopback).
             byte[] pcm = pcm(32_000);
             int written = 0;
-            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-            while (written < 600 && System.nanoTime() < end) {
-                try {
-                    write(g, AudioChunk.of(AudioFormat.MONO_16K, pcm));
-                    written++;
-                } catch (ControlPoint.Rejected e) {
-                    Thread.sleep(1);
-                }
+            while (method(g, "d").path("placement").path("dropped").asLong() == 0) {
+                assertThat(written).as("the placement drops before %d chunks", MAX_CHUNKS).isLessThan(MAX_CHUNKS);
+                write(g, AudioChunk.of(AudioFormat.MONO_16K, pcm));
+                written++;
+                Sample s = local.poll(10, TimeUnit.SECONDS);
+                assertThat(s).as("chunk %d digested by the local branch", written).isNotNull();
+                assertThat(s.payload()).isEqualTo(new TextValue(pcm.length + " " + crc(pcm) + " 16000"));
             }
-            assertThat(written).isEqualTo(600);
-            // The local branch goes on: every chunk comes out of it, except the ones its own bounded queue
-            // and the sink's dropped and counted when this test wrote faster than they keep up (on a loaded machine).
-            long dropped = 0;
-            int received = 0;
-            long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
-            while (System.nanoTime() < until) {
-                dropped = 0;
-                for (String id : List.of("here", "out")) {
-                    for (JsonNode in : method(g, id).path("inputs")) {
-                        dropped += in.path("dropped").asLong() + in.path("conflated").asLong();
-                    }
-                }
-                if (received + dropped >= written) {
-                    break;
-                }
-                if (local.poll(100, TimeUnit.MILLISECONDS) != null) {
-                    received++;
-                }
-            }
-            assertThat(received + dropped).as("local digests %d + counted drops %d", received, dropped).isEqualTo(written);
-            assertThat(received).as("most chunks digested locally").isGreaterThan(written / 2);
-            await(() -> method(g, "d").path("placement").path("dropped").asLong() > 0,
-                    "samples the silent worker cannot take are dropped and counted");
             assertThat(method(g, "d").path("placement").path("up").asBoolean()).as("heartbeats keep it up").isTrue();
         }
     }
