@@ -34,6 +34,7 @@ final class ConnectionLink {
     private final Connection connection;
     private final Reconnect reconnect;
     private final BackOff backOff;
+    private final OutageLog outages;
     private final ReadingSink sink;
     private final Runnable onStateChange;
     private final ReentrantLock writeLock = new ReentrantLock();
@@ -55,6 +56,7 @@ final class ConnectionLink {
         this.connection = connection;
         this.reconnect = reconnect;
         this.backOff = new BackOff(reconnect);
+        this.outages = new OutageLog(LOG, "link " + name + " (" + host + ":" + connection.port() + ")");
         this.sink = sink;
         this.onStateChange = onStateChange;
     }
@@ -89,29 +91,29 @@ final class ConnectionLink {
         }
     }
 
+    /** The wait chooser of this link (tests and benchmarks observe the waits it chooses). */
+    BackOff backOff() {
+        return backOff;
+    }
+
     private void loop() {
         while (running) {
+            Exception failure;
             try {
                 runOnce();
-                backOff.reset();
+                break;
             } catch (IOException | RuntimeException e) {
-                if (!running) {
-                    break;
-                }
-                failures.incrementAndGet();
-                lastError = e.getMessage() == null ? e.toString() : e.getMessage();
-                if (connects.get() == 0 || up) {
-                    LOG.warn("link {} ({}:{}) down: {}", name, host, connection.port(), lastError);
-                } else {
-                    LOG.debug("link {} still down: {}", name, lastError);
+                failure = e;
+                if (running) {
+                    failures.incrementAndGet();
+                    lastError = e.getMessage() == null ? e.toString() : e.getMessage();
+                    outages.failed(lastError);
                 }
             } finally {
                 markDown();
             }
-            if (running) {
-                if (!backOff.pause(() -> running)) {
-                    running = false;
-                }
+            if (running && !backOff.pause(failure, () -> running)) {
+                running = false;
             }
         }
     }
@@ -133,7 +135,8 @@ final class ConnectionLink {
         connects.incrementAndGet();
         up = true;
         lastError = "";
-        LOG.info("link {} up ({}:{})", name, host, connection.port());
+        backOff.reset();
+        outages.up();
         onStateChange.run();
         sess.keepAlivePeriod().ifPresent(p -> keepAlive = startKeepAlive(sess, p.toMillis()));
         while (running) {

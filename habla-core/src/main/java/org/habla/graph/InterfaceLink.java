@@ -14,9 +14,11 @@ import org.habla.driver.ChannelDescriptor;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.ReadingSink;
+import org.habla.sample.NumberValue;
 import org.habla.sample.Payload;
 import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
+import org.habla.sample.VectorValue;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -44,6 +46,7 @@ final class InterfaceLink {
     private final LongAdder unknownChannel = new LongAdder();
     private final LongAdder commandsSent = new LongAdder();
     private final AtomicLong commandsDropped = new AtomicLong();
+    private final AtomicLong droppedMoves = new AtomicLong();
     private volatile ObjectNode robotInfo = JsonNodeFactory.instance.objectNode();
     private volatile MotionWatchdog watchdog;
     private volatile boolean up;
@@ -93,6 +96,11 @@ final class InterfaceLink {
         return readings.get(channel);
     }
 
+    /** The links of the driver's connections, in the driver's order. */
+    List<ConnectionLink> connections() {
+        return List.copyOf(connections);
+    }
+
     void watchdog(MotionWatchdog w) {
         this.watchdog = w;
     }
@@ -127,19 +135,19 @@ final class InterfaceLink {
         ChannelDescriptor d = channels.get(channel);
         ConnectionLink link = commandRoutes.get(channel);
         if (d == null || (link == null && !replayed)) {
-            drop(channel, "no connection carries it");
+            drop(channel, sample, "no connection carries it");
             return;
         }
         MotionWatchdog w = watchdog;
         if (d.motion() && w != null && !w.allowsMotion()) {
             tap.command(config.id(), channel, sample, false);
-            drop(channel, "the motion watchdog has stopped the robot");
+            drop(channel, sample, "the motion watchdog has stopped the robot");
             return;
         }
         if (replayed) {
             if (!up) {
                 tap.command(config.id(), channel, sample, false);
-                drop(channel, "link " + config.id() + " is down in the recording");
+                drop(channel, sample, "link " + config.id() + " is down in the recording");
                 return;
             }
             tap.command(config.id(), channel, sample, true);
@@ -148,7 +156,7 @@ final class InterfaceLink {
         }
         if (!link.command(channel, sample.payload())) {
             tap.command(config.id(), channel, sample, false);
-            drop(channel, "link " + config.id() + "/" + link.connection().name() + " is down");
+            drop(channel, sample, "link " + config.id() + "/" + link.connection().name() + " is down");
             return;
         }
         tap.command(config.id(), channel, sample, true);
@@ -195,11 +203,37 @@ final class InterfaceLink {
         }
     }
 
-    private void drop(String channel, String why) {
+    /**
+     * Counts a dropped command and warns on the first and every 100th that mattered. A command to stand still on a
+     * motion channel is dropped quietly (at DEBUG): the robot is stopped or its link is down, so nothing was lost.
+     */
+    private void drop(String channel, Sample sample, String why) {
         long n = commandsDropped.incrementAndGet();
-        if (n == 1 || n % 100 == 0) {
+        ChannelDescriptor d = channels.get(channel);
+        if (d != null && d.motion() && standsStill(sample.payload())) {
+            LOG.debug("interface {}: a stand-still command on {} dropped: {}", config.id(), channel, why);
+            return;
+        }
+        long loud = droppedMoves.incrementAndGet();
+        if (loud == 1 || loud % 100 == 0) {
             LOG.warn("interface {}: command on {} dropped ({} dropped so far): {}", config.id(), channel, n, why);
         }
+    }
+
+    /** Whether a motion command asks for no motion at all: every speed zero. */
+    static boolean standsStill(Payload command) {
+        if (command instanceof NumberValue n) {
+            return n.value() == 0;
+        }
+        if (command instanceof VectorValue v) {
+            for (double x : v.toArray()) {
+                if (x != 0) {
+                    return false;
+                }
+            }
+            return true;
+        }
+        return false;
     }
 
     /**

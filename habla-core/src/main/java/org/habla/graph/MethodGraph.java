@@ -368,6 +368,16 @@ public final class MethodGraph implements AutoCloseable {
                 links.size(), exposed.size());
     }
 
+    /** An interface of the graph (for tests and benchmarks in this package). */
+    InterfaceLink interfaceLink(String interfaceId) {
+        return links.get(interfaceId);
+    }
+
+    /** The worker link of a placed method (for tests and benchmarks in this package). */
+    RemotePlacement placement(String methodId) {
+        return placements.get(methodId);
+    }
+
     /** The exposed methods, in config order, each with its socket settings. */
     public List<ControlPoint> controlPoints() {
         return List.copyOf(exposed);

@@ -54,6 +54,7 @@ final class RemotePlacement {
     private final Limits limits;
     private final Reconnect reconnect;
     private final BackOff backOff;
+    private final OutageLog outages;
     private final LinkStates states;
     private final ArrayBlockingQueue<Frame> outbound = new ArrayBlockingQueue<>(QUEUE_SAMPLES);
     private final AtomicLong sent = new AtomicLong();
@@ -79,6 +80,7 @@ final class RemotePlacement {
         this.limits = limits;
         this.reconnect = reconnect;
         this.backOff = new BackOff(reconnect);
+        this.outages = new OutageLog(LOG, "worker " + config.host().orElseThrow() + " of method " + config.id());
         this.states = states;
     }
 
@@ -132,23 +134,24 @@ final class RemotePlacement {
         dropped.incrementAndGet();
     }
 
+    /** The wait chooser of this link (tests and benchmarks observe the waits it chooses). */
+    BackOff backOff() {
+        return backOff;
+    }
+
     private void loop() {
         while (running) {
+            Exception failure;
             try {
                 runOnce();
-                backOff.reset();
+                break;
             } catch (IOException | RuntimeException e) {
-                if (!running) {
-                    break;
+                failure = e;
+                if (running) {
+                    failures.incrementAndGet();
+                    lastError = e.getMessage() == null ? e.toString() : e.getMessage();
+                    outages.failed(lastError);
                 }
-                failures.incrementAndGet();
-                String why = e.getMessage() == null ? e.toString() : e.getMessage();
-                if (up || connects.get() == 0 && !why.equals(lastError)) {
-                    LOG.warn("worker {} of method {} lost: {}", host(), config.id(), why);
-                } else {
-                    LOG.debug("worker {} of method {} still lost: {}", host(), config.id(), why);
-                }
-                lastError = why;
             } finally {
                 markLost();
             }
@@ -156,7 +159,7 @@ final class RemotePlacement {
                 if (fallsBackToLocal()) {
                     runner.fallBackToLocal();
                 }
-                if (!backOff.pause(() -> running)) {
+                if (!backOff.pause(failure, () -> running)) {
                     running = false;
                 }
             }
@@ -192,11 +195,12 @@ final class RemotePlacement {
         outbound.clear();
         connects.incrementAndGet();
         lastError = "";
+        backOff.reset();
         states.locked(() -> {
             up = true;
             states.refreshStaleness();
         });
-        LOG.info("method {} runs on worker {}", config.id(), host());
+        outages.up();
         Thread writerThread = Thread.ofVirtual().name("habla-worker-out-" + config.id())
                 .start(() -> writeLoop(writer, s));
         try {

@@ -2,6 +2,7 @@ package org.habla.graph;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import ch.qos.logback.classic.Level;
 import com.fasterxml.jackson.databind.JsonNode;
 import java.util.ArrayList;
 import java.util.List;
@@ -27,6 +28,7 @@ import org.habla.method.Output;
 import org.habla.net.ControlPoint;
 import org.habla.plugin.NoParams;
 import org.habla.sample.NumberValue;
+import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -47,6 +49,12 @@ class InterfaceLinkTest {
 
     /** Sensing: @robot.value → s → p → v (exposed). Acting: control → cmd (virtual) → fwd → act → @robot.motor. */
     private MethodGraph start(int port, long watchdogMs) {
+        MethodGraph g = build(port, watchdogMs);
+        g.start();
+        return g;
+    }
+
+    private MethodGraph build(int port, long watchdogMs) {
         MethodConfig s = new MethodConfig("s", "add-one-sensor", Layer.SENSORS_ACTUATORS,
                 Map.of("in", new Source.Channel("robot", "value")), Map.of(), new NoParams(), Optional.empty(),
                 Optional.empty());
@@ -72,7 +80,6 @@ class InterfaceLinkTest {
                 new StatusConfig("127.0.0.1", 0), List.of(robot), List.of(s, p, v, cmd, fwd, act));
         MethodGraph g = MethodGraph.build(config, TestMethods.registry(), EngineClock.system());
         toClose.add(g);
-        g.start();
         return g;
     }
 
@@ -235,6 +242,84 @@ class InterfaceLinkTest {
         assertThat(again.next(300)).isNull();
         JsonNode link = g.status().path("interfaces").get(0);
         assertThat(link.path("connections").get(0).path("connects").asLong()).isEqualTo(2);
+    }
+
+    @Test
+    void aStandStillCommandDroppedWhileTheLinkIsDownIsCountedWithoutAWarning() throws Exception {
+        try (LogLines log = new LogLines(InterfaceLink.class)) {
+            MethodGraph g = start(1, 0);
+            write(point(g, "cmd"), 0);
+            awaitDropped(g, 1);
+            assertThat(log.at(Level.WARN)).as("nothing was lost by dropping a stop").isEmpty();
+            write(point(g, "cmd"), 0.5);
+            awaitDropped(g, 2);
+            assertThat(log.at(Level.WARN)).singleElement().asString()
+                    .isEqualTo("interface robot: command on motor dropped (2 dropped so far): link robot/main is down");
+        }
+    }
+
+    private static void awaitDropped(MethodGraph g, long n) throws InterruptedException {
+        long end = System.nanoTime() + 10_000_000_000L;
+        while (g.status().path("interfaces").get(0).path("commandsDropped").asLong() < n && System.nanoTime() < end) {
+            Thread.sleep(10);
+        }
+        assertThat(g.status().path("interfaces").get(0).path("commandsDropped").asLong()).isEqualTo(n);
+    }
+
+    @Test
+    void theLinkRecordOfAChangeGoesOutOnlyOnceTheStalenessItTellsOfIsInForce() throws Exception {
+        FakeLineRobot robot = new FakeLineRobot(0);
+        int port = robot.port();
+        MethodGraph g = build(port, 0);
+        // Both are told on the link's own thread, in the order the engine does things.
+        BlockingQueue<String> events = new LinkedBlockingQueue<>();
+        point(g, "v").subscribe(new ControlPoint.Listener() {
+            @Override
+            public void onSample(Output<?> output, Sample sample) {
+            }
+
+            @Override
+            public void onStale(boolean stale, String why) {
+                events.add("stale " + stale);
+            }
+        });
+        g.interfaceLink("robot").reading("link").subscribe(
+                s -> events.add("link " + ((RecordValue) s.payload()).get("up").asBoolean()));
+        g.start();
+        List<String> seen = new ArrayList<>();
+        awaitEvent(events, seen, "link true");
+        robot.close();
+        awaitEvent(events, seen, "link false");
+        FakeLineRobot again = new FakeLineRobot(port);
+        toClose.add(again);
+        awaitEvent(events, seen, "link true");
+
+        boolean linkUp = false;
+        boolean stale = true;
+        for (String e : seen) {
+            if (e.startsWith("stale ")) {
+                stale = e.equals("stale true");
+            } else if (e.equals("link " + !linkUp)) {
+                linkUp = !linkUp;
+                assertThat(stale).as("stale when the record saying up=%s went out (events %s)", linkUp, seen)
+                        .isEqualTo(!linkUp);
+            }
+        }
+    }
+
+    private static void awaitEvent(BlockingQueue<String> events, List<String> seen, String wanted)
+            throws InterruptedException {
+        long end = System.nanoTime() + 10_000_000_000L;
+        while (System.nanoTime() < end) {
+            String e = events.poll(50, TimeUnit.MILLISECONDS);
+            if (e != null) {
+                seen.add(e);
+                if (e.equals(wanted)) {
+                    return;
+                }
+            }
+        }
+        throw new AssertionError("no '" + wanted + "' within 10 s; saw " + seen);
     }
 
     @Test

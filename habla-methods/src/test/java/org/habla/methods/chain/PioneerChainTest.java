@@ -123,8 +123,10 @@ class PioneerChainTest {
             BufferedReader in = new BufferedReader(new InputStreamReader(link.getInputStream(), UTF_8));
             JsonNode up = nextLink(in, true);
             assertThat(up.path("interface").asText()).isEqualTo("robot");
+            assertThat(up.path("stale").asBoolean()).as("the first record saying connected is fresh").isFalse();
             robot.close();
             JsonNode down = nextLink(in, false);
+            assertThat(down.path("stale").asBoolean()).as("the first record saying not connected is stale").isTrue();
             assertThat(down.path("sinceMs").asLong()).isLessThan(5_000);
             assertThat(down.path("detail").asText()).isNotEmpty();
         }
