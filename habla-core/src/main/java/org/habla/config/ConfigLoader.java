@@ -35,7 +35,8 @@ public final class ConfigLoader {
     static final Set<String> SAFETY_KEYS = Set.of("watchdogMs");
     static final Set<String> STATUS_KEYS = Set.of("bind", "port");
     static final Set<String> INTERFACE_KEYS = Set.of("id", "driver", "address", "params", "reconnect");
-    static final Set<String> RECONNECT_KEYS = Set.of("initialMs", "maxMs", "connectTimeoutMs", "readTimeoutMs");
+    static final Set<String> RECONNECT_KEYS = Set.of("initialMs", "maxMs", "connectTimeoutMs", "readTimeoutMs",
+            "tcpKeepAliveIdleS", "tcpKeepAliveIntervalS", "tcpKeepAliveCount");
     static final Set<String> METHOD_KEYS =
             Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host", "fallback");
     static final Set<String> EXPOSE_KEYS = Set.of("port", "name", "bind");
@@ -61,6 +62,10 @@ public final class ConfigLoader {
     static final int MAX_CLIENT_QUEUE_SAMPLES = 65_536;
     /** The longest time setting (watchdog, back-off, time-outs): one hour. */
     static final long MAX_MS = 3_600_000;
+    /** The longest TCP keep-alive idle time or probe interval a config may ask for [s]. */
+    static final long MAX_TCP_KEEPALIVE_S = 3_600;
+    /** The most unanswered TCP keep-alive probes a config may allow. */
+    static final long MAX_TCP_KEEPALIVE_COUNT = 100;
 
     private static final ObjectMapper JSON = JsonMapper.builder()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION)

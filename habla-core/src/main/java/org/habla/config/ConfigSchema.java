@@ -104,13 +104,21 @@ public final class ConfigSchema {
                 "driver", string("The driver type.").set("enum", strings(registry.drivers().keySet())),
                 "address", string("host or host:port of the robot's main server.").put("minLength", 1),
                 "params", object("The driver's own params (see the driver type).").put("additionalProperties", true),
-                "reconnect", object("How the link is re-established after it drops.").set("properties", props(
-                        "initialMs", integer(1, ConfigLoader.MAX_MS, d.initialMs(), "The first wait after a failure [ms]"),
+                "reconnect", object("How the link notices a lost peer and is re-established.").set("properties", props(
+                        "initialMs", integer(1, ConfigLoader.MAX_MS, d.initialMs(),
+                                "The first wait after a failure, and the wait after a refused connect [ms]"),
                         "maxMs", integer(1, ConfigLoader.MAX_MS, d.maxMs(), "The longest wait; not below initialMs [ms]"),
                         "connectTimeoutMs", integer(1, ConfigLoader.MAX_MS, d.connectTimeoutMs(),
                                 "How long one connect and handshake may take [ms]"),
-                        "readTimeoutMs", integer(1, ConfigLoader.MAX_MS, d.readTimeoutMs(),
-                                "Silence after which the link is declared lost [ms]")))));
+                        "readTimeoutMs", integer(0, ConfigLoader.MAX_MS, d.readTimeoutMs(),
+                                "Silence after which a connection whose peer keeps sending is declared lost, "
+                                + "replacing the driver's limit; 0 keeps the driver's; quiet connections ignore it [ms]"),
+                        "tcpKeepAliveIdleS", integer(1, ConfigLoader.MAX_TCP_KEEPALIVE_S, d.tcpKeepAlive().idleS(),
+                                "Idle time before the first TCP keep-alive probe [s]"),
+                        "tcpKeepAliveIntervalS", integer(1, ConfigLoader.MAX_TCP_KEEPALIVE_S,
+                                d.tcpKeepAlive().intervalS(), "Time between TCP keep-alive probes [s]"),
+                        "tcpKeepAliveCount", integer(1, ConfigLoader.MAX_TCP_KEEPALIVE_COUNT, d.tcpKeepAlive().count(),
+                                "Unanswered TCP keep-alive probes after which the connection fails")))));
         ArrayNode cases = s.putArray("allOf");
         registry.drivers().keySet().forEach(name -> cases.add(when("driver", name,
                 props("params", ref("params.driver." + name)))));

@@ -165,9 +165,14 @@ final class EntryReader {
         if (max < initial) {
             errors.add(o.path().field("maxMs"), "must not be less than initialMs (" + initial + "), was " + max);
         }
+        Reconnect.TcpKeepAlive k = d.tcpKeepAlive();
         return new Reconnect(initial, Math.max(initial, max),
                 o.integer("connectTimeoutMs", d.connectTimeoutMs(), 1, ConfigLoader.MAX_MS),
-                o.integer("readTimeoutMs", d.readTimeoutMs(), 1, ConfigLoader.MAX_MS));
+                o.integer("readTimeoutMs", d.readTimeoutMs(), 0, ConfigLoader.MAX_MS),
+                new Reconnect.TcpKeepAlive(
+                        (int) o.integer("tcpKeepAliveIdleS", k.idleS(), 1, ConfigLoader.MAX_TCP_KEEPALIVE_S),
+                        (int) o.integer("tcpKeepAliveIntervalS", k.intervalS(), 1, ConfigLoader.MAX_TCP_KEEPALIVE_S),
+                        (int) o.integer("tcpKeepAliveCount", k.count(), 1, ConfigLoader.MAX_TCP_KEEPALIVE_COUNT)));
     }
 
     private Optional<Expose> expose(CheckedObject o, String methodId) {

@@ -9,11 +9,13 @@ import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.InetSocketAddress;
 import java.net.Socket;
+import java.net.SocketTimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.ReentrantLock;
 import org.habla.config.Reconnect;
 import org.habla.driver.Connection;
 import org.habla.driver.LinkSession;
+import org.habla.driver.Liveness;
 import org.habla.driver.ReadingSink;
 import org.habla.sample.Payload;
 import org.slf4j.Logger;
@@ -34,6 +36,8 @@ final class ConnectionLink {
     private final Connection connection;
     private final Reconnect reconnect;
     private final BackOff backOff;
+    /** Silence after which the peer is lost; 0 for a quiet peer (only TCP tells). */
+    private final long silenceLimitMs;
     private final OutageLog outages;
     private final ReadingSink sink;
     private final Runnable onStateChange;
@@ -56,6 +60,8 @@ final class ConnectionLink {
         this.connection = connection;
         this.reconnect = reconnect;
         this.backOff = new BackOff(reconnect);
+        this.silenceLimitMs = connection.liveness() instanceof Liveness.Periodic p
+                ? (reconnect.readTimeoutMs() > 0 ? reconnect.readTimeoutMs() : p.lostAfter().toMillis()) : 0;
         this.outages = new OutageLog(LOG, "link " + name + " (" + host + ":" + connection.port() + ")");
         this.sink = sink;
         this.onStateChange = onStateChange;
@@ -119,9 +125,8 @@ final class ConnectionLink {
     }
 
     private void runOnce() throws IOException {
-        Socket s = new Socket();
+        Socket s = LinkSocket.create(reconnect.tcpKeepAlive());
         socket = s;
-        s.setTcpNoDelay(true);
         s.connect(new InetSocketAddress(host, connection.port()), (int) reconnect.connectTimeoutMs());
         s.setSoTimeout((int) reconnect.connectTimeoutMs());
         InputStream in = new BufferedInputStream(s.getInputStream());
@@ -129,7 +134,7 @@ final class ConnectionLink {
         LinkSession sess = connection.sessions().get();
         sess.handshake(in, o, sink);
         o.flush();
-        s.setSoTimeout((int) reconnect.readTimeoutMs());
+        s.setSoTimeout((int) silenceLimitMs);
         session = sess;
         out = o;
         connects.incrementAndGet();
@@ -140,7 +145,11 @@ final class ConnectionLink {
         onStateChange.run();
         sess.keepAlivePeriod().ifPresent(p -> keepAlive = startKeepAlive(sess, p.toMillis()));
         while (running) {
-            sess.readNext(in, sink);
+            try {
+                sess.readNext(in, sink);
+            } catch (SocketTimeoutException e) {
+                throw new IOException("nothing came for " + silenceLimitMs + " ms from a peer that keeps sending: lost");
+            }
         }
     }
 
@@ -235,6 +244,8 @@ final class ConnectionLink {
         n.put("name", connection.name());
         n.put("port", connection.port());
         n.put("up", up);
+        n.put("liveness", silenceLimitMs > 0 ? "lost after " + silenceLimitMs + " ms of silence"
+                : "quiet: silence is normal; TCP keep-alive");
         n.put("connects", connects.get());
         n.put("failures", failures.get());
         if (!lastError.isEmpty()) {

@@ -167,13 +167,12 @@ final class RemotePlacement {
     }
 
     private void runOnce() throws IOException {
-        Socket s = new Socket();
+        Socket s = LinkSocket.create(reconnect.tcpKeepAlive());
         socket = s;
         if (!running) {
             s.close();
             return;
         }
-        s.setTcpNoDelay(true);
         s.connect(new InetSocketAddress(host, port), (int) reconnect.connectTimeoutMs());
         s.setSoTimeout((int) reconnect.connectTimeoutMs());
         FrameReader reader = new FrameReader(new BufferedInputStream(s.getInputStream(), 65_536),

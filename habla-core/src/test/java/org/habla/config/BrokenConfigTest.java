@@ -33,6 +33,7 @@ class BrokenConfigTest {
         unknown-driver                    | $.interfaces[0].driver          | unknown driver type 'arcos' (known: robot-sim)
         bad-address                       | $.interfaces[0].address         | '127.0.0.1:port' is not an address
         reconnect-max-below-initial       | $.interfaces[0].reconnect.maxMs | must not be less than initialMs (500), was 100
+        reconnect-keepalive-count-zero    | $.interfaces[0].reconnect.tcpKeepAliveCount | must be in 1..100, was 0
         bad-interface-id                  | $.interfaces[0].id              | '1robot' is not an id: a letter then
         duplicate-interface-id            | $.interfaces[1].id              | duplicate interface id 'robot': already used at $.interfaces[0].id
         duplicate-method-id               | $.methods[1].id                 | duplicate method id 'sonar': already used at $.methods[0].id

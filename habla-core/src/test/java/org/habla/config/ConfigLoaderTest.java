@@ -36,7 +36,7 @@ class ConfigLoaderTest {
         assertThat(config.status()).isEqualTo(new StatusConfig("127.0.0.1", 7199));
         assertThat(config.interfaces()).containsExactly(new InterfaceConfig("robot", "robot-sim",
                 new InterfaceAddress("127.0.0.1", OptionalInt.of(8101)), new TestDriver.Params(8),
-                new Reconnect(100, 5_000, 3_000, 3_000)));
+                new Reconnect(100, 5_000, 3_000, 0)));
         assertThat(config.methods()).extracting(MethodConfig::id)
                 .containsExactly("sonar", "nearest", "distance", "action", "safety", "wheels");
 
