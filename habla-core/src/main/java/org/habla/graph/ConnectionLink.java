@@ -47,6 +47,7 @@ final class ConnectionLink {
     private volatile boolean running;
     private volatile boolean up;
     private volatile String lastError = "";
+    private volatile double lastConnectMs = -1;
     private volatile Socket socket;
     private volatile LinkSession session;
     private volatile OutputStream out;
@@ -127,6 +128,7 @@ final class ConnectionLink {
     private void runOnce() throws IOException {
         Socket s = LinkSocket.create(reconnect.tcpKeepAlive());
         socket = s;
+        long started = System.nanoTime();
         s.connect(new InetSocketAddress(host, connection.port()), (int) reconnect.connectTimeoutMs());
         s.setSoTimeout((int) reconnect.connectTimeoutMs());
         InputStream in = new BufferedInputStream(s.getInputStream());
@@ -138,6 +140,7 @@ final class ConnectionLink {
         session = sess;
         out = o;
         connects.incrementAndGet();
+        lastConnectMs = (System.nanoTime() - started) / 1e6;
         up = true;
         lastError = "";
         backOff.reset();
@@ -248,6 +251,9 @@ final class ConnectionLink {
                 : "quiet: silence is normal; TCP keep-alive");
         n.put("connects", connects.get());
         n.put("failures", failures.get());
+        if (lastConnectMs >= 0) {
+            n.put("lastConnectMs", Math.round(lastConnectMs * 10) / 10.0);
+        }
         if (!lastError.isEmpty()) {
             n.put("lastError", lastError);
         }
