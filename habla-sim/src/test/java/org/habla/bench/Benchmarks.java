@@ -42,6 +42,7 @@ public final class Benchmarks {
         }
         if (list.contains("chaos")) {
             new ReconnectChaosBench(20).run();
+            new QuietPeerChaosBench(5).run();
         }
         System.out.println("\nload average at end (1, 5, 15 min): " + loadAverage());
         System.exit(0);
