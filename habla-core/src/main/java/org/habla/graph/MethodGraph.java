@@ -373,6 +373,11 @@ public final class MethodGraph implements AutoCloseable {
         return links.get(interfaceId);
     }
 
+    /** The method object of a method (for tests in this package). */
+    Method method(String methodId) {
+        return runners.get(methodId).method();
+    }
+
     /** The worker link of a placed method (for tests and benchmarks in this package). */
     RemotePlacement placement(String methodId) {
         return placements.get(methodId);

@@ -38,6 +38,9 @@ import org.junit.jupiter.api.Timeout;
 @Timeout(60)
 class InterfaceLinkTest {
 
+    /** The bound of every wait for something that must happen: generous, as the suite runs on busy machines. */
+    private static final long WAIT_MS = 15_000;
+
     private final List<AutoCloseable> toClose = new ArrayList<>();
 
     @AfterEach
@@ -104,7 +107,7 @@ class InterfaceLinkTest {
 
     /** The driver's session is up once the link says so, a moment after the robot accepted the connection. */
     private static void awaitUp(MethodGraph g) throws InterruptedException {
-        long end = System.nanoTime() + 5_000_000_000L;
+        long end = System.nanoTime() + WAIT_MS * 1_000_000L;
         while (!g.status().path("interfaces").get(0).path("up").asBoolean() && System.nanoTime() < end) {
             Thread.sleep(5);
         }
@@ -116,14 +119,14 @@ class InterfaceLinkTest {
      * change happened before the recorder subscribed.
      */
     private static void awaitStaleness(ControlPoint p, Recorder rec, boolean wanted) throws InterruptedException {
-        long end = System.nanoTime() + 5_000_000_000L;
+        long end = System.nanoTime() + WAIT_MS * 1_000_000L;
         while (System.nanoTime() < end) {
             Boolean next = rec.staleness.poll(20, TimeUnit.MILLISECONDS);
             if ((next != null && next == wanted) || (next == null && p.stale() == wanted)) {
                 return;
             }
         }
-        throw new AssertionError("no staleness notice " + wanted + " within 5 s");
+        throw new AssertionError("no staleness notice " + wanted + " within " + WAIT_MS + " ms");
     }
 
     private static void write(ControlPoint p, double value) throws ControlPoint.Rejected {
@@ -135,10 +138,10 @@ class InterfaceLinkTest {
         FakeLineRobot robot = new FakeLineRobot(0);
         toClose.add(robot);
         MethodGraph g = start(robot.port(), 0);
-        assertThat(robot.awaitClient(5_000)).isTrue();
+        assertThat(robot.awaitClient(WAIT_MS)).isTrue();
         awaitUp(g);
         write(point(g, "cmd"), 0.25);
-        assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.25");
+        assertThat(robot.next(WAIT_MS)).isEqualTo("cmd motor 0.25");
     }
 
     @Test
@@ -146,14 +149,14 @@ class InterfaceLinkTest {
         FakeLineRobot robot = new FakeLineRobot(0);
         toClose.add(robot);
         MethodGraph g = start(robot.port(), 0);
-        assertThat(robot.awaitClient(5_000)).isTrue();
+        assertThat(robot.awaitClient(WAIT_MS)).isTrue();
         ControlPoint.Rejected rejected = org.assertj.core.api.Assertions.catchThrowableOfType(
                 ControlPoint.Rejected.class, () -> write(point(g, "cmd"), 500));
         assertThat(rejected).isNotNull();
         assertThat(rejected.code()).isEqualTo("bad_value");
         assertThat(rejected.getMessage()).contains("within ±100");
         write(point(g, "cmd"), 0.75);
-        assertThat(robot.next(5_000)).as("the refused value was never queued").isEqualTo("cmd motor 0.75");
+        assertThat(robot.next(WAIT_MS)).as("the refused value was never queued").isEqualTo("cmd motor 0.75");
     }
 
     @Test
@@ -174,12 +177,12 @@ class InterfaceLinkTest {
         FakeLineRobot robot = new FakeLineRobot(0);
         toClose.add(robot);
         MethodGraph g = start(robot.port(), 300);
-        assertThat(robot.awaitClient(5_000)).isTrue();
+        assertThat(robot.awaitClient(WAIT_MS)).isTrue();
         awaitUp(g);
         long t0 = System.nanoTime();
         write(point(g, "cmd"), 0.5);
-        assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.5");
-        assertThat(robot.next(5_000)).isEqualTo("stop");
+        assertThat(robot.next(WAIT_MS)).isEqualTo("cmd motor 0.5");
+        assertThat(robot.next(WAIT_MS)).isEqualTo("stop");
         long tookMs = (System.nanoTime() - t0) / 1_000_000;
         assertThat(tookMs).isGreaterThanOrEqualTo(250);
         JsonNode w = g.status().path("watchdog");
@@ -187,7 +190,7 @@ class InterfaceLinkTest {
         assertThat(w.path("trips").asLong()).isEqualTo(1);
         // A new control value lifts the stop.
         write(point(g, "cmd"), 0.1);
-        assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.1");
+        assertThat(robot.next(WAIT_MS)).isEqualTo("cmd motor 0.1");
     }
 
     @Test
@@ -195,12 +198,12 @@ class InterfaceLinkTest {
         FakeLineRobot robot = new FakeLineRobot(0);
         toClose.add(robot);
         MethodGraph g = start(robot.port(), 0);
-        assertThat(robot.awaitClient(5_000)).isTrue();
+        assertThat(robot.awaitClient(WAIT_MS)).isTrue();
         awaitUp(g);
         write(point(g, "cmd"), 0.5);
-        assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.5");
+        assertThat(robot.next(WAIT_MS)).isEqualTo("cmd motor 0.5");
         point(g, "cmd").writerLeft();
-        assertThat(robot.next(2_000)).isEqualTo("stop");
+        assertThat(robot.next(WAIT_MS)).isEqualTo("stop");
     }
 
     @Test
@@ -210,11 +213,11 @@ class InterfaceLinkTest {
         MethodGraph g = start(port, 0);
         Recorder rec = new Recorder();
         point(g, "v").subscribe(rec);
-        assertThat(robot.awaitClient(5_000)).isTrue();
+        assertThat(robot.awaitClient(WAIT_MS)).isTrue();
         awaitUp(g);
         awaitStaleness(point(g, "v"), rec, false);
         robot.send("value 1");
-        Sample fresh = rec.samples.poll(5, TimeUnit.SECONDS);
+        Sample fresh = rec.samples.poll(WAIT_MS, TimeUnit.MILLISECONDS);
         assertThat(fresh.payload()).isEqualTo(new NumberValue(4));
         assertThat(fresh.stale()).isFalse();
 
@@ -223,7 +226,7 @@ class InterfaceLinkTest {
         assertThat(point(g, "v").stale()).isTrue();
         // While the robot is away, a motion command is dropped, not queued.
         write(point(g, "cmd"), 0.7);
-        long end = System.nanoTime() + 5_000_000_000L;
+        long end = System.nanoTime() + WAIT_MS * 1_000_000L;
         while (g.status().path("interfaces").get(0).path("commandsDropped").asLong() == 0 && System.nanoTime() < end) {
             Thread.sleep(10);
         }
@@ -231,11 +234,11 @@ class InterfaceLinkTest {
 
         FakeLineRobot again = new FakeLineRobot(port);
         toClose.add(again);
-        assertThat(again.awaitClient(5_000)).isTrue();
+        assertThat(again.awaitClient(WAIT_MS)).isTrue();
         awaitUp(g);
         awaitStaleness(point(g, "v"), rec, false);
         again.send("value 2");
-        Sample after = rec.samples.poll(5, TimeUnit.SECONDS);
+        Sample after = rec.samples.poll(WAIT_MS, TimeUnit.MILLISECONDS);
         assertThat(after.payload()).isEqualTo(new NumberValue(5));
         assertThat(after.stale()).isFalse();
         // The command sent while the robot was away never arrives late.
@@ -329,12 +332,12 @@ class InterfaceLinkTest {
         MethodGraph g = start(robot.port(), 0);
         Recorder rec = new Recorder();
         point(g, "v").subscribe(rec);
-        assertThat(robot.awaitClient(5_000)).isTrue();
+        assertThat(robot.awaitClient(WAIT_MS)).isTrue();
         awaitUp(g);
         robot.send("value not-a-number");
         robot.send("nosuchchannel 3");
         robot.send("value 7");
-        assertThat(rec.samples.poll(5, TimeUnit.SECONDS).payload()).isEqualTo(new NumberValue(10));
+        assertThat(rec.samples.poll(WAIT_MS, TimeUnit.MILLISECONDS).payload()).isEqualTo(new NumberValue(10));
         JsonNode link = g.status().path("interfaces").get(0);
         assertThat(link.path("malformed").asLong()).isEqualTo(1);
         assertThat(link.path("unknownChannel").asLong()).isEqualTo(1);

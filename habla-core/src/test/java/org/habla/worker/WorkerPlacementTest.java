@@ -67,7 +67,7 @@ class WorkerPlacementTest {
     void aWorkerSaysHelloWithItsProtocolAndTheTypesItRuns() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.all(), 0);
         try (Socket s = new Socket("127.0.0.1", worker.port())) {
-            s.setSoTimeout(5_000);
+            s.setSoTimeout(15_000);
             JsonNode hello = JSON.readTree(lines(s).readLine());
             assertThat(hello.path("type").asText()).isEqualTo("hello");
             assertThat(hello.path("protocol").asText()).isEqualTo("habla-worker/1");
@@ -79,7 +79,7 @@ class WorkerPlacementTest {
     void aWorkerRefusesATypeItCannotRunWithAnErrorLine() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.audioOnly(), 0);
         try (Socket s = new Socket("127.0.0.1", worker.port())) {
-            s.setSoTimeout(5_000);
+            s.setSoTimeout(15_000);
             BufferedReader in = lines(s);
             in.readLine();
             send(s, "{\"type\":\"place\",\"method\":\"m\",\"methodType\":\"scale\",\"layer\":\"processing\","
@@ -96,7 +96,7 @@ class WorkerPlacementTest {
     void audioCrossesAsABinaryBlockAndABadLineCostsOnlyThatLine() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.all(), 0);
         try (Socket s = new Socket("127.0.0.1", worker.port())) {
-            s.setSoTimeout(5_000);
+            s.setSoTimeout(15_000);
             BufferedReader in = lines(s);
             in.readLine();
             send(s, "{\"type\":\"place\",\"method\":\"d\",\"methodType\":\"audio-digest\",\"layer\":\"processing\"}\n");
@@ -129,7 +129,7 @@ class WorkerPlacementTest {
     void aPlacedMethodSeesTheMetadataOfTheInterfaceChannelItsInputReads() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.all(), 0);
         try (Socket s = new Socket("127.0.0.1", worker.port())) {
-            s.setSoTimeout(5_000);
+            s.setSoTimeout(15_000);
             BufferedReader in = lines(s);
             in.readLine();
             send(s, "{\"type\":\"place\",\"method\":\"e\",\"methodType\":\"channel-echo\",\"layer\":\"processing\","
@@ -149,7 +149,7 @@ class WorkerPlacementTest {
     void aPlaceLineWithABadChannelIsRefusedNamingThePort() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.all(), 0);
         try (Socket s = new Socket("127.0.0.1", worker.port())) {
-            s.setSoTimeout(5_000);
+            s.setSoTimeout(15_000);
             BufferedReader in = lines(s);
             in.readLine();
             send(s, "{\"type\":\"place\",\"method\":\"e\",\"methodType\":\"channel-echo\",\"layer\":\"processing\","
@@ -198,7 +198,7 @@ class WorkerPlacementTest {
         BlockingQueue<Sample> seen = listen(point(g, "out"));
         await(() -> placement(g).path("up").asBoolean(), "the placement comes up");
         write(g, new NumberValue(21));
-        Sample s = seen.poll(5, TimeUnit.SECONDS);
+        Sample s = seen.poll(15, TimeUnit.SECONDS);
         assertThat(s).isNotNull();
         assertThat(s.payload()).isEqualTo(new NumberValue(63));
         assertThat(s.stale()).isFalse();
@@ -219,7 +219,7 @@ class WorkerPlacementTest {
         await(() -> method(g, "d").path("placement").path("up").asBoolean(), "the placement comes up");
         byte[] pcm = pcm(32_000);
         write(g, AudioChunk.of(AudioFormat.MONO_16K, pcm));
-        Sample s = seen.poll(5, TimeUnit.SECONDS);
+        Sample s = seen.poll(15, TimeUnit.SECONDS);
         assertThat(s).isNotNull();
         assertThat(s.payload()).isEqualTo(new TextValue(pcm.length + " " + crc(pcm) + " 16000"));
     }
@@ -294,7 +294,7 @@ class WorkerPlacementTest {
         assertThat(next(staleness, "fresh")).isEqualTo("fresh: all links up");
         assertThat(placement(g).path("connects").asLong()).isEqualTo(2);
         write(g, new NumberValue(2));
-        Sample s = seen.poll(5, TimeUnit.SECONDS);
+        Sample s = seen.poll(15, TimeUnit.SECONDS);
         assertThat(s).isNotNull();
         assertThat(s.payload()).isEqualTo(new NumberValue(6));
         assertThat(s.stale()).isFalse();
@@ -307,7 +307,7 @@ class WorkerPlacementTest {
         BlockingQueue<Sample> seen = listen(point(g, "out"));
         await(() -> placement(g).path("failures").asLong() >= 1, "the first connect fails");
         write(g, new NumberValue(5));
-        Sample local = seen.poll(5, TimeUnit.SECONDS);
+        Sample local = seen.poll(15, TimeUnit.SECONDS);
         assertThat(local).isNotNull();
         assertThat(local.payload()).isEqualTo(new NumberValue(15));
         assertThat(local.stale()).as("the fallback's outputs are fresh").isFalse();
@@ -316,7 +316,7 @@ class WorkerPlacementTest {
         WorkerServer worker = worker(WorkerTestMethods.all(), port);
         await(() -> placement(g).path("up").asBoolean(), "the daemon reaches the worker");
         write(g, new NumberValue(7));
-        Sample remote = seen.poll(5, TimeUnit.SECONDS);
+        Sample remote = seen.poll(15, TimeUnit.SECONDS);
         assertThat(remote).isNotNull();
         assertThat(remote.payload()).isEqualTo(new NumberValue(21));
         assertThat(placement(g).path("received").asLong()).as("now the worker computes it").isEqualTo(1);
@@ -421,16 +421,16 @@ class WorkerPlacementTest {
         }
     }
 
-    /** The next notice starting with {@code prefix}, skipping others; fails after 5 s. */
+    /** The next notice starting with {@code prefix}, skipping others; fails after 15 s. */
     private static String next(BlockingQueue<String> notices, String prefix) throws InterruptedException {
-        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(15);
         while (System.nanoTime() < end) {
             String n = notices.poll(100, TimeUnit.MILLISECONDS);
             if (n != null && n.startsWith(prefix)) {
                 return n;
             }
         }
-        throw new AssertionError("no '" + prefix + "' notice within 5 s");
+        throw new AssertionError("no '" + prefix + "' notice within 15 s");
     }
 
     private static int freePort() throws Exception {

@@ -43,7 +43,7 @@ class ArcosSessionTest {
     private void connect(TinyArcosRobot r) throws IOException {
         robot = r;
         socket = new Socket(InetAddress.getLoopbackAddress(), r.port());
-        socket.setSoTimeout(2_000);
+        socket.setSoTimeout(15_000);
         in = new BufferedInputStream(socket.getInputStream());
         out = new BufferedOutputStream(socket.getOutputStream());
     }

@@ -30,7 +30,7 @@ final class LoopbackLink implements AutoCloseable {
 
     LoopbackLink(int port, Connection connection, ReadingSink sink) throws IOException {
         socket.connect(new InetSocketAddress("127.0.0.1", port), 2_000);
-        socket.setSoTimeout(2_000);
+        socket.setSoTimeout(15_000);
         InputStream in = new BufferedInputStream(socket.getInputStream());
         out = new BufferedOutputStream(socket.getOutputStream());
         session = connection.sessions().get();
