@@ -22,10 +22,12 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Keeps one TCP connection of an interface alive: connects, runs the driver session's handshake,
- * reads until the connection fails, then waits (doubling up to a maximum) and connects again.
- * Writes come from any thread and are serialised; a write to a connection that is down is refused,
- * never queued, so a command is never applied late.
+ * Keeps one TCP connection of an interface alive: connects, runs the driver session's handshake, reads
+ * until the connection fails, then waits ({@link BackOff}) and connects again. The connection fails when the
+ * peer closes or resets it, when TCP keep-alive finds its host gone ({@link LinkSocket}), or — only if the
+ * driver declares the peer's stream periodic ({@link Liveness}) — after the stream's silence limit; a quiet
+ * peer may be silent for ever. Writes come from any thread and are serialised; a write to a connection that
+ * is down is refused, never queued, so a command is never applied late.
  */
 final class ConnectionLink {
 
