@@ -32,6 +32,7 @@ import org.slf4j.LoggerFactory;
  *   GET /graph.svg    the graph as {@code habla graph --format svg} draws it
  *   GET /status.json  the newest status the monitor read
  *   WS  /live         the page's updates (status 4 a second, the selected method's values 10 a second)
+ *   WS  /             the Foxglove WebSocket protocol (subprotocol foxglove.websocket.v1): every method output
  * </pre>
  *
  * Read-only: no request reaches an input of the graph. Served off the engine's threads: HTTP and WebSocket
@@ -68,6 +69,8 @@ public final class Monitor implements AutoCloseable {
         List<OutputInfo> outputs = graph.outputs();
         Map<String, List<String>> inputs = graph.inputs();
         MonitorHub hub = new MonitorHub(graph, id -> view(id, inputs.getOrDefault(id, List.of()), outputs));
+        FoxgloveServer foxglove = new FoxgloveServer(outputs, hub.history(), FoxglovePublishing.OFF,
+                "HABLA " + graph.status().path("system").asText(), hub);
         QueuedThreadPool threads = new QueuedThreadPool(HTTP_THREADS, 2);
         threads.setName("habla-monitor-http");
         threads.setDaemon(true);
@@ -86,6 +89,20 @@ public final class Monitor implements AutoCloseable {
                     return null;
                 }
                 return new LiveSocket(hub);
+            });
+            container.addMapping("/", (req, resp, cb) -> {
+                if (!req.hasSubProtocol(FoxgloveSocket.SUBPROTOCOL)) {
+                    Response.writeError(req, resp, cb, HttpStatus.BAD_REQUEST_400,
+                            "a WebSocket on / speaks the subprotocol " + FoxgloveSocket.SUBPROTOCOL);
+                    return null;
+                }
+                if (foxglove.clientCount() >= FoxgloveServer.MAX_CLIENTS) {
+                    Response.writeError(req, resp, cb, HttpStatus.SERVICE_UNAVAILABLE_503, "the monitor serves at most "
+                            + FoxgloveServer.MAX_CLIENTS + " Foxglove clients at once (FoxgloveServer.MAX_CLIENTS)");
+                    return null;
+                }
+                resp.setAcceptedSubProtocol(FoxgloveSocket.SUBPROTOCOL);
+                return new FoxgloveSocket(foxglove);
             });
         });
         ws.setHandler(new Pages(new WebFiles(), graphSvg, hub));
