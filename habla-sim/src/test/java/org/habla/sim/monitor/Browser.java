@@ -15,14 +15,14 @@ import org.openqa.selenium.chrome.ChromeOptions;
  * Debian's headless Chromium driven through Selenium and Debian's chromedriver — never a browser a test tool
  * downloads. {@code .ci/run} installs both packages.
  */
-final class Browser implements AutoCloseable {
+public final class Browser implements AutoCloseable {
 
     static final Path CHROMIUM = Path.of("/usr/bin/chromium");
     static final Path CHROMEDRIVER = Path.of("/usr/bin/chromedriver");
 
     private final ChromeDriver driver;
 
-    Browser(Path profile) {
+    public Browser(Path profile) {
         if (!Files.isExecutable(CHROMIUM) || !Files.isExecutable(CHROMEDRIVER)) {
             throw new IllegalStateException("the monitor's browser test needs Debian's chromium and chromium-driver "
                     + "(apt-get install chromium chromium-driver; .ci/run installs them)");
@@ -39,16 +39,16 @@ final class Browser implements AutoCloseable {
         driver.manage().timeouts().pageLoadTimeout(Duration.ofSeconds(30)).scriptTimeout(Duration.ofSeconds(10));
     }
 
-    void open(String url) {
+    public void open(String url) {
         driver.get(url);
     }
 
     /** Runs a script in the page and returns its value ({@code return ...}). */
-    Object js(String script, Object... args) {
+    public Object js(String script, Object... args) {
         return ((JavascriptExecutor) driver).executeScript(script, args);
     }
 
-    long jsLong(String script, Object... args) {
+    public long jsLong(String script, Object... args) {
         Object v = js(script, args);
         return v instanceof Number n ? n.longValue() : -1;
     }
@@ -63,7 +63,7 @@ final class Browser implements AutoCloseable {
     }
 
     /** Polls {@code condition} every 50 ms until it holds; fails naming {@code what} after {@code millis}. */
-    static long await(String what, long millis, Supplier<Boolean> condition) throws InterruptedException {
+    public static long await(String what, long millis, Supplier<Boolean> condition) throws InterruptedException {
         long start = System.nanoTime();
         long deadline = start + millis * 1_000_000;
         while (!Boolean.TRUE.equals(condition.get())) {
