@@ -61,6 +61,7 @@ public final class Recorder implements GraphTap, AutoCloseable {
     private final Thread writer;
     private volatile boolean closed;
     private volatile boolean failed;
+    private volatile long writerCpuAtEnd = -1;
 
     private Recorder(Path file, EngineClock clock, OutputStream stream, EventFile out) {
         this.file = file;
@@ -96,6 +97,15 @@ public final class Recorder implements GraphTap, AutoCloseable {
     /** Events dropped because the writer fell behind. */
     public long dropped() {
         return dropped.get();
+    }
+
+    /** CPU time the writer thread has used so far (encoding, compressing, writing), ns; -1 if not measurable. */
+    public long writerCpuNanos() {
+        if (!writer.isAlive()) {
+            return writerCpuAtEnd;
+        }
+        java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+        return mx.isThreadCpuTimeSupported() ? mx.getThreadCpuTime(writer.threadId()) : -1;
     }
 
     /** Events written so far (the header not counted). */
@@ -202,6 +212,8 @@ public final class Recorder implements GraphTap, AutoCloseable {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } finally {
+            java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+            writerCpuAtEnd = mx.isCurrentThreadCpuTimeSupported() ? mx.getCurrentThreadCpuTime() : -1;
             try {
                 stream.close();
             } catch (IOException e) {
