@@ -50,6 +50,8 @@ final class InterfaceLink {
     private volatile ObjectNode robotInfo = JsonNodeFactory.instance.objectNode();
     private volatile MotionWatchdog watchdog;
     private volatile boolean up;
+    /** When the link last went up or down (engine clock, µs); its start until the first change. */
+    private volatile long sinceMicros;
     private AutoCloseable linkTicker;
 
     /**
@@ -110,6 +112,7 @@ final class InterfaceLink {
     }
 
     void start() {
+        sinceMicros = clock.nowMicros();
         for (ConnectionLink c : connections) {
             c.start();
         }
@@ -177,6 +180,7 @@ final class InterfaceLink {
         states.locked(() -> {
             if (isUp != up) {
                 up = isUp;
+                sinceMicros = clock.nowMicros();
                 tap.link(config.id(), isUp, clock.nowMicros());
                 states.refreshStaleness();
             }
@@ -246,6 +250,7 @@ final class InterfaceLink {
             boolean all = connections.stream().allMatch(ConnectionLink::up);
             if (all != up) {
                 up = all;
+                sinceMicros = clock.nowMicros();
                 tap.link(config.id(), all, clock.nowMicros());
                 states.refreshStaleness();
                 publishLink();
@@ -278,6 +283,7 @@ final class InterfaceLink {
         n.put("driver", config.driver());
         n.put("address", config.address().toString());
         n.put("up", up);
+        n.put("sinceMicros", sinceMicros);
         if (replayed) {
             n.put("replayed", true);
         }
