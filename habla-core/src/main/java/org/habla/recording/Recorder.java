@@ -58,7 +58,6 @@ public final class Recorder implements GraphTap, AutoCloseable {
     private final AtomicLong queuedBytes = new AtomicLong();
     private final AtomicLong dropped = new AtomicLong();
     private final AtomicLong written = new AtomicLong();
-    private final AtomicLong flushes = new AtomicLong();
     private final Thread writer;
     private volatile boolean closed;
     private volatile boolean failed;
@@ -112,11 +111,6 @@ public final class Recorder implements GraphTap, AutoCloseable {
     /** Events written so far (the header not counted). */
     public long written() {
         return written.get();
-    }
-
-    /** How often the writer has handed what it wrote to the operating system (each closes an MCAP chunk). */
-    public long flushes() {
-        return flushes.get();
     }
 
     // ------------------------------------------------------------------ GraphTap (engine threads)
@@ -201,7 +195,6 @@ public final class Recorder implements GraphTap, AutoCloseable {
                         droppedWritten = d;
                     }
                     out.flush();
-                    flushes.incrementAndGet();
                     nextFlush = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(FLUSH_MILLIS);
                 }
             }

@@ -46,10 +46,7 @@ class McapRecordingTest {
                         ChannelDescriptor.command("motion", PayloadKind.VECTOR, "m/s", true))));
     }
 
-    /**
-     * Every kind of event and payload, through the recorder's tap as the engine would; every five rounds, once the
-     * writer has written everything so far, a flush of its own closes a chunk there.
-     */
+    /** Every kind of event and payload, through the recorder's tap as the engine would; a pause every few rounds. */
     private static Path record(Path file, int rounds) throws Exception {
         ManualClock clock = new ManualClock(1_000_000);
         Random random = new Random(3);
@@ -57,7 +54,6 @@ class McapRecordingTest {
         byte[] jpeg = new byte[3_000];
         try (Recorder r = Recorder.create(file, header(), clock)) {
             r.link("robot", true, clock.nowMicros());
-            long offered = 1;
             for (int i = 1; i <= rounds; i++) {
                 clock.advanceMillis(50);
                 random.nextBytes(pcm);
@@ -71,27 +67,14 @@ class McapRecordingTest {
                         .put("angleRad", -0.25).put("seen", true).build(), "distance.distance_angle", i, clock.nowMicros() - 3, false));
                 r.output("reward", "reward", new Sample(new NumberValue(-1), "reward.reward", i, clock.nowMicros(), false));
                 r.periodic("tick:distance", clock.nowMicros(), i);
-                offered += 8;
                 if (i % 5 == 0) {
                     r.writerLeft("action");
-                    offered++;
-                    long all = offered;
-                    await(() -> r.written() == all, "the writer takes every event");
-                    long flushed = r.flushes();
-                    await(() -> r.flushes() > flushed, "the writer's next flush closes a chunk");
+                    Thread.sleep(Recorder.FLUSH_MILLIS + 30);   // so the writer closes a chunk here and there
                 }
             }
             r.link("robot", false, clock.nowMicros());
         }
         return file;
-    }
-
-    private static void await(java.util.function.BooleanSupplier condition, String what) throws InterruptedException {
-        long end = System.nanoTime() + 30_000_000_000L;
-        while (!condition.getAsBoolean()) {
-            assertThat(System.nanoTime()).as("waiting until " + what).isLessThan(end);
-            Thread.sleep(5);
-        }
     }
 
     private static Recording readAll(Path file) throws Exception {
