@@ -1,0 +1,81 @@
+package org.habla.methods.speech;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Set;
+
+/**
+ * How well a stream was heard: each item gets what the chain said between its start and the next
+ * item's start. An in-grammar item is right when exactly its phrase was said, once; an item outside
+ * the grammar is right when nothing was said. Anything said before the first item is a false alarm,
+ * and so is any phrase that is not in the grammar.
+ */
+public final class StreamScore {
+
+    public int inGrammar;
+    public int inGrammarRight;
+    public int outOfGrammar;
+    public int outOfGrammarRejected;
+    public int falseAlarms;
+    public int notInGrammar;
+    public final List<String> misses = new ArrayList<>();
+
+    public void add(String voice, List<EvalSet.Item> items, List<SpeechChain.Heard> heard, Set<String> grammar) {
+        for (SpeechChain.Heard h : heard) {
+            if (!grammar.contains(h.phrase())) {
+                notInGrammar++;
+                misses.add(voice + ": said '" + h.phrase() + "', which is not in the grammar");
+            }
+            if (items.isEmpty() || h.atS() < items.get(0).startS()) {
+                falseAlarms++;
+            }
+        }
+        for (int i = 0; i < items.size(); i++) {
+            EvalSet.Item item = items.get(i);
+            double from = item.startS();
+            double to = i + 1 < items.size() ? items.get(i + 1).startS() : Double.MAX_VALUE;
+            List<String> said = heard.stream().filter(h -> h.atS() >= from && h.atS() < to).map(SpeechChain.Heard::phrase)
+                    .toList();
+            if (item.inGrammar()) {
+                inGrammar++;
+                if (said.equals(List.of(item.text()))) {
+                    inGrammarRight++;
+                } else {
+                    misses.add(voice + ": '" + item.text() + "' -> " + said);
+                }
+            } else {
+                outOfGrammar++;
+                if (said.isEmpty()) {
+                    outOfGrammarRejected++;
+                } else {
+                    misses.add(voice + ": (oog) '" + item.text() + "' -> " + said);
+                }
+            }
+        }
+    }
+
+    public void add(StreamScore other) {
+        inGrammar += other.inGrammar;
+        inGrammarRight += other.inGrammarRight;
+        outOfGrammar += other.outOfGrammar;
+        outOfGrammarRejected += other.outOfGrammarRejected;
+        falseAlarms += other.falseAlarms;
+        notInGrammar += other.notInGrammar;
+        misses.addAll(other.misses);
+    }
+
+    public double accuracy() {
+        return inGrammar == 0 ? Double.NaN : 100.0 * inGrammarRight / inGrammar;
+    }
+
+    public double rejection() {
+        return outOfGrammar == 0 ? Double.NaN : 100.0 * outOfGrammarRejected / outOfGrammar;
+    }
+
+    @Override
+    public String toString() {
+        return String.format("in-grammar %d/%d (%.1f%%), out-of-grammar rejected %d/%d (%.1f%%), false alarms %d, "
+                + "outside the grammar %d", inGrammarRight, inGrammar, accuracy(), outOfGrammarRejected, outOfGrammar,
+                rejection(), falseAlarms, notInGrammar);
+    }
+}
