@@ -56,6 +56,35 @@ public final class SpeechChain {
         return new SpeechChain(ap, audio.params(), create(registry.method(speech.type()).orElseThrow(), speech.params()));
     }
 
+    /**
+     * The chain of the config with some params changed (for tuning): system properties {@code ap.NAME}
+     * for {@code audio-processing}, {@code sr.NAME} for {@code speech-recognition}.
+     */
+    public static SpeechChain fromConfigWithOverrides(Path config, String audioId, String speechId) throws Exception {
+        PluginRegistry registry = PluginRegistry.discover();
+        HablaConfig c = new ConfigLoader(registry).load(config);
+        MethodConfig audio = c.method(audioId).orElseThrow();
+        MethodConfig speech = c.method(speechId).orElseThrow();
+        return of(override(audio.params(), "ap."), override(speech.params(), "sr."));
+    }
+
+    private static Record override(Record r, String prefix) throws Exception {
+        var components = r.getClass().getRecordComponents();
+        Object[] values = new Object[components.length];
+        Class<?>[] types = new Class<?>[components.length];
+        for (int i = 0; i < components.length; i++) {
+            types[i] = components[i].getType();
+            values[i] = components[i].getAccessor().invoke(r);
+            String v = System.getProperty(prefix + components[i].getName());
+            if (v != null) {
+                values[i] = types[i] == Double.class ? Double.valueOf(v) : types[i] == Integer.class ? Integer.valueOf(v)
+                        : types[i] == Boolean.class ? Boolean.valueOf(v) : v;
+                System.out.println("  " + prefix + components[i].getName() + " = " + v);
+            }
+        }
+        return (Record) r.getClass().getDeclaredConstructor(types).newInstance(values);
+    }
+
     /** The chain with explicit params (for tuning). */
     public static SpeechChain of(Record audioParams, Record speechParams) {
         PluginRegistry registry = PluginRegistry.discover();

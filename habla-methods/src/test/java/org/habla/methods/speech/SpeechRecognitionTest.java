@@ -145,7 +145,7 @@ class SpeechRecognitionTest {
     void cutsUtterancesOutOfAStreamAndListensOnlyForItsOwnGrammar(@TempDir Path dir) throws Exception {
         Path grammar = dir.resolve("turns.gram");
         Files.writeString(grammar, "#JSGF V1.0;\ngrammar turns;\npublic <turn> = turn left | turn right | stop;\n");
-        MethodHarness h = loaded(new SpeechRecognitionParams(grammar.toString(), 8, null, null, null, null, null));
+        MethodHarness h = loaded(SpeechRecognitionParams.defaults().withGrammar(grammar.toString()).withMaxPending(8));
         List<Utterances.Utterance> all = Utterances.all();
         List<String> said = List.of("turn left", "stop", "turn right", "turn left");
         Random r = new Random(4);
@@ -188,7 +188,7 @@ class SpeechRecognitionTest {
     @Test
     void utterancesArrivingWhileTheModelLoadsWaitUpToMaxPending() throws Exception {
         MethodHarness h = MethodHarness.started("speech",
-                new SpeechRecognition(new SpeechRecognitionParams(null, 2, null, null, null, null, null)));
+                new SpeechRecognition(SpeechRecognitionParams.defaults().withMaxPending(2)));
         List<Utterances.Utterance> all = Utterances.all();
         List<String> phrases = List.of("go forward", "go back", "well done", "no");
         for (String phrase : phrases) {
@@ -202,10 +202,10 @@ class SpeechRecognitionTest {
     @Test
     void aMissingGrammarFileFailsTheMethodWithItsPath() {
         MethodHarness h = MethodHarness.started("speech",
-                new SpeechRecognition(new SpeechRecognitionParams("/nonexistent/words.gram", null, null, null, null, null, null)));
+                new SpeechRecognition(SpeechRecognitionParams.defaults().withGrammar("/nonexistent/words.gram")));
         h.runBackground();
         assertThat(h.state()).isEqualTo(MethodState.FAILED);
-        assertThatThrownBy(() -> new SpeechRecognitionParams("words.txt", null, null, null, null, null, null))
+        assertThatThrownBy(() -> SpeechRecognitionParams.defaults().withGrammar("words.txt"))
                 .hasMessageContaining(".gram");
     }
 

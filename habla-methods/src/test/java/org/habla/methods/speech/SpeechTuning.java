@@ -21,7 +21,7 @@ public final class SpeechTuning {
         Path set = Path.of(args[0]);
         String split = args[1];
         List<String> conditions = args.length > 2 ? List.of(args).subList(2, args.length) : EvalSet.CONDITIONS;
-        SpeechChain chain = SpeechChain.fromConfig(Path.of(System.getProperty("habla.config", "config/aibo.json")),
+        SpeechChain chain = SpeechChain.fromConfigWithOverrides(Path.of(System.getProperty("habla.config", "config/aibo.json")),
                 "audio", "speech");
         boolean verbose = Boolean.getBoolean("verbose");
         StreamScore all = new StreamScore();
@@ -46,12 +46,20 @@ public final class SpeechTuning {
                 }
             }
             System.out.printf("%-8s %s%n         %s%n", condition, score, perVoice);
+            StringBuilder roc = new StringBuilder("         ");
+            for (double t : new double[] {0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.4}) {
+                roc.append(score.atThreshold(t)).append(" | ");
+            }
+            System.out.println(roc);
             if (verbose) {
                 score.misses.forEach(m -> System.out.println("    miss " + m));
             }
             all.add(score);
         }
         System.out.printf("all      %s%n", all);
+        for (double t : new double[] {0.02, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.4, 0.5}) {
+            System.out.println("         " + all.atThreshold(t));
+        }
         System.exit(0);
     }
 }

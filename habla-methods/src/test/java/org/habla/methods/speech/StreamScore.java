@@ -19,6 +19,8 @@ public final class StreamScore {
     public int falseAlarms;
     public int notInGrammar;
     public final List<String> misses = new ArrayList<>();
+    /** Per item: in the grammar?, the phrase said right (if in), and the confidences of what was said. */
+    public final List<Object[]> outcomes = new ArrayList<>();
 
     public void add(String voice, List<EvalSet.Item> items, List<SpeechChain.Heard> heard, Set<String> grammar) {
         for (SpeechChain.Heard h : heard) {
@@ -34,8 +36,10 @@ public final class StreamScore {
             EvalSet.Item item = items.get(i);
             double from = item.startS();
             double to = i + 1 < items.size() ? items.get(i + 1).startS() : Double.MAX_VALUE;
-            List<String> said = heard.stream().filter(h -> h.atS() >= from && h.atS() < to).map(SpeechChain.Heard::phrase)
-                    .toList();
+            List<SpeechChain.Heard> hs = heard.stream().filter(h -> h.atS() >= from && h.atS() < to).toList();
+            List<String> said = hs.stream().map(SpeechChain.Heard::phrase).toList();
+            outcomes.add(new Object[] {item.inGrammar(), said.equals(List.of(item.text())),
+                    hs.stream().mapToDouble(SpeechChain.Heard::confidence).toArray()});
             if (item.inGrammar()) {
                 inGrammar++;
                 if (said.equals(List.of(item.text()))) {
@@ -62,6 +66,32 @@ public final class StreamScore {
         falseAlarms += other.falseAlarms;
         notInGrammar += other.notInGrammar;
         misses.addAll(other.misses);
+        outcomes.addAll(other.outcomes);
+    }
+
+    /** Accuracy and rejection had everything below {@code t} been left unsaid. */
+    public String atThreshold(double t) {
+        int in = 0;
+        int right = 0;
+        int out = 0;
+        int rejected = 0;
+        for (Object[] o : outcomes) {
+            double[] c = (double[]) o[2];
+            boolean anyAbove = java.util.Arrays.stream(c).anyMatch(x -> x >= t);
+            if ((Boolean) o[0]) {
+                in++;
+                if ((Boolean) o[1] && c[0] >= t) {
+                    right++;
+                }
+            } else {
+                out++;
+                if (!anyAbove) {
+                    rejected++;
+                }
+            }
+        }
+        return String.format("t=%.2f in %.1f%% oog %.1f%%", t, 100.0 * right / Math.max(1, in),
+                100.0 * rejected / Math.max(1, out));
     }
 
     public double accuracy() {
