@@ -18,7 +18,7 @@ public record SpeechRecognitionParams(
                 defaultValue = "\"\"", file = true)
         String adaptation,
         @Param(value = "The lowest confidence a phrase is said with; below it the utterance gives nothing",
-                defaultValue = "0.2")
+                defaultValue = "0.1")
         Double minConfidence,
         @Param(value = "Prior of Sphinx's out-of-grammar branch (a loop of phones beside the grammar): the higher, "
                 + "the more readily speech outside the grammar gives nothing; 0 (no branch) measured best",
@@ -50,7 +50,7 @@ public record SpeechRecognitionParams(
             throw new IllegalArgumentException("grammar must name a JSGF file ending in .gram, was '" + grammar + "'");
         }
         adaptation = adaptation == null ? "" : adaptation.trim();
-        minConfidence = ParamRules.within("minConfidence", minConfidence, 0.2, 0, 1);
+        minConfidence = ParamRules.within("minConfidence", minConfidence, 0.1, 0, 1);
         outOfGrammarProbability = ParamRules.within("outOfGrammarProbability", outOfGrammarProbability, 0, 0, 1);
         denoise = denoise == null || denoise;
         maxPending = ParamRules.within("maxPending", maxPending, 4, 1, 1000);

@@ -23,6 +23,12 @@ public final class StreamScore {
     public final List<Object[]> outcomes = new ArrayList<>();
 
     public void add(String voice, List<EvalSet.Item> items, List<SpeechChain.Heard> heard, Set<String> grammar) {
+        add(voice, items, heard, grammar, Set.of());
+    }
+
+    /** Scores the stream, leaving out the items whose index is in {@code skip}. */
+    public void add(String voice, List<EvalSet.Item> items, List<SpeechChain.Heard> heard, Set<String> grammar,
+            Set<Integer> skip) {
         for (SpeechChain.Heard h : heard) {
             if (!grammar.contains(h.phrase())) {
                 notInGrammar++;
@@ -34,6 +40,9 @@ public final class StreamScore {
         }
         for (int i = 0; i < items.size(); i++) {
             EvalSet.Item item = items.get(i);
+            if (skip.contains(i)) {
+                continue;
+            }
             double from = item.startS();
             double to = i + 1 < items.size() ? items.get(i + 1).startS() : Double.MAX_VALUE;
             List<SpeechChain.Heard> hs = heard.stream().filter(h -> h.atS() >= from && h.atS() < to).toList();
