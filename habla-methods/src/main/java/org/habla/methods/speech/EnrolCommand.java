@@ -29,7 +29,7 @@ import picocli.CommandLine.Parameters;
                 + "microphone stream) and write the adaptation file that speech-recognition's 'adaptation' names.")
 public final class EnrolCommand implements Callable<Integer> {
 
-    /** The phrases a teacher is asked to say over a stream, in turn: the bundled grammar's. */
+    /** The phrases a teacher is asked to say, in turn, by default: the bundled grammar's. */
     static final List<String> PROMPTS = List.of("go forward", "turn left", "turn right", "go back", "stop",
             "good dog", "bad dog", "well done", "no");
     static final int CONNECT_TIMEOUT_MS = 5000;
@@ -54,6 +54,11 @@ public final class EnrolCommand implements Callable<Integer> {
             description = "Utterances to take from the --pcm stream (default ${DEFAULT-VALUE}).")
     int count = 9;
 
+    @Option(names = "--phrases", split = ",", paramLabel = "PHRASE",
+            description = "What the teacher says, in order, comma-separated (repeated when they say more); default: "
+                    + "go forward,turn left,turn right,go back,stop,good dog,bad dog,well done,no.")
+    List<String> phrases = PROMPTS;
+
     @Parameters(paramLabel = "WAV", arity = "0..*", description = "Recordings of the teacher (any rate and channels).")
     List<File> recordings = List.of();
 
@@ -74,7 +79,7 @@ public final class EnrolCommand implements Callable<Integer> {
         }
         SpeechRecognitionParams params = SpeechRecognitionParams.defaults().withGrammar(grammar);
         try {
-            int frames = enrolment.write(params, output);
+            int frames = enrolment.write(params, phrases, output);
             System.out.printf("wrote %s from %d utterances (%.1f s of speech); name it in the speech-recognition "
                     + "method's params: \"adaptation\": \"%s\"%n", output, enrolment.utterances().size(), frames / 100.0,
                     output);
@@ -95,11 +100,11 @@ public final class EnrolCommand implements Callable<Integer> {
                     CONNECT_TIMEOUT_MS);
             InputStream in = s.getInputStream();
             int[] said = {0};
-            System.out.println("say: " + PROMPTS.get(0));
+            System.out.println("say: " + phrases.get(0));
             int n = enrolment.addStream(in, new AudioFormat(rateHz, channels, 16), count, () -> {
                 said[0]++;
                 if (said[0] < count) {
-                    System.out.println("say: " + PROMPTS.get(said[0] % PROMPTS.size()));
+                    System.out.println("say: " + phrases.get(said[0] % phrases.size()));
                 }
             });
             System.out.printf("%d utterance%s from %s%n", n, n == 1 ? "" : "s", pcm);

@@ -80,15 +80,19 @@ public final class Enrolment {
     }
 
     /**
-     * Estimates the adaptation from the utterances with the model and grammar of {@code params} and writes
-     * it to {@code out}; returns the frames of speech it rests on.
+     * Estimates the adaptation from the utterances, the teacher having said {@code phrases} in turn (the
+     * list repeats when there are more utterances), with the model of {@code params}, and writes it to
+     * {@code out}; returns the frames of speech it rests on.
      */
-    public int write(SpeechRecognitionParams params, Path out) throws IOException {
+    public int write(SpeechRecognitionParams params, List<String> phrases, Path out) throws IOException {
         if (utterances.size() < MIN_UTTERANCES) {
             throw new IOException("enrolment needs at least " + MIN_UTTERANCES + " utterances (MIN_UTTERANCES), got "
                     + utterances.size());
         }
-        SphinxDecoder decoder = SphinxDecoder.load(SpeechRecognition.settings(params), java.util.Optional.empty());
-        return decoder.writeAdaptation(utterances, out);
+        List<String> said = new ArrayList<>();
+        for (int i = 0; i < utterances.size(); i++) {
+            said.add(phrases.get(i % phrases.size()));
+        }
+        return SphinxDecoder.writeAdaptation(SpeechRecognition.settings(params), utterances, said, out);
     }
 }

@@ -78,6 +78,12 @@ public record SpeechRecognitionParams(
                 maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, queue);
     }
 
+    /** These params with another confidence threshold. */
+    public SpeechRecognitionParams withMinConfidence(double threshold) {
+        return new SpeechRecognitionParams(grammar, adaptation, threshold, outOfGrammarProbability, denoise,
+                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, queue);
+    }
+
     /** These params with another backlog. */
     public SpeechRecognitionParams withMaxPending(int n) {
         return new SpeechRecognitionParams(grammar, adaptation, minConfidence, outOfGrammarProbability, denoise, n,

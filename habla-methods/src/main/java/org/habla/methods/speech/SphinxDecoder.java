@@ -90,13 +90,28 @@ public final class SphinxDecoder {
     /** Loads the model with these settings and, if given, a speaker's adaptation (an MLLR transform file). */
     public static SphinxDecoder load(Settings settings, Optional<Path> adaptation) throws IOException {
         Path file = settings.grammarFile().toAbsolutePath().normalize();
+        Map<String, String> values = values(settings);
+        try {
+            SphinxDecoder d = new SphinxDecoder(new ConfigurationManager(writeConfig(values).toUri().toURL()));
+            if (adaptation.isPresent()) {
+                d.adapt(adaptation.get());
+            }
+            d.warmUp();
+            return d;
+        } catch (RuntimeException e) {
+            throw new IOException("Sphinx-4 could not load (grammar " + file + "): " + e.getMessage(), e);
+        }
+    }
+
+    private static Map<String, String> values(Settings settings) throws IOException {
+        Path file = settings.grammarFile().toAbsolutePath().normalize();
         if (!Files.isRegularFile(file)) {
             throw new IOException("grammar file " + file + " does not exist");
         }
         String fileName = file.getFileName().toString();
         String name = fileName.endsWith(".gram") ? fileName.substring(0, fileName.length() - 5) : fileName;
         String dir = file.getParent().toUri().toURL().toString();
-        Map<String, String> values = Map.ofEntries(
+        return Map.ofEntries(
                 Map.entry("absoluteBeamWidth", "20000"),
                 Map.entry("relativeBeamWidth", "1e-60"),
                 Map.entry("wordInsertionProbability", "0.1"),
@@ -111,16 +126,6 @@ public final class SphinxDecoder {
                 Map.entry("acousticModel", ACOUSTIC_MODEL),
                 Map.entry("denoise", settings.denoise() ? "<item>denoise</item>" : ""),
                 Map.entry("cmn", "edu.cmu.sphinx.frontend.feature.BatchCMN"));
-        try {
-            SphinxDecoder d = new SphinxDecoder(new ConfigurationManager(writeConfig(values).toUri().toURL()));
-            if (adaptation.isPresent()) {
-                d.adapt(adaptation.get());
-            }
-            d.warmUp();
-            return d;
-        } catch (RuntimeException e) {
-            throw new IOException("Sphinx-4 could not load (grammar " + file + "): " + e.getMessage(), e);
-        }
     }
 
     private static Path writeConfig(Map<String, String> values) throws IOException {
@@ -153,21 +158,40 @@ public final class SphinxDecoder {
     }
 
     /**
-     * Estimates a speaker's MLLR transform from utterances of theirs (16 kHz mono 16-bit), each decoded in
-     * the grammar and aligned to its phrase, and writes it to {@code out}. Returns the frames used.
+     * Estimates a speaker's MLLR transform from utterances of theirs (16 kHz mono 16-bit), each aligned to
+     * the phrase they were asked to say, and writes it to {@code out}. Returns the frames of speech used.
+     * Uses a model of its own (the transform is applied to the means of the model that loads it).
      */
-    public int writeAdaptation(List<AudioChunk> utterances, Path out) throws IOException {
+    public static int writeAdaptation(Settings settings, List<AudioChunk> utterances, List<String> phrases, Path out)
+            throws IOException {
+        if (utterances.size() != phrases.size()) {
+            throw new IllegalArgumentException(utterances.size() + " utterances but " + phrases.size() + " phrases");
+        }
+        ConfigurationManager cm = new ConfigurationManager(writeConfig(values(settings)).toUri().toURL());
+        Recognizer aligner = cm.lookup("alignRecognizer");
+        edu.cmu.sphinx.linguist.language.grammar.AlignerGrammar grammar = cm.lookup("alignerGrammar");
+        StreamDataSource source = cm.lookup("dataSource");
         Loader loader = cm.lookup("acousticModelLoader");
-        Stats stats = new Stats(loader, new ClusteredDensityFileData(loader, ADAPTATION_CLASSES));
         try {
-            for (AudioChunk u : utterances) {
-                Result r = search(recognizer, u);
-                if (r != null && r.getBestFinalToken() != null) {
+            // the grammar of each utterance is its phrase; the linguist compiles it again when it changes
+            aligner.allocate();
+            Stats stats = new Stats(loader, new ClusteredDensityFileData(loader, ADAPTATION_CLASSES));
+            int aligned = 0;
+            for (int i = 0; i < utterances.size(); i++) {
+                grammar.setWords(List.of(phrases.get(i).trim().split("\\s+")));
+                source.setInputStream(new ByteArrayInputStream(utterances.get(i).pcm()));
+                Result r = aligner.recognize();
+                while (aligner.recognize() != null) {
+                    // the rest of the stream
+                }
+                // the aligner's grammar is the phrase alone: its best path is the alignment
+                if (r != null && r.getBestToken() != null) {
                     stats.collect(new SpeechResult(r));
+                    aligned++;
                 }
             }
-            if (stats.getFrames() == 0) {
-                throw new IOException("none of the " + utterances.size() + " utterances could be aligned to a phrase");
+            if (aligned == 0) {
+                throw new IOException("none of the " + utterances.size() + " utterances could be aligned to its phrase");
             }
             Transform t = stats.createTransform();
             Path parent = out.toAbsolutePath().getParent();

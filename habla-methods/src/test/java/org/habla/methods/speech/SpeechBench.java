@@ -113,6 +113,7 @@ public final class SpeechBench {
             AudioChunk clean = Utterances.readWav(v.stream("clean"));
             Enrolment enrolment = new Enrolment();
             Set<Integer> used = new HashSet<>();
+            List<String> said = new ArrayList<>();
             double[] mono = clean.channel(0);
             for (int i = 0; i < v.items().size() && used.size() < 9; i++) {
                 EvalSet.Item item = v.items().get(i);
@@ -121,10 +122,11 @@ public final class SpeechBench {
                     int to = (int) Math.min(mono.length, (item.endS() + 0.3) * 16_000);
                     enrolment.addRecording(MonoAudio.chunk(Arrays.copyOfRange(mono, from, to), 16_000));
                     used.add(i);
+                    said.add(item.text());
                 }
             }
             Path file = Files.createTempFile("habla-enrol-" + v.name(), ".mllr");
-            enrolment.write(base, file);
+            enrolment.write(base, said, file);
             SpeechChain adapted = SpeechChain.of(audioParams, base.withAdaptation(file.toString()));
             List<EvalSet.Item> rest = new ArrayList<>();
             for (int k = 0; k < EvalSet.CONDITIONS.size(); k++) {
