@@ -59,6 +59,10 @@ public final class EnrolCommand implements Callable<Integer> {
                     + "go forward,turn left,turn right,go back,stop,good dog,bad dog,well done,no.")
     List<String> phrases = PROMPTS;
 
+    @Option(names = "--force", description = "Write the adaptation even if it recognises the enrolment utterances "
+            + "worse than the model as it comes.")
+    boolean force;
+
     @Parameters(paramLabel = "WAV", arity = "0..*", description = "Recordings of the teacher (any rate and channels).")
     List<File> recordings = List.of();
 
@@ -79,10 +83,16 @@ public final class EnrolCommand implements Callable<Integer> {
         }
         SpeechRecognitionParams params = SpeechRecognitionParams.defaults().withGrammar(grammar);
         try {
-            int frames = enrolment.write(params, phrases, output);
-            System.out.printf("wrote %s from %d utterances (%.1f s of speech); name it in the speech-recognition "
-                    + "method's params: \"adaptation\": \"%s\"%n", output, enrolment.utterances().size(), frames / 100.0,
-                    output);
+            Enrolment.Outcome o = enrolment.write(params, phrases, output, force);
+            System.out.printf("%d utterances (%.1f s of speech); of their phrases the model as it comes recognises %d, "
+                    + "adapted %d%n", o.phrases(), o.frames() / 100.0, o.rightBefore(), o.rightAfter());
+            if (!o.written()) {
+                System.err.println("habla enrol: the adaptation recognises the teacher worse than the model as it "
+                        + "comes; not written (--force writes it anyway)");
+                return ExitCodes.RUNTIME_FAILURE;
+            }
+            System.out.printf("wrote %s; name it in the speech-recognition method's params: \"adaptation\": \"%s\"%n",
+                    output, output);
             return ExitCodes.OK;
         } catch (IOException e) {
             System.err.println("habla enrol: " + e.getMessage());

@@ -2,7 +2,10 @@ package org.habla.methods.speech;
 
 import java.io.IOException;
 import java.io.InputStream;
+import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.Optional;
 import java.util.ArrayList;
 import java.util.List;
 import org.habla.methods.audio.AudioProcessingParams;
@@ -80,11 +83,20 @@ public final class Enrolment {
     }
 
     /**
-     * Estimates the adaptation from the utterances, the teacher having said {@code phrases} in turn (the
-     * list repeats when there are more utterances), with the model of {@code params}, and writes it to
-     * {@code out}; returns the frames of speech it rests on.
+     * What an enrolment came to: the frames of speech the adaptation rests on, the enrolment phrases
+     * recognised right without it and with it, and whether the file was written.
      */
-    public int write(SpeechRecognitionParams params, List<String> phrases, Path out) throws IOException {
+    public record Outcome(int frames, int rightBefore, int rightAfter, int phrases, boolean written) {
+    }
+
+    /**
+     * Estimates the adaptation from the utterances, the teacher having said {@code phrases} in turn (the
+     * list repeats when there are more utterances), with the model of {@code params}, and checks it on
+     * the same utterances: the file {@code out} is written only if the adapted model recognises at least
+     * as many of them as the model as it comes, or when {@code force}d.
+     */
+    public Outcome write(SpeechRecognitionParams params, List<String> phrases, Path out, boolean force)
+            throws IOException {
         if (utterances.size() < MIN_UTTERANCES) {
             throw new IOException("enrolment needs at least " + MIN_UTTERANCES + " utterances (MIN_UTTERANCES), got "
                     + utterances.size());
@@ -93,6 +105,35 @@ public final class Enrolment {
         for (int i = 0; i < utterances.size(); i++) {
             said.add(phrases.get(i % phrases.size()));
         }
-        return SphinxDecoder.writeAdaptation(SpeechRecognition.settings(params), utterances, said, out);
+        SphinxDecoder.Settings settings = SpeechRecognition.settings(params);
+        Path candidate = Files.createTempFile("habla-enrol", ".mllr");
+        try {
+            int frames = SphinxDecoder.writeAdaptation(settings, utterances, said, candidate);
+            int before = right(SphinxDecoder.load(settings, Optional.empty()), said, params.minConfidence());
+            int after = right(SphinxDecoder.load(settings, Optional.of(candidate)), said, params.minConfidence());
+            boolean write = force || after >= before;
+            if (write) {
+                Path parent = out.toAbsolutePath().getParent();
+                if (parent != null) {
+                    Files.createDirectories(parent);
+                }
+                Files.copy(candidate, out, StandardCopyOption.REPLACE_EXISTING);
+            }
+            return new Outcome(frames, before, after, said.size(), write);
+        } finally {
+            Files.deleteIfExists(candidate);
+        }
+    }
+
+    private int right(SphinxDecoder decoder, List<String> said, double minConfidence) {
+        int right = 0;
+        for (int i = 0; i < utterances.size(); i++) {
+            String expected = said.get(i);
+            if (decoder.decode(utterances.get(i))
+                    .filter(d -> d.confidence() >= minConfidence && d.phrase().equals(expected)).isPresent()) {
+                right++;
+            }
+        }
+        return right;
     }
 }

@@ -42,6 +42,16 @@ public final class SphinxDecoder {
     private static final String CONFIG = "/org/habla/methods/speech/sphinx.config.xml";
     private static final String ACOUSTIC_MODEL = "resource:/edu/cmu/sphinx/models/en-us/en-us";
     private static final String DICTIONARY = "resource:/edu/cmu/sphinx/models/en-us/cmudict-en-us.dict";
+    /**
+     * Noise added to every utterance before Sphinx hears it, in 16-bit steps (RMS; about −70 dBFS): the
+     * log of the mel energies of digital silence is Sphinx's floor value, far from any sound its model
+     * knows, and it upset recognition of words that came with digital silence around them (tune voices,
+     * clean: 85 % right without, 90 % with; in an echoing room 77 % and 89 %). Seeded afresh for each
+     * utterance, so an utterance is heard the same whatever came before it.
+     */
+    static final double DITHER_RMS = 10;
+    private static final long DITHER_SEED = 16_000;
+
     /** Regression classes of the speaker adaptation: one transform for all sounds, as few utterances support. */
     static final int ADAPTATION_CLASSES = 1;
 
@@ -179,7 +189,7 @@ public final class SphinxDecoder {
             int aligned = 0;
             for (int i = 0; i < utterances.size(); i++) {
                 grammar.setWords(List.of(phrases.get(i).trim().split("\\s+")));
-                source.setInputStream(new ByteArrayInputStream(utterances.get(i).pcm()));
+                source.setInputStream(new ByteArrayInputStream(dithered(utterances.get(i))));
                 Result r = aligner.recognize();
                 while (aligner.recognize() != null) {
                     // the rest of the stream
@@ -253,7 +263,7 @@ public final class SphinxDecoder {
     }
 
     private Result search(Recognizer which, AudioChunk utterance) {
-        source.setInputStream(new ByteArrayInputStream(utterance.pcm()));
+        source.setInputStream(new ByteArrayInputStream(dithered(utterance)));
         Result last = null;
         Result r;
         while ((r = which.recognize()) != null) {
@@ -267,6 +277,19 @@ public final class SphinxDecoder {
             // nothing: the rest of a stream after the final result
         }
         return last;
+    }
+
+    /** The utterance's 16-bit PCM with {@link #DITHER_RMS} of noise added (the same noise every time). */
+    static byte[] dithered(AudioChunk utterance) {
+        byte[] pcm = utterance.pcm().clone();
+        java.util.Random r = new java.util.Random(DITHER_SEED);
+        for (int i = 0; i + 1 < pcm.length; i += 2) {
+            int v = (short) ((pcm[i] & 0xff) | (pcm[i + 1] << 8));
+            int d = (int) Math.max(Short.MIN_VALUE, Math.min(Short.MAX_VALUE, Math.round(v + r.nextGaussian() * DITHER_RMS)));
+            pcm[i] = (byte) d;
+            pcm[i + 1] = (byte) (d >> 8);
+        }
+        return pcm;
     }
 
     /** The words of a path, fillers (silence) left out, first word first; {@code <unk>} for the phone loop. */

@@ -39,7 +39,7 @@ class EnrolCommandTest {
             });
             String said = String.join(",", teacher.items().stream().map(EvalSet.Item::text).toList());
             int code = Habla.execute("enrol", "--pcm", "127.0.0.1:" + mic.getLocalPort(), "--utterances", "13",
-                    "--phrases", said, "--output", file.toString());
+                    "--phrases", said, "--force", "--output", file.toString());
             assertThat(code).isZero();
         }
         // one regression class, three feature streams of 13 coefficients: Sphinx's MLLR file
@@ -64,7 +64,7 @@ class EnrolCommandTest {
         Enrolment e = new Enrolment();
         assertThat(Habla.execute("enrol", "--output", file.toString())).isEqualTo(2);
         assertThat(org.assertj.core.api.Assertions.catchThrowable(
-                () -> e.write(SpeechRecognitionParams.defaults(), List.of("stop"), file))).hasMessageContaining("MIN_UTTERANCES");
+                () -> e.write(SpeechRecognitionParams.defaults(), List.of("stop"), file, true))).hasMessageContaining("MIN_UTTERANCES");
         assertThat(List.of(file)).noneMatch(Files::exists);
     }
 }

@@ -51,6 +51,10 @@ public final class SpeechBench {
                 + "voices (%s)%nnever used for tuning; %d tune voices not reported here.%n%n", config, heldOut.size(),
                 String.join(", ", heldOut.stream().map(v -> v.name() + " (" + v.engine() + ")").toList()),
                 voices.size() - heldOut.size());
+        if (a.contains("--latency-only")) {
+            latency(config, heldOut.subList(0, Math.min(latencyVoices, heldOut.size())));
+            System.exit(0);
+        }
         SpeechChain chain = SpeechChain.fromConfig(config, "audio", "speech");
         System.out.printf("%-9s %-22s %-22s %-12s %-10s %s%n", "condition", "in-grammar right", "out-of-grammar silent",
                 "not grammar", "x realtime", "worst voice");
@@ -126,7 +130,9 @@ public final class SpeechBench {
                 }
             }
             Path file = Files.createTempFile("habla-enrol-" + v.name(), ".mllr");
-            enrolment.write(base, said, file);
+            Enrolment.Outcome o = enrolment.write(base, said, file, true);
+            System.out.printf("  %s: enrolment phrases right %d/%d as it comes, %d/%d adapted%n", v.name(), o.rightBefore(),
+                    o.phrases(), o.rightAfter(), o.phrases());
             SpeechChain adapted = SpeechChain.of(audioParams, base.withAdaptation(file.toString()));
             List<EvalSet.Item> rest = new ArrayList<>();
             for (int k = 0; k < EvalSet.CONDITIONS.size(); k++) {
@@ -152,17 +158,18 @@ public final class SpeechBench {
         HablaConfig c = new ConfigLoader(registry).load(config);
         MethodConfig audio = c.method("audio").orElseThrow();
         MethodConfig speech = c.method("speech").orElseThrow();
+        int[] ports = org.habla.testing.DaemonProcess.freePorts(2);
         String json = """
                 {"system": "bench-speech", "status": {"port": 0}, "methods": [
                   {"id": "mic", "type": "pass-through", "layer": "virtual", "inputs": {"in": "control"},
-                   "params": {"kind": "audio", "delivery": "queue", "capacity": 256}, "expose": {"port": 0, "name": "mic"}},
+                   "params": {"kind": "audio", "delivery": "queue", "capacity": 256}, "expose": {"port": %d, "name": "mic"}},
                   {"id": "audio", "type": "audio-processing", "layer": "processing", "inputs": {"audio": "mic.out"},
                    "params": %s},
                   {"id": "speech", "type": "speech-recognition", "layer": "processing", "inputs": {"segments": "audio.segments"},
                    "params": %s},
                   {"id": "words", "type": "pass-through", "layer": "virtual", "inputs": {"in": "speech.words"},
-                   "params": {"kind": "text", "delivery": "queue"}, "expose": {"port": 0, "name": "words"}}]}
-                """.formatted(ParamsJson.write(audio.params()), ParamsJson.write(speech.params()));
+                   "params": {"kind": "text", "delivery": "queue"}, "expose": {"port": %d, "name": "words"}}]}
+                """.formatted(ports[0], ParamsJson.write(audio.params()), ParamsJson.write(speech.params()), ports[1]);
         Daemon d = Daemon.start(new ConfigLoader(registry).parse(json, config.toAbsolutePath().getParent()), registry,
                 EngineClock.system());
         Histogram h = new Histogram(60_000_000L, 3);
