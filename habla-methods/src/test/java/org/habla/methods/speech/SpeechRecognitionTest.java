@@ -119,6 +119,25 @@ class SpeechRecognitionTest {
     }
 
     @Test
+    void aPhraseIsHeardTheSameWithLittleOrMuchSilenceAroundIt() throws Exception {
+        MethodHarness h = withBundledGrammar();
+        List<RecordValue> heard = new ArrayList<>();
+        for (Utterances.Utterance u : List.of(Utterances.all().get(9), Utterances.all().get(50))) {
+            for (double silenceS : new double[] {0.5, 1.5, 3}) {
+                double[] x = u.audio().channel(0);
+                double[] padded = new double[x.length + 2 * (int) (silenceS * 16_000)];
+                System.arraycopy(x, 0, padded, (int) (silenceS * 16_000), x.length);
+                h.clear();
+                h.push("segments", MonoAudio.chunk(padded, 16_000));
+                heard.add((RecordValue) h.last("result"));
+            }
+            assertThat(heard).extracting(r -> r.text("phrase")).containsOnly(u.phrase());
+            assertThat(heard).extracting(r -> r.number("confidence")).containsOnly(heard.get(0).number("confidence"));
+            heard.clear();
+        }
+    }
+
+    @Test
     void noiseBangsAndWhistledNotesAreNotTakenForWords() throws Exception {
         MethodHarness h = withBundledGrammar();
         Random r = new Random(12);
