@@ -34,7 +34,7 @@ import org.habla.sample.AudioChunk;
  * outside the grammar, the gain of enrolling each teacher, the real-time factor, and — through a
  * daemon with real sockets, the stream played in real time — the latency from the end of speech to the
  * phrase on the socket. Options: {@code --set DIR} (default target/speech-eval), {@code --config FILE}
- * (default config/aibo.json), {@code --latency-voices N} (default 2).
+ * (default config/aibo.json), {@code --latency-voices N} (default 2), {@code --enrol-voices N} (default 8).
  */
 public final class SpeechBench {
 
@@ -45,6 +45,7 @@ public final class SpeechBench {
         Path set = Path.of(option(a, "--set", "target/speech-eval"));
         Path config = Path.of(option(a, "--config", "config/aibo.json"));
         int latencyVoices = Integer.parseInt(option(a, "--latency-voices", "2"));
+        int enrolVoices = Integer.parseInt(option(a, "--enrol-voices", "8"));
         List<EvalSet.Voice> voices = EvalSet.read(set);
         List<EvalSet.Voice> heldOut = voices.stream().filter(EvalSet.Voice::heldOut).toList();
         System.out.printf("Speech recognition, the chain of %s (audio-processing -> speech-recognition), on %d held-out "
@@ -90,7 +91,7 @@ public final class SpeechBench {
         System.out.printf("%-9s %4d/%-4d %6.1f %%   %4d/%-4d %6.1f %%   %-12d%n", "all", total.inGrammarRight,
                 total.inGrammar, total.accuracy(), total.outOfGrammarRejected, total.outOfGrammar, total.rejection(),
                 total.notInGrammar);
-        adaptation(config, heldOut);
+        adaptation(config, heldOut.subList(0, Math.min(enrolVoices, heldOut.size())));
         latency(config, heldOut.subList(0, Math.min(latencyVoices, heldOut.size())));
         System.exit(0);
     }
@@ -100,8 +101,8 @@ public final class SpeechBench {
      * models are then scored on the rest of their utterances, in every condition.
      */
     private static void adaptation(Path config, List<EvalSet.Voice> voices) throws Exception {
-        System.out.printf("%nEnrolment (habla enrol): each teacher's first 9 clean utterances adapt the model (MLLR); "
-                + "scored on their other utterances%n");
+        System.out.printf("%nEnrolment (habla enrol) of %d teachers: each one's first 9 clean utterances adapt the model "
+                + "(MLLR); scored on their other utterances%n", voices.size());
         System.out.printf("%-9s %-16s %-16s%n", "condition", "as it comes", "enrolled");
         PluginRegistry registry = PluginRegistry.discover();
         HablaConfig c = new ConfigLoader(registry).load(config);
