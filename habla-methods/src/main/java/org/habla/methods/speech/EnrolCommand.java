@@ -60,7 +60,7 @@ public final class EnrolCommand implements Callable<Integer> {
     List<String> phrases = PROMPTS;
 
     @Option(names = "--force", description = "Write the adaptation even if it recognises the enrolment utterances "
-            + "worse than the model as it comes.")
+            + "no better than the model as it comes.")
     boolean force;
 
     @Parameters(paramLabel = "WAV", arity = "0..*", description = "Recordings of the teacher (any rate and channels).")
@@ -87,7 +87,7 @@ public final class EnrolCommand implements Callable<Integer> {
             System.out.printf("%d utterances (%.1f s of speech); of their phrases the model as it comes recognises %d, "
                     + "adapted %d%n", o.phrases(), o.frames() / 100.0, o.rightBefore(), o.rightAfter());
             if (!o.written()) {
-                System.err.println("habla enrol: the adaptation recognises the teacher worse than the model as it "
+                System.err.println("habla enrol: the adaptation recognises the teacher no better than the model as it "
                         + "comes; not written (--force writes it anyway)");
                 return ExitCodes.RUNTIME_FAILURE;
             }

@@ -92,8 +92,8 @@ public final class Enrolment {
     /**
      * Estimates the adaptation from the utterances, the teacher having said {@code phrases} in turn (the
      * list repeats when there are more utterances), with the model of {@code params}, and checks it on
-     * the same utterances: the file {@code out} is written only if the adapted model recognises at least
-     * as many of them as the model as it comes, or when {@code force}d.
+     * the same utterances: the file {@code out} is written only if the adapted model recognises more of
+     * them than the model as it comes, or when {@code force}d.
      */
     public Outcome write(SpeechRecognitionParams params, List<String> phrases, Path out, boolean force)
             throws IOException {
@@ -111,7 +111,7 @@ public final class Enrolment {
             int frames = SphinxDecoder.writeAdaptation(settings, utterances, said, candidate);
             int before = right(SphinxDecoder.load(settings, Optional.empty()), said, params.minConfidence());
             int after = right(SphinxDecoder.load(settings, Optional.of(candidate)), said, params.minConfidence());
-            boolean write = force || after >= before;
+            boolean write = force || after > before;
             if (write) {
                 Path parent = out.toAbsolutePath().getParent();
                 if (parent != null) {
