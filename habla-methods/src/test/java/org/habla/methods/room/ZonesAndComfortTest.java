@@ -35,4 +35,14 @@ class ZonesAndComfortTest {
         assertThat(c.number("score")).isEqualTo(0.5);
         assertThat(c.get("complaints").toString()).isEqualTo("[\"cold\",\"noisy\"]");
     }
+
+    @Test
+    void lightLevelsListEveryZoneHeardAndTheDarkOnes() {
+        MethodHarness h = MethodHarness.started("light",
+                new LightLevels(new LightLevels.Params(List.of("desk", "sofa", "kitchen"), 150.0)));
+        h.push("sofa", new NumberValue(90)).push("desk", new NumberValue(400));
+        RecordValue last = (RecordValue) h.last("light");
+        assertThat(last.get("lux").toString()).isEqualTo("{\"desk\":400.0,\"sofa\":90.0}");
+        assertThat(last.get("dark").toString()).isEqualTo("[\"sofa\"]");
+    }
 }
