@@ -37,7 +37,7 @@ public final class LightLevels extends VirtualMethod {
             @Param(value = "a zone is dark below this", unit = "lx", defaultValue = "200") Double darkLux) {
 
         public Params {
-            zones = new Occupancy.Params(zones).zones();
+            zones = new Occupancy.Params(zones, 0).zones();
             darkLux = ParamRules.within("darkLux", darkLux, 200, 0, 1e6);
         }
     }

@@ -13,6 +13,7 @@ import org.habla.method.Output;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
@@ -21,8 +22,9 @@ import org.habla.sample.Sample;
 /**
  * The occupancy method, type {@code occupancy}: which zones of a room someone is in. It has one input per zone
  * the {@code zones} param names (each a presence, 1 or 0) and one output, {@code occupancy}:
- * {@code {"zones": {"desk": 1, "sofa": 0}, "occupied": ["desk"], "count": 1}}, sent whenever a zone changes. A
- * zone not heard from yet counts as empty.
+ * {@code {"zones": {"desk": 1, "sofa": 0}, "occupied": ["desk"], "count": 1}}, sent whenever a zone's presence
+ * comes and again every {@code periodMs} (so a client that joins late, or a daemon listening through a broker, has
+ * the state without waiting for someone to move). A zone not heard from yet counts as empty.
  */
 public final class Occupancy extends VirtualMethod {
 
@@ -32,11 +34,21 @@ public final class Occupancy extends VirtualMethod {
             Shape.record("the presence of every zone, the occupied zones and their count", "zones", "occupied",
                     "count"));
     private final Map<String, Boolean> present = new LinkedHashMap<>();
+    private boolean heard;
 
     /** The params of an {@code occupancy} method. */
-    public record Params(@Param("the zones, each an input of the method (letters, digits, '_', '-')") List<String> zones) {
+    public record Params(
+            @Param("the zones, each an input of the method (letters, digits, '_', '-')") List<String> zones,
+            @Param(value = "the state is sent again this often; 0: only when a presence comes", unit = "ms",
+                    defaultValue = "1000") Integer periodMs) {
+
+        /** The zones, sent again every second. */
+        public Params(List<String> zones) {
+            this(zones, null);
+        }
 
         public Params {
+            periodMs = ParamRules.within("periodMs", periodMs, 1000, 0, 3_600_000);
             if (zones == null || zones.isEmpty()) {
                 throw new IllegalArgumentException("zones: name at least one zone");
             }
@@ -61,10 +73,25 @@ public final class Occupancy extends VirtualMethod {
             present.put(zone, false);
             input(zone, NumberValue.class, Delivery.queue(16), (value, sample) -> onPresence(zone, value, sample));
         }
+        if (params.periodMs() > 0) {
+            tickEvery(java.time.Duration.ofMillis(params.periodMs()));
+        }
     }
 
     private void onPresence(String zone, NumberValue value, Sample sample) {
         present.put(zone, value.value() >= 0.5);
+        publish();
+        heard = true;
+    }
+
+    @Override
+    protected void onTick(long nowMicros) {
+        if (heard) {
+            publish();
+        }
+    }
+
+    private void publish() {
         ObjectNode zones = JsonNodeFactory.instance.objectNode();
         ArrayNode occupied = JsonNodeFactory.instance.arrayNode();
         present.forEach((z, p) -> {

@@ -13,13 +13,23 @@ class ZonesAndComfortTest {
     @Test
     void occupancyListsTheOccupiedZonesAndCountsThem() {
         MethodHarness h = MethodHarness.started("occupancy",
-                new Occupancy(new Occupancy.Params(List.of("desk", "sofa", "door"))));
+                new Occupancy(new Occupancy.Params(List.of("desk", "sofa", "door"), 0)));
         h.push("sofa", new NumberValue(1)).push("desk", new NumberValue(1)).push("sofa", new NumberValue(0));
         RecordValue last = (RecordValue) h.last("occupancy");
         assertThat(last.get("zones").toString()).isEqualTo("{\"desk\":1,\"sofa\":0,\"door\":0}");
         assertThat(last.get("occupied").toString()).isEqualTo("[\"desk\"]");
         assertThat(last.number("count")).isEqualTo(1);
         assertThat(h.values("occupancy")).hasSize(3);
+    }
+
+    @Test
+    void occupancyIsSentAgainEveryPeriodOnceAZoneWasHeard() {
+        MethodHarness h = MethodHarness.started("occupancy", new Occupancy(new Occupancy.Params(List.of("desk"), 500)));
+        h.advanceMillis(2_000);
+        assertThat(h.values("occupancy")).as("nothing heard, nothing said").isEmpty();
+        h.push("desk", new NumberValue(1)).advanceMillis(1_050);
+        assertThat(h.values("occupancy")).hasSize(3);
+        assertThat(h.values("occupancy").get(2)).isEqualTo(h.values("occupancy").get(0));
     }
 
     @Test
