@@ -35,7 +35,8 @@ import org.slf4j.LoggerFactory;
  * </pre>
  *
  * Besides the devices it publishes its ground truth on {@link RoomSimOptions#TRUTH_TOPIC} and the teacher's
- * judgements on {@link RoomSimOptions#TEACHER_TOPIC}, for the scenario's report. While the teacher is there, every
+ * judgements on {@link RoomSimOptions#TEACHER_TOPIC}, for the scenario's report, and takes
+ * {@code {"teacher": true|false}} on {@link RoomSimOptions#CONTROL_TOPIC} to send the teacher in or away. While the teacher is there, every
  * lamp command is judged: right when it lights a zone the person is in and daylight leaves dark, or darkens any
  * other zone; the teacher presses the button once for right, twice for wrong.
  */
@@ -58,6 +59,7 @@ public final class RoomSim implements SimClock.Stepper, AutoCloseable {
     private final double[] motionReportedS;
     private final ArrayDeque<Reward> rewards = new ArrayDeque<>();
     private Boolean doorSent;
+    private volatile Boolean teacherOverride;
     private double truthS = -1;
     private double climateS = -1e9;
     private long judged;
@@ -103,6 +105,8 @@ public final class RoomSim implements SimClock.Stepper, AutoCloseable {
         client.publishes(MqttGlobalPublishFilter.SUBSCRIBED, sim::onSet);
         try {
             client.subscribeWith().topicFilter(base + "/+/set").qos(MqttQos.AT_LEAST_ONCE).send().get(10, TimeUnit.SECONDS);
+            client.subscribeWith().topicFilter(RoomSimOptions.CONTROL_TOPIC).qos(MqttQos.AT_LEAST_ONCE).send()
+                    .get(10, TimeUnit.SECONDS);
         } catch (ExecutionException | TimeoutException e) {
             client.disconnect();
             throw new IOException("cannot subscribe to the lamps' /set topics: " + e.getMessage(), e);
@@ -208,12 +212,17 @@ public final class RoomSim implements SimClock.Stepper, AutoCloseable {
     }
 
     private boolean teacherPresent(double nowS) {
-        return nowS < options.teacherS();
+        Boolean override = teacherOverride;
+        return override != null ? override : nowS < options.teacherS();
     }
 
     /** A lamp's /set: obey it as a Zigbee lamp does, tell the new state, and let the teacher judge it. */
     private void onSet(Mqtt5Publish p) {
         String topic = p.getTopic().toString();
+        if (topic.equals(RoomSimOptions.CONTROL_TOPIC)) {
+            onControl(p);
+            return;
+        }
         String device = topic.substring(base.length() + 1, topic.length() - "/set".length());
         JsonNode set;
         try {
@@ -253,6 +262,19 @@ public final class RoomSim implements SimClock.Stepper, AutoCloseable {
                         .put("on", level > 0).put("wantsLight", room.wantsLight(z)).put("reward", good ? 1 : -1);
                 rewards.add(new Reward(now + TEACHER_DELAY_S, good, j));
             }
+        }
+    }
+
+    /** The scenario's word: {@code {"teacher": true|false}} sends the teacher in or away. */
+    private void onControl(Mqtt5Publish p) {
+        try {
+            JsonNode c = JSON.readTree(p.getPayloadAsBytes());
+            if (c.path("teacher").isBoolean()) {
+                teacherOverride = c.path("teacher").booleanValue();
+                LOG.info("the teacher is {}", teacherOverride ? "present" : "away");
+            }
+        } catch (IOException e) {
+            LOG.warn("a control message that is not JSON was ignored");
         }
     }
 

@@ -21,6 +21,8 @@ public record RoomSimOptions(String brokerHost, int brokerPort, String baseTopic
     public static final String TRUTH_TOPIC = "habla-sim/room/truth";
     /** The topic the simulator publishes every reward the teacher gives on, with what it judged. */
     public static final String TEACHER_TOPIC = "habla-sim/room/teacher";
+    /** The topic a scenario sends the teacher in or away on: {@code {"teacher": true|false}}. */
+    public static final String CONTROL_TOPIC = "habla-sim/room/control";
 
     public RoomSimOptions {
         if (!(speed >= 1)) {
