@@ -123,10 +123,13 @@ def relevance_features(p, switch):
             p.lamp * on_after]
 
 
-def after_features(p):
-    """The induced model's inputs: the perception after, alone (no command, no switch)."""
+def after_features(p, gain):
+    """The induced model's inputs: the perception after, alone (no teacher): is an occupied zone lit, is a lamp on
+    where nobody is, and how much light there would be without the lamp (the world model's gain takes it out)."""
     lit = 1.0 if p.lux >= LIT_LUX else 0.0
-    return [1.0, p.occupied * lit, p.occupied * (1 - lit), (1 - p.occupied) * p.lamp, (1 - p.occupied) * (1 - p.lamp)]
+    without = max(0.0, p.lux - p.lamp * gain * LUX_SCALE) / LUX_SCALE
+    return [1.0, p.occupied * lit, p.occupied * (1 - lit), p.lamp * (1 - p.occupied), p.lamp * without,
+            (1 - p.lamp) * (1 - p.occupied)]
 
 
 def dot(w, x):
@@ -142,7 +145,7 @@ class Brain:
         self._epsilon, self.epsilon_decay = epsilon, epsilon_decay
         self.world = Evolution(len(self.zones), self.rng, size=population, init_scale=0.1)
         self.relevance = Evolution(7, self.rng, size=population)
-        self.induced = Evolution(5, self.rng, size=population)
+        self.induced = Evolution(6, self.rng, size=population)
 
     @property
     def epsilon(self):
@@ -162,19 +165,19 @@ class Brain:
     def relevance_of(self, p, switch):
         return math.tanh(dot(self.relevance.best, relevance_features(p, switch)))
 
-    def satisfaction_of(self, p):
-        return math.tanh(dot(self.induced.best, after_features(p)))
+    def satisfaction_of(self, zone, p):
+        return math.tanh(dot(self.induced.best, after_features(p, self.gain(zone))))
 
     def decide(self, zone, p, teacher):
         """Whether to switch the zone's lamp, whether that was exploration, and the two scores."""
         if teacher:
             scores = {"switch": self.relevance_of(p, True), "hold": 0.0}
         else:
-            scores = {"switch": self.satisfaction_of(self.predict(zone, p, True)),
-                      "hold": self.satisfaction_of(self.predict(zone, p, False))}
+            scores = {"switch": self.satisfaction_of(zone, self.predict(zone, p, True)),
+                      "hold": self.satisfaction_of(zone, self.predict(zone, p, False))}
         explored = teacher and self.rng.random() < self._epsilon
         if explored:
-            switch = self.rng.random() < 0.5
+            switch = True  # holding teaches nothing: the teacher judges switches
         else:
             switch = scores["switch"] > scores["hold"] + (0.0 if teacher else 0.1)
         if teacher:
@@ -203,7 +206,7 @@ class Brain:
                            for e in rewarded) / len(rewarded)
 
             def induced_error(w):
-                return sum((math.tanh(dot(w, after_features(e.after))) - e.reward) ** 2
+                return sum((math.tanh(dot(w, after_features(e.after, self.gain(e.zone)))) - e.reward) ** 2
                            for e in rewarded) / len(rewarded)
             errors["relevance"] = self.relevance.run(relevance_error, self.generations)
             errors["induced"] = self.induced.run(induced_error, self.generations)
@@ -211,8 +214,11 @@ class Brain:
 
 
 def run(link, brain, step_s, reward_wait_s, absent_after_s, max_seconds, log):
+    """The decision loop. The teacher counts as present while one of the last three switches earned a reward, or
+    while a reward came within `absent_after_s` (and at the start, until three switches went unrewarded)."""
     start = time.monotonic()
     last_reward_at = None
+    outcomes = collections.deque(maxlen=3)  # whether each recent switch earned a reward
     turn = 0
     lamps = {z: 0 for z in brain.zones}
     link.act("all off")
@@ -224,10 +230,8 @@ def run(link, brain, step_s, reward_wait_s, absent_after_s, max_seconds, log):
         with link.cv:
             before = Perception(float(link.occupancy.get(zone, 0)), float(link.light.get(zone, 0.0)), lamps[zone])
             heard = len(link.rewards)
-            if link.rewards:
-                last_reward_at = link.rewards[-1][1]
-        teacher = last_reward_at is not None and time.monotonic() - last_reward_at < absent_after_s
-        teacher = teacher or last_reward_at is None and time.monotonic() - start < absent_after_s * 4
+        recent = last_reward_at is not None and time.monotonic() - last_reward_at < absent_after_s
+        teacher = recent or len(outcomes) < outcomes.maxlen or any(outcomes)
         switch, explored, scores = brain.decide(zone, before, teacher)
         reward = None
         if switch:
@@ -239,6 +243,8 @@ def run(link, brain, step_s, reward_wait_s, absent_after_s, max_seconds, log):
             with link.cv:
                 if len(link.rewards) > heard:
                     reward = link.rewards[heard][2]
+                    last_reward_at = link.rewards[heard][1]
+            outcomes.append(reward is not None)
         link.wait(lambda: False, step_s)
         with link.cv:
             after = Perception(float(link.occupancy.get(zone, 0)), float(link.light.get(zone, 0.0)), lamps[zone])
