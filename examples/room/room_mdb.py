@@ -137,12 +137,13 @@ def dot(w, x):
 
 
 class Brain:
-    def __init__(self, zones, seed=0, memory=120, population=16, generations=3, epsilon=0.3, epsilon_decay=0.985):
+    def __init__(self, zones, seed=0, memory=120, population=16, generations=3, epsilon=0.3, epsilon_decay=0.97,
+                 epsilon_min=0.05):
         self.rng = random.Random(seed)
         self.zones = list(zones)
         self.memory = collections.deque(maxlen=memory)
         self.generations = generations
-        self._epsilon, self.epsilon_decay = epsilon, epsilon_decay
+        self._epsilon, self.epsilon_decay, self.epsilon_min = epsilon, epsilon_decay, epsilon_min
         self.world = Evolution(len(self.zones), self.rng, size=population, init_scale=0.1)
         self.relevance = Evolution(7, self.rng, size=population)
         self.induced = Evolution(6, self.rng, size=population)
@@ -178,10 +179,9 @@ class Brain:
         explored = teacher and self.rng.random() < self._epsilon
         if explored:
             switch = True  # holding teaches nothing: the teacher judges switches
+            self._epsilon = max(self.epsilon_min, self._epsilon * self.epsilon_decay)
         else:
             switch = scores["switch"] > scores["hold"] + (0.0 if teacher else 0.1)
-        if teacher:
-            self._epsilon *= self.epsilon_decay
         return switch, explored, scores
 
     def remember(self, e):

@@ -35,6 +35,12 @@ public final class RoomModel {
     public static final double DARK_LUX = 200;
     /** How long a motion sensor keeps reporting occupancy after the last movement it saw (Zigbee2MQTT's timeout). */
     public static final double OCCUPANCY_TIMEOUT_S = 10;
+    /**
+     * How long after the person left a zone the teacher still counts it as theirs: a motion sensor keeps saying
+     * occupied for {@link #OCCUPANCY_TIMEOUT_S}, and a lamp left on a few seconds for someone who just stepped
+     * out is no fault.
+     */
+    public static final double LINGER_S = 15;
     /** How long the door stays open when the person passes. */
     public static final double DOOR_OPEN_S = 2;
 
@@ -46,6 +52,7 @@ public final class RoomModel {
     private final double[] brightness;
     private final double[] energyWh;
     private final double[] lastMotionS;
+    private final double[] leftS;
     private int personZone;
     private double leaveAtS;
     private double doorOpenUntilS = -1;
@@ -73,6 +80,8 @@ public final class RoomModel {
         this.energyWh = new double[zones.size()];
         this.lastMotionS = new double[zones.size()];
         java.util.Arrays.fill(lastMotionS, -1e9);
+        this.leftS = new double[zones.size()];
+        java.util.Arrays.fill(leftS, -1e9);
         this.personZone = 0;
         this.leaveAtS = dwell();
         lastMotionS[0] = 0;
@@ -113,6 +122,9 @@ public final class RoomModel {
 
     private void move() {
         int last = zones.size() - 1;
+        if (personZone >= 0) {
+            leftS[personZone] = nowS;
+        }
         if (personZone < 0) {
             personZone = last;
             openDoor();
@@ -168,9 +180,12 @@ public final class RoomModel {
         return lux;
     }
 
-    /** Whether the teacher wants zone {@code z}'s lamp on: someone is there and daylight is too dim. */
+    /**
+     * Whether the teacher wants zone {@code z}'s lamp on: someone is there (or left less than {@link #LINGER_S} ago)
+     * and daylight is too dim.
+     */
     public boolean wantsLight(int z) {
-        return personZone == z && daylight(z) < DARK_LUX;
+        return (personZone == z || nowS - leftS[z] < LINGER_S) && daylight(z) < DARK_LUX;
     }
 
     public double brightness(int z) {
