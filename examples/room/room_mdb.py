@@ -40,6 +40,7 @@ from habla_client import ControlSocket  # noqa: E402
 from mdb import Evolution, clamp  # noqa: E402
 
 LIT_LUX = 200.0  # the light a person needs (the controller's own threshold, not the teacher's)
+WEIGHT_COST = 0.01  # the satisfaction models pay for large weights, so they do not saturate on a few noisy rewards
 LUX_SCALE = 400.0  # light is modelled in units of this many lux
 
 
@@ -137,7 +138,7 @@ def dot(w, x):
 
 
 class Brain:
-    def __init__(self, zones, seed=0, memory=120, population=16, generations=3, epsilon=0.3, epsilon_decay=0.97,
+    def __init__(self, zones, seed=0, memory=200, population=16, generations=3, epsilon=0.3, epsilon_decay=0.97,
                  epsilon_min=0.05):
         self.rng = random.Random(seed)
         self.zones = list(zones)
@@ -176,16 +177,20 @@ class Brain:
         else:
             scores = {"switch": self.satisfaction_of(zone, self.predict(zone, p, True)),
                       "hold": self.satisfaction_of(zone, self.predict(zone, p, False))}
-        explored = teacher and self.rng.random() < self._epsilon
+        # Alone it still tries a switch now and then: a teacher who came back shows himself only by rewarding one.
+        explored = self.rng.random() < (self._epsilon if teacher else self.epsilon_min / 2)
         if explored:
             switch = True  # holding teaches nothing: the teacher judges switches
-            self._epsilon = max(self.epsilon_min, self._epsilon * self.epsilon_decay)
+            if teacher:
+                self._epsilon = max(self.epsilon_min, self._epsilon * self.epsilon_decay)
         else:
-            switch = scores["switch"] > scores["hold"] + (0.0 if teacher else 0.1)
+            switch = scores["switch"] > scores["hold"] + (0.0 if teacher else 0.05)
         return switch, explored, scores
 
     def remember(self, e):
-        self.memory.append(e)
+        """Keeps switches only: a lamp left as it was teaches neither the world model nor the satisfaction model."""
+        if e.switched:
+            self.memory.append(e)
 
     def learn(self):
         switched = [e for e in self.memory if e.switched]
@@ -203,11 +208,11 @@ class Brain:
         if rewarded:
             def relevance_error(w):
                 return sum((math.tanh(dot(w, relevance_features(e.before, True))) - e.reward) ** 2
-                           for e in rewarded) / len(rewarded)
+                           for e in rewarded) / len(rewarded) + WEIGHT_COST * dot(w, w)
 
             def induced_error(w):
                 return sum((math.tanh(dot(w, after_features(e.after, self.gain(e.zone)))) - e.reward) ** 2
-                           for e in rewarded) / len(rewarded)
+                           for e in rewarded) / len(rewarded) + WEIGHT_COST * dot(w, w)
             errors["relevance"] = self.relevance.run(relevance_error, self.generations)
             errors["induced"] = self.induced.run(induced_error, self.generations)
         return errors
