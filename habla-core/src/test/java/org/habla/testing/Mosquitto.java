@@ -21,19 +21,32 @@ public final class Mosquitto implements AutoCloseable {
 
     private final Path dir;
     private final int port;
+    private final List<String> listenerLines;
+    private final boolean anonymous;
     private Process process;
 
-    private Mosquitto(Path dir, int port) {
+    private Mosquitto(Path dir, int port, List<String> listenerLines, boolean anonymous) {
         this.dir = dir;
         this.port = port;
+        this.listenerLines = List.copyOf(listenerLines);
+        this.anonymous = anonymous;
     }
 
-    /** Starts a broker on a free loopback port; its config and log live in {@code dir}. */
+    /** Starts a broker on a free loopback port that lets anyone in; its config and log live in {@code dir}. */
     public static Mosquitto start(Path dir) throws IOException, InterruptedException {
+        return start(dir, List.of(), true);
+    }
+
+    /**
+     * Starts a broker on a free loopback port whose listener has {@code listenerLines} too (e.g. {@code cafile},
+     * {@code certfile}, {@code keyfile}, {@code password_file}), letting anonymous clients in or not.
+     */
+    public static Mosquitto start(Path dir, List<String> listenerLines, boolean anonymous)
+            throws IOException, InterruptedException {
         ensureInstalled();
         IOException last = null;
         for (int attempt = 0; attempt < 3; attempt++) {
-            Mosquitto m = new Mosquitto(dir, freePort());
+            Mosquitto m = new Mosquitto(dir, freePort(), listenerLines, anonymous);
             try {
                 m.startAgain();
                 return m;
@@ -57,22 +70,22 @@ public final class Mosquitto implements AutoCloseable {
     /** Starts the broker again on the same port after {@link #stop()}. */
     public void startAgain() throws IOException, InterruptedException {
         Path conf = dir.resolve("mosquitto-" + port + ".conf");
-        Files.writeString(conf, String.join("\n",
-                "listener " + port + " 127.0.0.1",
-                "allow_anonymous true",
-                "persistence false",
-                "log_dest stderr",
-                "log_type error",
-                "log_type warning",
-                "log_type notice",
-                ""));
+        List<String> lines = new java.util.ArrayList<>(List.of("listener " + port + " 127.0.0.1"));
+        lines.addAll(listenerLines);
+        lines.addAll(List.of("allow_anonymous " + anonymous, "persistence false", "log_dest stderr", "log_type error",
+                "log_type warning", "log_type notice", ""));
+        Files.writeString(conf, String.join("\n", lines));
         process = new ProcessBuilder(BROKER.toString(), "-c", conf.toString()).redirectErrorStream(true)
                 .redirectOutput(ProcessBuilder.Redirect.appendTo(log().toFile())).start();
-        if (!DaemonProcess.awaitPort(port, READY_MILLIS)) {
-            stop();
-            throw new IOException("mosquitto did not listen on port " + port + " within " + READY_MILLIS
-                    + " ms; its log: " + Files.readString(log()));
+        long end = System.nanoTime() + READY_MILLIS * 1_000_000L;
+        while (process.isAlive() && System.nanoTime() < end) {
+            if (DaemonProcess.awaitPort(port, 200)) {
+                return;
+            }
         }
+        stop();
+        throw new IOException("mosquitto did not listen on port " + port + " within " + READY_MILLIS
+                + " ms; its log: " + Files.readString(log()));
     }
 
     /** Kills the broker (its clients see the connection drop) and waits for it to end. */
