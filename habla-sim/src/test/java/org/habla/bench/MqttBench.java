@@ -18,7 +18,7 @@ import org.habla.testing.DaemonProcess;
 import org.habla.testing.Mosquitto;
 
 /**
- * Benchmark (f): what the broker costs. One daemon (robot channel → two pass-throughs → a socket, as in (a)) with
+ * Benchmark (h): what the broker costs. One daemon (robot channel → two pass-throughs → a socket, as in (a)) with
  * an MQTT bridge publishing that socket to a local Mosquitto; a control client on the socket and an MQTT subscriber
  * on the bridge's topic read the same samples in the same window, so the difference of their latencies is the broker
  * round trip added per sample. Then the readings come as fast as the robot can write them, and the subscriber counts
@@ -40,7 +40,7 @@ final class MqttBench {
 
     void run() throws Exception {
         try (Mosquitto broker = Mosquitto.start(Files.createTempDirectory("habla-bench-mqtt"))) {
-            System.out.printf("%n(f) the MQTT bridge, Mosquitto %s on loopback%n", version(broker));
+            System.out.printf("%n(h) the MQTT bridge, Mosquitto %s on loopback%n", version(broker));
             latency(broker);
             throughput(broker);
         }
