@@ -58,7 +58,7 @@ class ReconnectBackOffTest {
     void aRobotLinkThatWasUpWaitsTheShortestTimeAfterItDropsHoweverLongTheWaitsHadGrown() throws Exception {
         Peer robot = peer("ready", "busy");
         MethodGraph g = robotGraph(robot.port());
-        BlockingQueue<Long> waits = observe(g.interfaceLink("robot").connections().get(0).backOff());
+        BlockingQueue<Long> waits = observe(((ConnectionLink) g.interfaceLink("robot").connections().get(0)).backOff());
         g.start();
         assertThat(take(waits, 5)).as("a failed handshake doubles the wait up to maxMs")
                 .containsExactly(40L, 80L, 160L, 320L, 320L);
@@ -77,7 +77,7 @@ class ReconnectBackOffTest {
         }
         try (LogLines log = new LogLines(ConnectionLink.class)) {
             MethodGraph g = robotGraph(port);
-            BlockingQueue<Long> waits = observe(g.interfaceLink("robot").connections().get(0).backOff());
+            BlockingQueue<Long> waits = observe(((ConnectionLink) g.interfaceLink("robot").connections().get(0)).backOff());
             g.start();
             assertThat(take(waits, 5)).as("a refused connect is an answer: try again soon")
                     .containsExactly(40L, 40L, 40L, 40L, 40L);
