@@ -102,6 +102,9 @@ public final class MethodGraph implements AutoCloseable {
         for (MethodConfig mc : config.methods()) {
             wire(mc);
         }
+        for (String id : motionPath()) {
+            runners.get(id).followMotionResets(watchdog::resets);
+        }
         for (MethodConfig mc : config.methods()) {
             upstreamInterfaces.put(mc.id(), upstream(mc.id(), new LinkedHashSet<>()));
             upstreamPlacements.put(mc.id(), upstreamPlacements(mc.id(), new LinkedHashSet<>()));
@@ -295,6 +298,36 @@ public final class MethodGraph implements AutoCloseable {
             }
         }
         return result;
+    }
+
+    /**
+     * The methods whose outputs lead, through other methods or directly, to a motion command channel: the ones
+     * that must forget their motion when the watchdog stops the robot.
+     */
+    private Set<String> motionPath() {
+        Set<String> found = new LinkedHashSet<>();
+        for (MethodConfig mc : config.methods()) {
+            boolean drives = mc.commands().values().stream().anyMatch(ref -> {
+                ChannelDescriptor d = links.get(ref.interfaceId()).channel(ref.channel());
+                return d != null && d.motion();
+            });
+            if (drives) {
+                feeding(mc.id(), found);
+            }
+        }
+        return found;
+    }
+
+    /** Adds the method and every method whose outputs feed it, directly or not. */
+    private void feeding(String methodId, Set<String> found) {
+        if (!found.add(methodId)) {
+            return;
+        }
+        for (Source s : config.method(methodId).orElseThrow().inputs().values()) {
+            if (s instanceof Source.MethodOutput mo) {
+                feeding(mo.methodId(), found);
+            }
+        }
     }
 
     /** The methods placed on workers that {@code methodId} depends on, itself included. */

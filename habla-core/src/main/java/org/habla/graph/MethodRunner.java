@@ -15,6 +15,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
+import java.util.function.LongSupplier;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.method.Input;
 import org.habla.method.Method;
@@ -58,6 +59,8 @@ final class MethodRunner implements MethodContext {
     private Thread thread;
     private RemotePlacement placement;
     private volatile boolean localStarted;
+    private LongSupplier motionResets;
+    private long motionResetsSeen;
 
     static final String TICK_PREFIX = "tick:";
 
@@ -132,6 +135,16 @@ final class MethodRunner implements MethodContext {
 
     boolean stale() {
         return stale;
+    }
+
+    /**
+     * Makes the method hear of motion resets ({@link MotionWatchdog}): before it handles anything that comes
+     * after one, it is told the robot was stopped. For methods whose outputs lead to a motion channel; call
+     * before {@link #start}.
+     */
+    void followMotionResets(LongSupplier resets) {
+        this.motionResets = resets;
+        this.motionResetsSeen = resets.getAsLong();
     }
 
     /**
@@ -279,6 +292,7 @@ final class MethodRunner implements MethodContext {
             Sample s = slot.poll();
             if (s != null) {
                 worked = true;
+                catchUpMotionReset();
                 long now = clock.nowMicros();
                 latency.record(now - s.sourceMicros());
                 handled.mark(now);
@@ -295,6 +309,7 @@ final class MethodRunner implements MethodContext {
                 break;
             }
             worked = true;
+            catchUpMotionReset();
             try {
                 turn.run();
             } finally {
@@ -302,6 +317,24 @@ final class MethodRunner implements MethodContext {
             }
         }
         return worked;
+    }
+
+    /**
+     * Tells the method of a motion reset it has not heard of yet. Read after the message was taken, so a message
+     * that came after a reset (a value written once control is back) always finds the reset told first.
+     */
+    private void catchUpMotionReset() {
+        LongSupplier resets = motionResets;
+        if (resets == null) {
+            return;
+        }
+        long now = resets.getAsLong();
+        if (now != motionResetsSeen) {
+            motionResetsSeen = now;
+            if (placement == null || localStarted) {
+                method.motionStopped();
+            }
+        }
     }
 
     /** Hands a sample to the worker while it is up, else to the local method if it runs, else drops it. */

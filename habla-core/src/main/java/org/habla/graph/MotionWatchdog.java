@@ -19,6 +19,7 @@ final class MotionWatchdog {
     private final EngineClock clock;
     private final List<InterfaceLink> links;
     private final AtomicLong trips = new AtomicLong();
+    private final AtomicLong resets = new AtomicLong();
     private volatile long lastWriteMicros;
     private volatile boolean armed;
     private volatile boolean tripped;
@@ -31,39 +32,49 @@ final class MotionWatchdog {
     }
 
     /** A control client wrote a value: motion is allowed again and the silence timer restarts. */
-    void controlWrite() {
+    synchronized void controlWrite() {
         lastWriteMicros = clock.nowMicros();
         armed = true;
         if (tripped) {
+            resets.incrementAndGet();
             tripped = false;
             LOG.info("motion watchdog: control is back, motion commands flow again");
         }
     }
 
     /** Called periodically by the engine. */
-    void check() {
+    synchronized void check() {
         if (armed && timeoutMicros > 0 && clock.nowMicros() - lastWriteMicros > timeoutMicros) {
             trip("no control value for " + timeoutMicros / 1_000 + " ms");
         }
     }
 
     /** A control client that had written values disconnected. */
-    void writerLeft() {
+    synchronized void writerLeft() {
         if (armed) {
             trip("a control client that drove the robot disconnected");
         }
     }
 
     /** Stops every motion now (also used at shutdown). */
-    void trip(String reason) {
+    synchronized void trip(String reason) {
         armed = false;
+        for (InterfaceLink link : links) {
+            link.oweStop(); // before anything can see the trip: no motion may pass ahead of the stop
+        }
         tripped = true;
+        resets.incrementAndGet();
         lastReason = reason;
         trips.incrementAndGet();
         LOG.warn("motion watchdog: stopping the robot: {}", reason);
         for (InterfaceLink link : links) {
             link.stopMotion();
         }
+    }
+
+    /** Motion resets so far: trips, and returns of control after one. */
+    long resets() {
+        return resets.get();
     }
 
     boolean allowsMotion() {

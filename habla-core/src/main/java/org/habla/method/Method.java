@@ -42,7 +42,8 @@ import org.slf4j.LoggerFactory;
  * ({@link #attach}, {@link #start}, {@link #deliver}, {@link #tick}, {@link #stop}) are the engine's
  * and check every transition; an exception thrown by a hook puts the method in {@code FAILED} with
  * one log line, and a failed method is handed nothing more. Subclasses fill the hooks
- * {@link #onStart}, {@link #onSample}, {@link #onTick} and {@link #onStop}.
+ * {@link #onStart}, {@link #onSample}, {@link #onTick} and {@link #onStop}; a method that keeps motion
+ * state (a held action, a speed ramp) also fills {@link #onMotionStopped}.
  */
 public abstract sealed class Method permits SensorActuatorMethod, ProcessingMethod, VirtualMethod {
 
@@ -155,6 +156,16 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
 
     /** Called once when the engine stops; release what {@link #onStart} took. */
     protected void onStop() throws Exception {
+    }
+
+    /**
+     * Called when the engine stopped the robot behind the method's back — the motion watchdog tripped — and
+     * again when control comes back after such a stop, each time before the method handles anything newer.
+     * Only methods whose outputs lead to a motion command channel are called. The robot stands: forget any
+     * motion being held or ramped, so that what the method says next is what the robot does (a method that
+     * emits only changes would otherwise stay silent when asked again for the motion it last sent).
+     */
+    protected void onMotionStopped() throws Exception {
     }
 
     // ---------------------------------------------------------------- helpers for method code
@@ -278,6 +289,15 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
         }
         currentSourceMicros = nowMicros;
         guard("tick", () -> onTick(nowMicros));
+    }
+
+    /** Engine only: the robot was stopped by the engine (or control came back after that), if running. */
+    public final void motionStopped() {
+        if (state != MethodState.RUNNING) {
+            return;
+        }
+        currentSourceMicros = context.nowMicros();
+        guard("forget its motion after a motion stop", this::onMotionStopped);
     }
 
     /** Engine only: runs a piece of method code (a background result) as a turn, if running. */

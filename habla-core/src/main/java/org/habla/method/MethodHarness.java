@@ -124,6 +124,12 @@ public final class MethodHarness {
         return push(input, value);
     }
 
+    /** Tells the method the engine stopped the robot (the motion watchdog tripped, or control came back). */
+    public MethodHarness motionStopped() {
+        method.motionStopped();
+        return this;
+    }
+
     /** Moves the clock forward, running every tick that falls due on the way. */
     public MethodHarness advanceMillis(long millis) {
         long target = nowMicros + millis * 1000;

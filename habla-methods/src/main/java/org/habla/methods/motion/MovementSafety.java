@@ -143,6 +143,16 @@ public final class MovementSafety extends ProcessingMethod {
         }
     }
 
+    /** The engine stopped the robot: nothing is wanted any more, and the next motion is decided afresh. */
+    @Override
+    protected void onMotionStopped() {
+        wanted = false;
+        wantedV = 0;
+        wantedW = 0;
+        lastSent = null;
+        veto = "";
+    }
+
     /** Vetoes begun since start. */
     public long vetoes() {
         return vetoes;

@@ -68,6 +68,17 @@ class MovementSafetyTest {
     }
 
     @Test
+    void afterAMotionStopTheOldMotionNeverComesBackAndTheSameOneAskedAgainGoesOut() {
+        MethodHarness h = safety();
+        h.push("nearest", nearest(1.0, 3.0)).push("motion", VectorValue.of(0.2, 0)).clear();
+        h.motionStopped();
+        h.push("nearest", nearest(0.2, 3.0)).push("nearest", nearest(1.0, 3.0)).advanceMillis(500);
+        assertThat(h.values("motion")).as("nothing wanted since the stop").isEmpty();
+        h.push("nearest", nearest(1.0, 3.0)).push("motion", VectorValue.of(0.2, 0));
+        assertThat(h.values("motion")).containsExactly(VectorValue.of(0.2, 0));
+    }
+
+    @Test
     void theLimitsInputScalesTheMotion() {
         MethodHarness h = safety();
         h.push("limits", RecordValue.builder().put("maxVelMps", 0.1).build());

@@ -1,0 +1,175 @@
+package org.habla.methods.chain;
+
+import static java.nio.charset.StandardCharsets.UTF_8;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.util.function.Predicate;
+import org.habla.config.ConfigLoader;
+import org.habla.daemon.Daemon;
+import org.habla.graph.EngineClock;
+import org.habla.plugin.PluginRegistry;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/**
+ * The action socket of the Pioneer's chain (action → movement-safety → motion-composition → wheels) in a real
+ * daemon, against a robot behind HABLA's interface protocol: what a control client is told and what the robot
+ * is sent never disagree.
+ */
+@Timeout(60)
+class ActionObedienceTest {
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    private static final String CHANNELS = """
+            [{"name": "sonar", "direction": "reading", "kind": "vector", "unit": "m",
+              "meta": {"maxRangeM": 5.0, "poses": [{"xM": 0.2, "yM": 0, "thetaRad": 0},
+                        {"xM": 0, "yM": 0.2, "thetaRad": 1.5708}, {"xM": -0.2, "yM": 0, "thetaRad": 3.1416}]}},
+             {"name": "motion", "direction": "command", "kind": "vector", "unit": "m/s, rad/s", "motion": true,
+              "meta": {"maxVelMps": 0.3, "maxRotVelRadps": 1.0}}]""";
+
+    private static final String CONFIG = """
+            {"system": "action-obedience-test", "safety": {"watchdogMs": 0}, "status": {"port": 0},
+             "interfaces": [{"id": "robot", "driver": "habla", "address": "127.0.0.1:%d",
+                             "params": {"channels": %s}}],
+             "methods": [
+              {"id": "sonar", "type": "sonar", "layer": "sensors_actuators", "inputs": {"ranges": "@robot.sonar"}},
+              {"id": "nearest", "type": "nearest-distance", "layer": "processing", "inputs": {"scan": "sonar.scan"}},
+              {"id": "action", "type": "action", "layer": "virtual", "inputs": {"action": "control"},
+               "params": {"forwardMps": 0.25, "durationMs": 30000}, "expose": {"port": %d, "name": "action"}},
+              {"id": "safety", "type": "movement-safety", "layer": "processing",
+               "inputs": {"motion": "action.motion", "nearest": "nearest.nearest"},
+               "params": {"stopDistanceM": 0.25}},
+              {"id": "compose", "type": "motion-composition", "layer": "processing",
+               "inputs": {"motion": "safety.motion"}},
+              {"id": "wheels", "type": "wheels", "layer": "sensors_actuators",
+               "inputs": {"motion": "compose.motion"}, "commands": {"motion": "@robot.motion"}}]}
+            """;
+
+    private InterfaceRobot robot;
+    private Daemon daemon;
+
+    @BeforeEach
+    void start() throws Exception {
+        String hello = "{\"type\":\"hello\",\"protocol\":\"habla-interface/1\",\"robot\":\"rover\",\"channels\":"
+                + CHANNELS + "}";
+        robot = new InterfaceRobot(hello.replaceAll("\\s+", " "), 3.0, 2.0, 4.0);
+        PluginRegistry registry = PluginRegistry.discover();
+        daemon = Daemon.start(new ConfigLoader(registry).parse(CONFIG.formatted(robot.port(), CHANNELS, freePort())),
+                registry, EngineClock.system());
+    }
+
+    @AfterEach
+    void stop() throws IOException {
+        if (daemon != null) {
+            daemon.close();
+        }
+        robot.close();
+    }
+
+    @Test
+    void afterTheWatchdogStoppedTheRobotTheSameLabelAgainMovesItAndTheSocketSaysSo() throws Exception {
+        try (Client first = new Client(daemon.port("action"))) {
+            first.send("{\"value\":\"forward\",\"id\":1}");
+            first.next(n -> n.path("type").asText().equals("ok"));
+            awaitCommand(v -> Math.abs(v - 0.25) < 1e-9, "the ramp reaches the forward speed");
+        }
+        // The client that drove the robot left: the watchdog stops it.
+        assertThat(robot.next("stop", 5_000)).as("the watchdog's stop").isNotNull();
+        try (Client second = new Client(daemon.port("action"))) {
+            JsonNode motion = second.latest("motion", 5_000, m -> m.get(0).asDouble() == 0);
+            assertThat(motion).as("the action socket says the robot stands").isNotNull();
+            second.send("{\"value\":\"forward\",\"id\":2}");
+            second.next(n -> n.path("type").asText().equals("ok"));
+            double v = awaitCommand(x -> x > 0, "the same label moves the robot again");
+            assertThat(v).as("ramped up again from rest").isLessThan(0.25);
+            awaitCommand(x -> Math.abs(x - 0.25) < 1e-9, "back at the forward speed");
+        }
+    }
+
+    /** The forward speed of the next motion command that satisfies {@code wanted}, within 5 s. */
+    private double awaitCommand(Predicate<Double> wanted, String what) throws InterruptedException {
+        long end = System.nanoTime() + 5_000_000_000L;
+        while (System.nanoTime() < end) {
+            JsonNode cmd = robot.next("command", Math.max(1, (end - System.nanoTime()) / 1_000_000));
+            if (cmd != null && wanted.test(cmd.path("value").get(0).asDouble())) {
+                return cmd.path("value").get(0).asDouble();
+            }
+        }
+        throw new AssertionError("no motion command within 5 s: " + what);
+    }
+
+    private static int freePort() throws Exception {
+        try (ServerSocket s = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            return s.getLocalPort();
+        }
+    }
+
+    /** A control client of one socket: lines out, JSON lines in, every read bounded. */
+    static final class Client implements AutoCloseable {
+        private final Socket socket;
+        private final BufferedReader in;
+
+        Client(int port) throws IOException {
+            socket = new Socket("127.0.0.1", port);
+            socket.setSoTimeout(5_000);
+            in = new BufferedReader(new InputStreamReader(socket.getInputStream(), UTF_8));
+        }
+
+        void send(String line) throws IOException {
+            socket.getOutputStream().write((line + "\n").getBytes(UTF_8));
+            socket.getOutputStream().flush();
+        }
+
+        /** The next line that matches, among at most 1 000 (each within 5 s). */
+        JsonNode next(Predicate<JsonNode> wanted) throws IOException {
+            for (int i = 0; i < 1_000; i++) {
+                String line = in.readLine();
+                if (line == null) {
+                    throw new AssertionError("the socket closed");
+                }
+                JsonNode n = JSON.readTree(line);
+                if (wanted.test(n)) {
+                    return n;
+                }
+            }
+            throw new AssertionError("no matching line among 1 000");
+        }
+
+        /** Asks for the latest samples until {@code output}'s value satisfies {@code wanted}; null after the wait. */
+        JsonNode latest(String output, long millis, Predicate<JsonNode> wanted) throws IOException, InterruptedException {
+            long end = System.nanoTime() + millis * 1_000_000;
+            int id = 1000;
+            while (System.nanoTime() < end) {
+                send("{\"op\":\"latest\",\"id\":" + ++id + "}");
+                JsonNode found = null;
+                for (JsonNode n = next(x -> true); !n.path("type").asText().equals("ok"); n = next(x -> true)) {
+                    if (n.path("type").asText().equals("sample") && n.path("output").asText().equals(output)
+                            && wanted.test(n.path("value"))) {
+                        found = n.path("value");
+                    }
+                }
+                if (found != null) {
+                    return found;
+                }
+                Thread.sleep(20);
+            }
+            return null;
+        }
+
+        @Override
+        public void close() throws IOException {
+            socket.close();
+        }
+    }
+}
