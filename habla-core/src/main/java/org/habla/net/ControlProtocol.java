@@ -138,8 +138,9 @@ final class ControlProtocol {
                             "no input " + named + "; inputs are " + names(inputs)));
         }
         Payload value = SampleCodec.value(request, input.kind());
-        replies.wrote();
         point.write(input, value);
+        // Only a value the engine took drove anything: a refused write leaves nothing for the watchdog to stop.
+        replies.wrote();
     }
 
     private void latest(Replies replies) throws InterruptedException {

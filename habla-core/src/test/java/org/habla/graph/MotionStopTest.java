@@ -145,6 +145,34 @@ class MotionStopTest {
         assertThat(again.next(5_000)).isEqualTo("cmd motor 0.25");
     }
 
+    @Test
+    void aClientWhoseWriteWasRefusedLeavesWithoutStoppingTheRobot() throws Exception {
+        FakeLineRobot robot = new FakeLineRobot(0);
+        toClose.add(robot);
+        MethodGraph g = start(robot, 0);
+        ControlServer server = new ControlServer(cmd(g), new Expose("cmd", "127.0.0.1", 0), Limits.DEFAULTS);
+        toClose.add(server);
+        server.start();
+        try (Client driver = new Client(server.port())) {
+            try (Client refused = new Client(server.port())) {
+                refused.send("{\"value\": 500, \"id\": 1}");
+                assertThat(refused.next("error").path("code").asText()).isEqualTo("bad_value");
+                driver.send("{\"value\": 0.5, \"id\": 2}");
+                driver.next("ok");
+                assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.5");
+            }
+            long end = System.nanoTime() + 5_000_000_000L;
+            while (server.clientCount() > 1 && System.nanoTime() < end) {
+                Thread.sleep(5);
+            }
+            assertThat(server.clientCount()).as("the refused client is gone").isEqualTo(1);
+            driver.send("{\"value\": 0.25, \"id\": 3}");
+            driver.next("ok");
+            assertThat(robot.next(5_000)).as("no stop came between").isEqualTo("cmd motor 0.25");
+            assertThat(g.status().path("watchdog").path("trips").asLong()).isZero();
+        }
+    }
+
     /** A control client over loopback: lines out, JSON lines in, each read within 5 s. */
     private static final class Client implements AutoCloseable {
         private final Socket socket;
