@@ -18,7 +18,11 @@ import org.habla.sample.Payload;
  */
 public interface LinkSession {
 
-    /** Runs the connection's opening exchange (e.g. SYNC0/1/2, OPEN, ENABLE). Reads time out. */
+    /**
+     * Runs the connection's opening exchange (e.g. SYNC0/1/2, OPEN, ENABLE). Reads time out. A session that
+     * carries a motion channel leaves the robot still: a robot may remember the speeds of an earlier session
+     * and resume them, so the opening exchange stops it before it enables anything.
+     */
     default void handshake(InputStream in, OutputStream out, ReadingSink sink) throws IOException {
     }
 
