@@ -25,10 +25,13 @@ final class ExposedMethod implements ControlPoint {
     private final GraphTap tap;
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     private final Map<String, Long> controlSequences = new HashMap<>();
+    private final boolean actuating;
 
+    /** @param actuating whether values written here can reach a command channel */
     ExposedMethod(MethodRunner runner, Expose expose, List<Input<?>> controlInputs, MotionWatchdog watchdog,
-            GraphTap tap) {
+            GraphTap tap, boolean actuating) {
         this.runner = runner;
+        this.actuating = actuating && !controlInputs.isEmpty();
         this.expose = expose;
         this.controlInputs = List.copyOf(controlInputs);
         this.watchdog = watchdog;
@@ -70,6 +73,16 @@ final class ExposedMethod implements ControlPoint {
     @Override
     public List<Input<?>> controlInputs() {
         return controlInputs;
+    }
+
+    @Override
+    public boolean actuating() {
+        return actuating;
+    }
+
+    @Override
+    public long controlLapseMillis() {
+        return watchdog.timeoutMillis();
     }
 
     @Override
@@ -124,7 +137,9 @@ final class ExposedMethod implements ControlPoint {
         synchronized (controlSequences) {
             seq = controlSequences.merge(input.name(), 1L, Long::sum);
         }
-        watchdog.controlWrite();
+        if (actuating) {
+            watchdog.controlWrite();
+        }
         Sample sample = new Sample(value, "control:" + expose.name(), seq, runner.nowMicros(), false);
         tap.control(expose.name(), input.name(), sample);
         if (!runner.slot(input).offer(sample)) {
@@ -135,8 +150,10 @@ final class ExposedMethod implements ControlPoint {
 
     @Override
     public void writerLeft() {
-        tap.writerLeft(expose.name());
-        watchdog.writerLeft();
+        if (actuating) {
+            tap.writerLeft(expose.name());
+            watchdog.writerLeft();
+        }
     }
 
     static List<Input<?>> controlInputsOf(MethodRunner runner, Map<String, ?> controlSources) {

@@ -190,6 +190,12 @@ public final class MethodGraph implements AutoCloseable {
         return false;
     }
 
+    /** Whether the method, or one its outputs feed, writes an interface's command channel. */
+    private boolean actuates(String methodId) {
+        return downstream(methodId, new LinkedHashSet<>()).stream()
+                .anyMatch(id -> !config.method(id).orElseThrow().commands().isEmpty());
+    }
+
     /** The method and every method its outputs feed, directly or not. */
     private Set<String> downstream(String methodId, Set<String> found) {
         if (!found.add(methodId)) {
@@ -281,7 +287,7 @@ public final class MethodGraph implements AutoCloseable {
             runner.port(out).subscribe(sample -> link.command(channel, sample));
         }
         mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner,
-                x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap)));
+                x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap, actuates(mc.id()))));
     }
 
     private Set<String> upstream(String methodId, Set<String> visited) {

@@ -7,8 +7,8 @@ import org.slf4j.LoggerFactory;
 
 /**
  * Stops the robot when its control architecture goes quiet or away. Armed by the first value a
- * control client writes; trips when no value has come for the timeout, or at once when a client
- * that wrote values disconnects. A trip sends every link's stop and then drops motion commands
+ * control client writes to an actuating socket; trips when no value has come for the timeout, or at once
+ * when the client commanding such a socket disconnects or releases control. A trip sends every link's stop and then drops motion commands
  * until a control client writes again, so nothing queued before the trip moves the robot later.
  */
 final class MotionWatchdog {
@@ -49,10 +49,10 @@ final class MotionWatchdog {
         }
     }
 
-    /** A control client that had written values disconnected. */
+    /** The client commanding an actuating socket disconnected or gave control back. */
     synchronized void writerLeft() {
         if (armed) {
-            trip("a control client that drove the robot disconnected");
+            trip("the control client commanding the robot left or released control");
         }
     }
 

@@ -47,8 +47,21 @@ public interface ControlPoint {
      */
     void write(Input<?> input, Payload value) throws Rejected;
 
-    /** Tells the engine a client that had written values went away (the motion watchdog acts on it). */
+    /** Tells the engine the client that commanded this socket went away or gave control back: stop the robot. */
     void writerLeft();
+
+    /**
+     * Whether values written here can reach a robot's command channel. Such a socket has one commander at a time
+     * ({@code ControlLease}); writing to it counts for the motion watchdog.
+     */
+    default boolean actuating() {
+        return false;
+    }
+
+    /** How long the commander of an actuating socket may stay silent before control lapses; 0 for never. */
+    default long controlLapseMillis() {
+        return 0;
+    }
 
     /** Receives what an exposed method emits. */
     interface Listener {

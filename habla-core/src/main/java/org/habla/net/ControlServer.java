@@ -41,6 +41,7 @@ public final class ControlServer implements AutoCloseable {
     private final Expose expose;
     private final Limits limits;
     private final ControlProtocol protocol;
+    private final ControlLease lease;
     private final List<ControlClient> clients = new CopyOnWriteArrayList<>();
     private final Counters counters = new Counters();
     private final AtomicLong droppedByGone = new AtomicLong();
@@ -61,7 +62,16 @@ public final class ControlServer implements AutoCloseable {
         this.point = Objects.requireNonNull(point, "point");
         this.expose = Objects.requireNonNull(expose, "expose");
         this.limits = Objects.requireNonNull(limits, "limits");
-        this.protocol = new ControlProtocol(point, limits);
+        this.lease = point.actuating() ? new ControlLease(point.name(), point.controlLapseMillis(),
+                () -> System.currentTimeMillis() * 1_000, point::writerLeft, this::tellEveryone) : null;
+        this.protocol = new ControlProtocol(point, limits, lease);
+    }
+
+    /** A notice to every client (who commands the socket changed). */
+    private void tellEveryone(Frame notice) {
+        for (ControlClient c : clients) {
+            c.offerNotice(notice);
+        }
     }
 
     /** Binds the port and starts accepting clients. */
@@ -100,13 +110,16 @@ public final class ControlServer implements AutoCloseable {
         return clients.size();
     }
 
-    /** Clients now and in total, refused connections, lines each way, dropped samples and protocol errors. */
+    /**
+     * Clients now and in total, refused connections, lines each way, dropped samples and protocol errors; on an
+     * actuating socket, who commands it ({@code control}).
+     */
     public ObjectNode stats() {
         long dropped = droppedByGone.get();
         for (ControlClient c : clients) {
             dropped += c.dropped();
         }
-        return JsonNodeFactory.instance.objectNode()
+        ObjectNode stats = JsonNodeFactory.instance.objectNode()
                 .put("socket", point.name())
                 .put("port", listener == null ? expose.port() : port())
                 .put("clients", clients.size())
@@ -116,6 +129,10 @@ public final class ControlServer implements AutoCloseable {
                 .put("linesOut", counters.linesOut.get())
                 .put("dropped", dropped)
                 .put("errors", counters.errors.get());
+        if (lease != null) {
+            stats.set("control", lease.status());
+        }
+        return stats;
     }
 
     @Override
@@ -177,7 +194,9 @@ public final class ControlServer implements AutoCloseable {
         counters.connections.incrementAndGet();
         String label = "control-" + point.name() + "-" + n;
         ControlClient[] self = new ControlClient[1];
-        self[0] = new ControlClient(socket, label, point, protocol, limits, counters, () -> {
+        ClientId id = new ClientId(point.name() + "#" + n,
+                socket.getInetAddress().getHostAddress() + ":" + socket.getPort());
+        self[0] = new ControlClient(socket, label, id, point, protocol, limits, counters, () -> {
             if (clients.remove(self[0])) {
                 droppedByGone.addAndGet(self[0].dropped());
             }

@@ -57,6 +57,8 @@ final class FakeControlPoint implements ControlPoint {
     private final AtomicLong seq = new AtomicLong();
     private volatile boolean stale;
     private volatile Rejected rejectNext;
+    private volatile boolean actuating;
+    private volatile long lapseMillis;
     final BlockingQueue<Written> writes = new LinkedBlockingQueue<>();
     final AtomicInteger writersLeft = new AtomicInteger();
 
@@ -68,6 +70,24 @@ final class FakeControlPoint implements ControlPoint {
     /** A method with outputs of every kind and two control inputs. */
     static FakeControlPoint twoWay() {
         return new FakeControlPoint("tracker", true, false);
+    }
+
+    /** The same, but what is written reaches an actuator: one commander at a time, lapsing after silence. */
+    static FakeControlPoint commanded(long lapseMillis) {
+        FakeControlPoint p = new FakeControlPoint("tracker", true, false);
+        p.actuating = true;
+        p.lapseMillis = lapseMillis;
+        return p;
+    }
+
+    @Override
+    public boolean actuating() {
+        return actuating;
+    }
+
+    @Override
+    public long controlLapseMillis() {
+        return lapseMillis;
     }
 
     @Override

@@ -97,6 +97,39 @@ class ActionObedienceTest {
         }
     }
 
+    @Test
+    void aSecondClientIsRefusedUntilItTakesControlAndTheStatusNamesTheCommander() throws Exception {
+        try (Client first = new Client(daemon.port("action")); Client second = new Client(daemon.port("action"))) {
+            first.send("{\"value\":\"forward\",\"id\":1}");
+            first.next(n -> n.path("type").asText().equals("ok"));
+            JsonNode control = socketStatus("action").path("control");
+            assertThat(control.path("holder").path("connection").asText()).isEqualTo("action#1");
+            second.send("{\"value\":\"back\",\"id\":2}");
+            JsonNode busy = second.next(n -> n.path("type").asText().equals("error"));
+            assertThat(busy.path("code").asText()).isEqualTo("busy");
+            assertThat(busy.path("message").asText()).contains("action#1", "since");
+            second.send("{\"op\":\"take\",\"id\":3}");
+            second.next(n -> n.path("type").asText().equals("ok"));
+            JsonNode told = first.next(n -> n.path("type").asText().equals("control")
+                    && n.path("holder").path("connection").asText().equals("action#2"));
+            assertThat(told.path("why").asText()).contains("taken from action#1");
+            second.send("{\"value\":\"back\",\"id\":4}");
+            second.next(n -> n.path("type").asText().equals("ok"));
+            awaitCommand(v -> v < 0, "the new commander backs the robot");
+            assertThat(socketStatus("action").path("control").path("holder").path("connection").asText())
+                    .isEqualTo("action#2");
+        }
+    }
+
+    private JsonNode socketStatus(String name) {
+        for (JsonNode s : daemon.status().path("sockets")) {
+            if (s.path("socket").asText().equals(name)) {
+                return s;
+            }
+        }
+        throw new AssertionError("no socket " + name + " in the status");
+    }
+
     /** The forward speed of the next motion command that satisfies {@code wanted}, within 5 s. */
     private double awaitCommand(Predicate<Double> wanted, String what) throws InterruptedException {
         long end = System.nanoTime() + 5_000_000_000L;
