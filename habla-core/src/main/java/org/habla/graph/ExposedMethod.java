@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.habla.config.Expose;
+import org.habla.method.ControlNotice;
 import org.habla.method.Input;
 import org.habla.method.Layer;
 import org.habla.method.MethodState;
@@ -100,6 +101,13 @@ final class ExposedMethod implements ControlPoint {
     @Override
     public boolean stale() {
         return runner.stale();
+    }
+
+    /** Tells every client what a method its values reach has to say about them. */
+    void notice(ControlNotice notice) {
+        for (Listener l : listeners) {
+            l.onNotice(notice);
+        }
     }
 
     /** Tells every client that staleness changed. */

@@ -102,6 +102,7 @@ public final class MethodGraph implements AutoCloseable {
         for (MethodConfig mc : config.methods()) {
             wire(mc);
         }
+        routeNotices();
         for (String id : motionPath()) {
             runners.get(id).followMotionResets(watchdog::resets);
         }
@@ -304,6 +305,17 @@ public final class MethodGraph implements AutoCloseable {
             }
         }
         return result;
+    }
+
+    /** Sends what each method tells control clients to the sockets whose values reach it. */
+    private void routeNotices() {
+        for (MethodRunner r : runners.values()) {
+            List<ExposedMethod> told = exposed.stream().filter(x -> !x.controlInputs().isEmpty()
+                    && downstream(x.methodId(), new LinkedHashSet<>()).contains(r.id())).toList();
+            if (!told.isEmpty()) {
+                r.tellControlVia(notice -> told.forEach(x -> x.notice(notice)));
+            }
+        }
     }
 
     /**

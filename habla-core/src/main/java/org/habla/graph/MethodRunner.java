@@ -17,6 +17,7 @@ import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import org.habla.driver.ChannelDescriptor;
+import org.habla.method.ControlNotice;
 import org.habla.method.Input;
 import org.habla.method.Method;
 import org.habla.method.MethodContext;
@@ -59,6 +60,7 @@ final class MethodRunner implements MethodContext {
     private Thread thread;
     private RemotePlacement placement;
     private volatile boolean localStarted;
+    private volatile Consumer<ControlNotice> controlNotices = n -> { };
     private LongSupplier motionResets;
     private long motionResetsSeen;
 
@@ -370,6 +372,16 @@ final class MethodRunner implements MethodContext {
             throw new IllegalArgumentException(output + " of " + id + " cannot carry " + value.kind().wireName());
         }
         ports.get(output).publish(value, sourceMicros, stale);
+    }
+
+    /** Where the method's notices to control clients go (the exposed methods whose values reach it). */
+    void tellControlVia(Consumer<ControlNotice> sink) {
+        controlNotices = sink;
+    }
+
+    @Override
+    public void tellControl(ControlNotice notice) {
+        controlNotices.accept(notice);
     }
 
     @Override

@@ -206,6 +206,15 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
         return context().commandChannelOf(output);
     }
 
+    /**
+     * Tells the control clients whose values reach this method something about what they asked — a move vetoed,
+     * and why — as a {@code notice} line on their sockets, stamped with the source time of the message being
+     * handled (for a value a client wrote, the time of that write). See {@link ControlNotice}.
+     */
+    protected final void tellControl(String notice, String message, org.habla.sample.RecordValue detail) {
+        context().tellControl(new ControlNotice(notice, id(), message, detail, currentSourceMicros));
+    }
+
     /** Reports whether the method can do its work yet. */
     protected final void readiness(boolean ready, String detail) {
         context().readiness(ready, detail);

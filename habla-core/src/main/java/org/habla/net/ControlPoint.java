@@ -2,6 +2,7 @@ package org.habla.net;
 
 import java.util.List;
 import java.util.Map;
+import org.habla.method.ControlNotice;
 import org.habla.method.Input;
 import org.habla.method.Layer;
 import org.habla.method.Output;
@@ -68,6 +69,10 @@ public interface ControlPoint {
         void onSample(Output<?> output, Sample sample);
 
         void onStale(boolean stale, String why);
+
+        /** A method the socket's values reach tells its clients something about what they asked. */
+        default void onNotice(ControlNotice notice) {
+        }
     }
 
     /** Ends a subscription. */

@@ -14,6 +14,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import org.habla.config.Expose;
 import org.habla.config.Limits;
+import org.habla.method.ControlNotice;
 import org.habla.method.Output;
 import org.habla.sample.Sample;
 import org.slf4j.Logger;
@@ -231,6 +232,21 @@ public final class ControlServer implements AutoCloseable {
             }
             for (ControlClient c : clients) {
                 c.offerSample(output.name(), frame);
+            }
+        }
+
+        @Override
+        public void onNotice(ControlNotice notice) {
+            ObjectNode line = JsonNodeFactory.instance.objectNode()
+                    .put("type", "notice")
+                    .put("notice", notice.notice())
+                    .put("method", notice.methodId())
+                    .put("t", notice.sourceMicros())
+                    .put("message", notice.message());
+            line.set("detail", notice.detail().json());
+            Frame frame = Frame.of(line);
+            for (ControlClient c : clients) {
+                c.offerNotice(frame);
             }
         }
 

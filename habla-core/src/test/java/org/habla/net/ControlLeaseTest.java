@@ -169,6 +169,27 @@ class ControlLeaseTest {
     }
 
     @Test
+    void aNoticeFromAMethodTheValuesReachGoesToEveryClientWithTheTimeOfTheWrite() throws Exception {
+        FakeControlPoint point = FakeControlPoint.commanded(0);
+        ControlServer server = serve(point);
+        TestClient first = connect(server);
+        TestClient second = connect(server);
+        await("both clients are in", () -> server.clientCount() == 2);
+        point.notice(new org.habla.method.ControlNotice("veto", "safety",
+                "forward motion vetoed: obstacle 0.20 m ahead (stop distance 0.25 m)",
+                org.habla.sample.RecordValue.builder().put("reason", "obstacle_ahead").put("stopDistanceM", 0.25).build(),
+                1_700_000_000_123_456L));
+        for (TestClient c : List.of(first, second)) {
+            JsonNode n = c.next("notice").header();
+            assertThat(n.path("notice").asText()).isEqualTo("veto");
+            assertThat(n.path("method").asText()).isEqualTo("safety");
+            assertThat(n.path("t").asLong()).isEqualTo(1_700_000_000_123_456L);
+            assertThat(n.path("message").asText()).contains("stop distance 0.25 m");
+            assertThat(n.path("detail").path("reason").asText()).isEqualTo("obstacle_ahead");
+        }
+    }
+
+    @Test
     void aSocketWhoseValuesMoveNothingHasNoControlToTake() throws Exception {
         FakeControlPoint point = FakeControlPoint.twoWay();
         ControlServer server = serve(point);

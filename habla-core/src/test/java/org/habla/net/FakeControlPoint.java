@@ -165,6 +165,13 @@ final class FakeControlPoint implements ControlPoint {
         }
     }
 
+    /** Tells every listener a notice, as a method the socket's values reach would. */
+    void notice(org.habla.method.ControlNotice notice) {
+        for (Listener l : listeners) {
+            l.onNotice(notice);
+        }
+    }
+
     void rejectNext(String code, String message) {
         rejectNext = new Rejected(code, message);
     }

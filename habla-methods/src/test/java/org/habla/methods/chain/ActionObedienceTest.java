@@ -121,6 +121,34 @@ class ActionObedienceTest {
         }
     }
 
+    @Test
+    void aMoveVetoedByMovementSafetyIsToldToTheClientWithTheReasonAndTheLimit() throws Exception {
+        robot.ranges(0.1, 2.0, 4.0); // a wall right ahead
+        try (Client client = new Client(daemon.port("action"))) {
+            // Until the nearest record of the new ranges is in, the veto may name missing range data instead.
+            JsonNode veto = null;
+            for (int id = 1; id < 100 && veto == null; id++) {
+                client.send("{\"value\":\"forward\",\"id\":" + id + "}");
+                JsonNode echo = client.next(n -> n.path("type").asText().equals("sample")
+                        && n.path("output").asText().equals("action"));
+                JsonNode notice = client.next(n -> n.path("type").asText().equals("notice"));
+                assertThat(notice.path("t").asLong()).as("the notice is the write's").isEqualTo(echo.path("t").asLong());
+                if (notice.path("detail").path("reason").asText().equals("obstacle_ahead")) {
+                    veto = notice;
+                }
+            }
+            assertThat(veto).as("a veto naming the obstacle").isNotNull();
+            assertThat(veto.path("notice").asText()).isEqualTo("veto");
+            assertThat(veto.path("method").asText()).isEqualTo("safety");
+            assertThat(veto.path("message").asText()).contains("forward motion vetoed", "stop distance 0.25 m");
+            assertThat(veto.path("detail").path("stopDistanceM").asDouble()).isEqualTo(0.25);
+            assertThat(veto.path("detail").path("obstacleM").asDouble()).isLessThan(0.25);
+            JsonNode cmd = robot.next("command", 300);
+            assertThat(cmd == null || cmd.path("value").get(0).asDouble() == 0).as("nothing drives the robot: %s", cmd)
+                    .isTrue();
+        }
+    }
+
     private JsonNode socketStatus(String name) {
         for (JsonNode s : daemon.status().path("sockets")) {
             if (s.path("socket").asText().equals(name)) {
