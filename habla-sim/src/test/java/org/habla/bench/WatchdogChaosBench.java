@@ -103,11 +103,12 @@ final class WatchdogChaosBench {
                 throw new IllegalStateException("the simulator refused the reset: " + reply);
             }
             try (Client client = new Client(port)) {
-                long event = client.driveToCruise(sim.scene().body());
-                if (event < 0) {
+                long lastWrite = client.driveToCruise(sim.scene().body());
+                if (lastWrite < 0) {
                     failed++;
                     continue;
                 }
+                long event = disconnect ? System.nanoTime() : lastWrite;
                 watch.arm(event);
                 if (disconnect) {
                     client.close();
