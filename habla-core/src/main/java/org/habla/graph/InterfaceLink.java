@@ -57,6 +57,8 @@ final class InterfaceLink {
     private volatile ObjectNode robotInfo = JsonNodeFactory.instance.objectNode();
     private volatile MotionWatchdog watchdog;
     private volatile boolean up;
+    /** When the link last went up or down (engine clock, µs); its start until the first change. */
+    private volatile long sinceMicros;
     private AutoCloseable linkTicker;
 
     /**
@@ -114,6 +116,7 @@ final class InterfaceLink {
     }
 
     void start() {
+        sinceMicros = clock.nowMicros();
         for (ConnectionLink c : connections) {
             c.start();
         }
@@ -201,6 +204,7 @@ final class InterfaceLink {
     void replayLink(boolean isUp) {
         if (isUp != up) {
             up = isUp;
+            sinceMicros = clock.nowMicros();
             tap.link(config.id(), isUp, clock.nowMicros());
             for (Consumer<Boolean> l : stateListeners) {
                 l.accept(isUp);
@@ -267,6 +271,7 @@ final class InterfaceLink {
         boolean all = connections.stream().allMatch(ConnectionLink::up);
         if (all != up) {
             up = all;
+            sinceMicros = clock.nowMicros();
             tap.link(config.id(), all, clock.nowMicros());
             publishLink();
             for (Consumer<Boolean> l : stateListeners) {
@@ -299,6 +304,7 @@ final class InterfaceLink {
         n.put("driver", config.driver());
         n.put("address", config.address().toString());
         n.put("up", up);
+        n.put("sinceMicros", sinceMicros);
         if (replayed) {
             n.put("replayed", true);
         }
