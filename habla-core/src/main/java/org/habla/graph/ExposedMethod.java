@@ -87,6 +87,11 @@ final class ExposedMethod implements ControlPoint {
     }
 
     @Override
+    public long nowMicros() {
+        return runner.nowMicros();
+    }
+
+    @Override
     public Map<String, Sample> latest() {
         Map<String, Sample> m = new HashMap<>();
         for (Output<?> out : runner.method().outputs()) {

@@ -64,6 +64,11 @@ public interface ControlPoint {
         return 0;
     }
 
+    /** The engine's clock, in microseconds since the epoch (the clock of the samples' {@code t}). */
+    default long nowMicros() {
+        return System.currentTimeMillis() * 1_000;
+    }
+
     /** Receives what an exposed method emits. */
     interface Listener {
         void onSample(Output<?> output, Sample sample);

@@ -64,7 +64,7 @@ public final class ControlServer implements AutoCloseable {
         this.expose = Objects.requireNonNull(expose, "expose");
         this.limits = Objects.requireNonNull(limits, "limits");
         this.lease = point.actuating() ? new ControlLease(point.name(), point.controlLapseMillis(),
-                () -> System.currentTimeMillis() * 1_000, point::writerLeft, this::tellEveryone) : null;
+                point::nowMicros, point::writerLeft, this::tellEveryone) : null;
         this.protocol = new ControlProtocol(point, limits, lease);
     }
 
