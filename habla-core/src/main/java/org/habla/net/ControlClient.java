@@ -29,7 +29,6 @@ final class ControlClient implements ControlProtocol.Replies {
 
     private final Socket socket;
     private final String label;
-    private final ControlPoint point;
     private final ControlProtocol protocol;
     private final Limits limits;
     private final ControlServer.Counters counters;
@@ -39,12 +38,11 @@ final class ControlClient implements ControlProtocol.Replies {
     private final ClientId id;
     private volatile Thread writer;
 
-    ControlClient(Socket socket, String label, ClientId id, ControlPoint point, ControlProtocol protocol, Limits limits,
+    ControlClient(Socket socket, String label, ClientId id, ControlProtocol protocol, Limits limits,
             ControlServer.Counters counters, Runnable onClosed) {
         this.socket = socket;
         this.id = id;
         this.label = label;
-        this.point = point;
         this.protocol = protocol;
         this.limits = limits;
         this.counters = counters;

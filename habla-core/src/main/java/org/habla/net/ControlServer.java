@@ -197,7 +197,7 @@ public final class ControlServer implements AutoCloseable {
         ControlClient[] self = new ControlClient[1];
         ClientId id = new ClientId(point.name() + "#" + n,
                 socket.getInetAddress().getHostAddress() + ":" + socket.getPort());
-        self[0] = new ControlClient(socket, label, id, point, protocol, limits, counters, () -> {
+        self[0] = new ControlClient(socket, label, id, protocol, limits, counters, () -> {
             if (clients.remove(self[0])) {
                 droppedByGone.addAndGet(self[0].dropped());
             }
