@@ -14,6 +14,7 @@ import java.util.concurrent.atomic.LongAdder;
 import java.util.function.Consumer;
 import org.habla.config.InterfaceConfig;
 import org.habla.driver.ChannelDescriptor;
+import org.habla.driver.ClientConnection;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.ReadingSink;
@@ -43,8 +44,9 @@ final class InterfaceLink {
     private final GraphTap tap;
     private final Map<String, ChannelDescriptor> channels = new HashMap<>();
     private final Map<String, OutputPort> readings = new HashMap<>();
-    private final Map<String, ConnectionLink> commandRoutes = new HashMap<>();
-    private final List<ConnectionLink> connections = new ArrayList<>();
+    private final Map<String, String> unavailable = new java.util.concurrent.ConcurrentHashMap<>();
+    private final Map<String, Link> commandRoutes = new HashMap<>();
+    private final List<Link> connections = new ArrayList<>();
     private final List<Consumer<Boolean>> stateListeners = new ArrayList<>();
     private final boolean replayed;
     private final Sink sink = new Sink();
@@ -53,7 +55,7 @@ final class InterfaceLink {
     private final LongAdder commandsSent = new LongAdder();
     private final AtomicLong commandsDropped = new AtomicLong();
     private final Object motionLock = new Object();
-    private final Set<ConnectionLink> stopsOwed = new HashSet<>();
+    private final Set<Link> stopsOwed = new HashSet<>();
     private volatile ObjectNode robotInfo = JsonNodeFactory.instance.objectNode();
     private volatile MotionWatchdog watchdog;
     private volatile boolean up;
@@ -88,6 +90,18 @@ final class InterfaceLink {
                 commandRoutes.put(channel, link);
             }
         }
+        for (ClientConnection c : replayed ? List.<ClientConnection>of() : driver.clientConnections()) {
+            ClientLink link = new ClientLink(config.id(), c, config.reconnect(), sink, this::connectionChanged);
+            connections.add(link);
+            for (String channel : c.commandChannels()) {
+                commandRoutes.put(channel, link);
+            }
+        }
+    }
+
+    /** Why a reading channel's device is unavailable now (its link being up), or null when it is available. */
+    String unavailable(String channel) {
+        return unavailable.get(channel);
     }
 
     String id() {
@@ -117,7 +131,7 @@ final class InterfaceLink {
 
     void start() {
         sinceMicros = clock.nowMicros();
-        for (ConnectionLink c : connections) {
+        for (Link c : connections) {
             c.start();
         }
         linkTicker = clock.every(1_000_000, this::publishLink);
@@ -132,7 +146,7 @@ final class InterfaceLink {
                 LOG.debug("link ticker: {}", e.toString());
             }
         }
-        for (ConnectionLink c : connections) {
+        for (Link c : connections) {
             c.stop();
         }
     }
@@ -140,7 +154,7 @@ final class InterfaceLink {
     /** Sends a command sample from an actuator method to its channel. */
     void command(String channel, Sample sample) {
         ChannelDescriptor d = channels.get(channel);
-        ConnectionLink link = commandRoutes.get(channel);
+        Link link = commandRoutes.get(channel);
         if (d == null || (link == null && !replayed)) {
             drop(channel, "no connection carries it");
             return;
@@ -177,9 +191,9 @@ final class InterfaceLink {
         return w == null || w.allowsMotion();
     }
 
-    private void send(String channel, Sample sample, ConnectionLink link) {
+    private void send(String channel, Sample sample, Link link) {
         if (!link.command(channel, sample.payload())) {
-            refuse(channel, sample, "link " + config.id() + "/" + link.connection().name() + " is down");
+            refuse(channel, sample, "link " + config.id() + "/" + link.connectionName() + " is down");
             return;
         }
         tap.command(config.id(), channel, sample, true);
@@ -215,7 +229,7 @@ final class InterfaceLink {
     /** Owes a stop on every connection that carries a motion channel (see the class comment). */
     void oweStop() {
         synchronized (motionLock) {
-            for (ConnectionLink link : connections) {
+            for (Link link : connections) {
                 if (carriesMotion(link)) {
                     stopsOwed.add(link);
                 }
@@ -225,7 +239,7 @@ final class InterfaceLink {
 
     /** Pays the owed stops now, each connection from a thread of its own. */
     void stopMotion() {
-        for (ConnectionLink link : connections) {
+        for (Link link : connections) {
             if (carriesMotion(link)) {
                 Thread.ofVirtual().name("habla-stop-" + config.id()).start(() -> {
                     synchronized (motionLock) {
@@ -237,19 +251,19 @@ final class InterfaceLink {
     }
 
     /** Writes the stop owed on {@code link}, if any; it stays owed while the connection is down. */
-    private void payOwedStop(ConnectionLink link) {
+    private void payOwedStop(Link link) {
         if (stopsOwed.contains(link) && link.stopMotion()) {
             stopsOwed.remove(link);
         }
     }
 
-    private boolean carriesMotion(ConnectionLink link) {
-        return link.connection().commandChannels().stream().map(channels::get).anyMatch(c -> c != null && c.motion());
+    private boolean carriesMotion(Link link) {
+        return link.commandChannels().stream().map(channels::get).anyMatch(c -> c != null && c.motion());
     }
 
     /** Stops motion and waits briefly for the stop to be written (shutdown). */
     void stopMotionNow() {
-        for (ConnectionLink link : connections) {
+        for (Link link : connections) {
             if (carriesMotion(link)) {
                 synchronized (motionLock) {
                     if (link.stopMotion()) {
@@ -268,7 +282,11 @@ final class InterfaceLink {
     }
 
     private void connectionChanged() {
-        boolean all = connections.stream().allMatch(ConnectionLink::up);
+        boolean all = connections.stream().allMatch(Link::up);
+        if (all && !up) {
+            // A fresh session tells its devices' availability again.
+            unavailable.clear();
+        }
         if (all != up) {
             up = all;
             sinceMicros = clock.nowMicros();
@@ -286,9 +304,9 @@ final class InterfaceLink {
             return;
         }
         StringBuilder detail = new StringBuilder();
-        for (ConnectionLink c : connections) {
+        for (Link c : connections) {
             if (!c.up()) {
-                detail.append(detail.length() == 0 ? "" : "; ").append(c.connection().name()).append(" down")
+                detail.append(detail.length() == 0 ? "" : "; ").append(c.connectionName()).append(" down")
                         .append(c.lastError().isEmpty() ? "" : ": " + c.lastError());
             }
         }
@@ -315,6 +333,10 @@ final class InterfaceLink {
         n.put("unknownChannel", unknownChannel.sum());
         n.put("commandsSent", commandsSent.sum());
         n.put("commandsDropped", commandsDropped.get());
+        if (!unavailable.isEmpty()) {
+            ObjectNode un = n.putObject("unavailable");
+            unavailable.forEach(un::put);
+        }
         ObjectNode rs = n.putObject("readings");
         readings.forEach((name, port) -> rs.put(name, port.published()));
         return n;
@@ -350,6 +372,23 @@ final class InterfaceLink {
             long n = malformed.sum();
             if (n <= 10 || n % 1000 == 0) {
                 LOG.warn("interface {}: malformed input dropped ({} so far): {}", config.id(), n, what);
+            }
+        }
+
+        @Override
+        public void availability(String channel, boolean available, String why) {
+            if (!readings.containsKey(channel) || Driver.LINK_CHANNEL.name().equals(channel)) {
+                unknownChannel.increment();
+                return;
+            }
+            String before = available ? unavailable.remove(channel) : unavailable.put(channel, why);
+            if ((before == null) == available) {
+                return;
+            }
+            LOG.info("interface {}: the device of channel {} is {} ({})", config.id(), channel,
+                    available ? "available again" : "unavailable", why);
+            for (Consumer<Boolean> l : stateListeners) {
+                l.accept(up);
             }
         }
 

@@ -49,6 +49,8 @@ public final class Recorder implements GraphTap, AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(Recorder.class);
     private static final RecordedEvent STOP = new RecordedEvent.End(0, 0, 0);
+    /** Marks the point up to which {@link #flush} waits; never written. */
+    private static final RecordedEvent FLUSH = new RecordedEvent.End(0, 0, 0);
 
     private final Path file;
     private final EngineClock clock;
@@ -62,6 +64,7 @@ public final class Recorder implements GraphTap, AutoCloseable {
     private volatile boolean closed;
     private volatile boolean failed;
     private volatile long writerCpuAtEnd = -1;
+    private final java.util.concurrent.Semaphore flushed = new java.util.concurrent.Semaphore(0);
 
     private Recorder(Path file, EngineClock clock, OutputStream stream, EventFile out) {
         this.file = file;
@@ -183,6 +186,11 @@ public final class Recorder implements GraphTap, AutoCloseable {
                 if (e == STOP) {
                     break;
                 }
+                if (e == FLUSH) {
+                    out.flush();
+                    flushed.release();
+                    continue;
+                }
                 if (e != null) {
                     queuedBytes.addAndGet(-(e instanceof RecordedEvent.End ? 0 : bytesOf(e)));
                     out.write(e);
@@ -199,7 +207,9 @@ public final class Recorder implements GraphTap, AutoCloseable {
                 }
             }
             for (RecordedEvent e = queue.poll(); e != null; e = queue.poll()) {
-                if (e != STOP) {
+                if (e == FLUSH) {
+                    flushed.release();
+                } else if (e != STOP) {
                     out.write(e);
                     written.incrementAndGet();
                 }
@@ -230,6 +240,17 @@ public final class Recorder implements GraphTap, AutoCloseable {
             case RecordedEvent.Output o -> bytes(o.sample());
             default -> 0;
         };
+    }
+
+    /**
+     * Waits until every event offered before this call is written and handed to the operating system (for
+     * MCAP, its chunk is closed); false if the writer did not get there within {@code timeoutMillis}.
+     */
+    public boolean flush(long timeoutMillis) throws InterruptedException {
+        if (closed || failed || !queue.offer(FLUSH)) {
+            return false;
+        }
+        return flushed.tryAcquire(timeoutMillis, TimeUnit.MILLISECONDS);
     }
 
     /** Writes what is queued, then the end record, and closes the file. Safe to call twice. */

@@ -69,7 +69,7 @@ class McapRecordingTest {
                 r.periodic("tick:distance", clock.nowMicros(), i);
                 if (i % 5 == 0) {
                     r.writerLeft("action");
-                    Thread.sleep(Recorder.FLUSH_MILLIS + 30);   // so the writer closes a chunk here and there
+                    assertThat(r.flush(30_000)).as("the writer closed a chunk").isTrue();
                 }
             }
             r.link("robot", false, clock.nowMicros());
