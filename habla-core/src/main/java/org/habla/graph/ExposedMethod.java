@@ -12,6 +12,7 @@ import org.habla.method.Input;
 import org.habla.method.Layer;
 import org.habla.method.MethodState;
 import org.habla.method.Output;
+import org.habla.net.ControlLease;
 import org.habla.net.ControlPoint;
 import org.habla.sample.Payload;
 import org.habla.sample.Sample;
@@ -27,12 +28,15 @@ final class ExposedMethod implements ControlPoint {
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     private final Map<String, Long> controlSequences = new HashMap<>();
     private final boolean actuating;
+    private final ControlLease lease;
 
     /** @param actuating whether values written here can reach a command channel */
     ExposedMethod(MethodRunner runner, Expose expose, List<Input<?>> controlInputs, MotionWatchdog watchdog,
             GraphTap tap, boolean actuating) {
         this.runner = runner;
         this.actuating = actuating && !controlInputs.isEmpty();
+        this.lease = this.actuating ? new ControlLease(expose.name(), watchdog.timeoutMillis(), runner::nowMicros,
+                this::writerLeft, line -> listeners.forEach(l -> l.onControl(line))) : null;
         this.expose = expose;
         this.controlInputs = List.copyOf(controlInputs);
         this.watchdog = watchdog;
@@ -77,18 +81,8 @@ final class ExposedMethod implements ControlPoint {
     }
 
     @Override
-    public boolean actuating() {
-        return actuating;
-    }
-
-    @Override
-    public long controlLapseMillis() {
-        return watchdog.timeoutMillis();
-    }
-
-    @Override
-    public long nowMicros() {
-        return runner.nowMicros();
+    public Optional<ControlLease> lease() {
+        return Optional.ofNullable(lease);
     }
 
     @Override

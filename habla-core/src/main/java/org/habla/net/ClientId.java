@@ -5,15 +5,16 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 
 /**
  * Who a control client is, as the daemon can tell it: its connection on one socket ({@code action#3}, the third
- * connection the socket accepted since it started) and the address it came from. A JSON object on the wire, so
+ * connection the socket accepted since it started) or the bridge it came through ({@code mqtt-bridge}), and the
+ * address it came from. A JSON object on the wire, so
  * that a name the client proves later can join these fields without changing their meaning.
  *
- * @param connection the socket's name, {@code #} and the connection's number on that socket
- * @param address    the peer's {@code host:port}
+ * @param connection the socket's name, {@code #} and the connection's number on that socket; or a bridge's name
+ * @param address    the peer's {@code host:port} (for a bridge, its broker's)
  */
-record ClientId(String connection, String address) {
+public record ClientId(String connection, String address) {
 
-    ObjectNode toJson() {
+    public ObjectNode toJson() {
         return JsonNodeFactory.instance.objectNode().put("connection", connection).put("address", address);
     }
 

@@ -19,25 +19,28 @@ import org.slf4j.LoggerFactory;
  *   A silent for the lapse time ──▶ the next client to write takes it, as if free (A is told)
  * </pre>
  *
- * A write is checked and done under the lease's lock, so two clients that write at once cannot both command
+ * The engine keeps one lease per actuating exposed method ({@link ControlPoint#lease}), shared by everything that
+ * writes to it: the clients of its control socket and the bridges that carry it.
+ *
+ * <p>A write is checked and done under the lease's lock, so two clients that write at once cannot both command
  * the robot, and a write the engine refuses changes nothing: a client becomes commander only by a value the
  * engine took. The commander's leaving or releasing stops the robot (the engine's motion watchdog); a client
  * that never commanded leaves without effect. The lapse time is the motion watchdog's: a commander silent that
  * long has already had the robot stopped, so it no longer stands in anyone's way; with no watchdog (0) control
  * lapses only by leaving, releasing or being taken.
  */
-final class ControlLease {
+public final class ControlLease {
 
     private static final Logger LOG = LoggerFactory.getLogger(ControlLease.class);
 
-    /** A client as the lease sees it. */
-    interface Client {
+    /** A client as the lease sees it: a control socket's connection, or a bridge. */
+    public interface Client {
         ClientId id();
     }
 
     /** A write that the lease lets through; throws what the engine's write throws. */
     @FunctionalInterface
-    interface Write {
+    public interface Write {
         void run() throws ControlPoint.Rejected;
     }
 
@@ -55,7 +58,7 @@ final class ControlLease {
      * @param commanderLeft what stops the robot when the commander leaves or releases control
      * @param everyone      hands a notice to every client of the socket
      */
-    ControlLease(String socket, long lapseMillis, LongSupplier clockMicros, Runnable commanderLeft,
+    public ControlLease(String socket, long lapseMillis, LongSupplier clockMicros, Runnable commanderLeft,
             Consumer<Frame> everyone) {
         this.socket = socket;
         this.lapseMicros = lapseMillis * 1_000;
@@ -65,7 +68,7 @@ final class ControlLease {
     }
 
     /** Does {@code write} for {@code client} unless another client commands the socket. */
-    synchronized void write(Client client, Write write) throws ControlPoint.Rejected {
+    public synchronized void write(Client client, Write write) throws ControlPoint.Rejected {
         long now = clockMicros.getAsLong();
         if (holder != null && holder != client && !lapsed(now)) {
             throw new ControlPoint.Rejected("busy", "socket '" + socket + "' is commanded by " + holder.id()
@@ -83,7 +86,7 @@ final class ControlLease {
     }
 
     /** Makes {@code client} the commander, whoever held control. */
-    synchronized void take(Client client) {
+    public synchronized void take(Client client) {
         if (holder == client) {
             return;
         }
@@ -96,7 +99,7 @@ final class ControlLease {
     }
 
     /** The commander gives control back; the robot is stopped. */
-    synchronized void release(Client client) throws ControlPoint.Rejected {
+    public synchronized void release(Client client) throws ControlPoint.Rejected {
         if (holder != client) {
             throw new ControlPoint.Rejected("not_commander", holder == null
                     ? "nobody commands socket '" + socket + "'"
@@ -107,7 +110,7 @@ final class ControlLease {
     }
 
     /** A client disconnected: if it was the commander, control is free and the robot is stopped. */
-    synchronized void left(Client client) {
+    public synchronized void left(Client client) {
         if (holder == client) {
             change(null, clockMicros.getAsLong(), client.id() + " disconnected", null);
             commanderLeft.run();
@@ -115,7 +118,7 @@ final class ControlLease {
     }
 
     /** Who commands now: {@code holder} (null when free), {@code since}, and how long it has been silent. */
-    synchronized ObjectNode status() {
+    public synchronized ObjectNode status() {
         long now = clockMicros.getAsLong();
         ObjectNode n = JsonNodeFactory.instance.objectNode();
         if (holder == null || lapsed(now)) {

@@ -2,6 +2,7 @@ package org.habla.net;
 
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import org.habla.method.ControlNotice;
 import org.habla.method.Input;
 import org.habla.method.Layer;
@@ -52,21 +53,12 @@ public interface ControlPoint {
     void writerLeft();
 
     /**
-     * Whether values written here can reach a robot's command channel. Such a socket has one commander at a time
-     * ({@code ControlLease}); writing to it counts for the motion watchdog.
+     * Who commands this socket, when values written here can reach a robot's command channel: such a socket has
+     * one commander at a time, whatever the writes come through (its control socket, a bridge), and writing to it
+     * counts for the motion watchdog. Empty for a socket whose values move nothing.
      */
-    default boolean actuating() {
-        return false;
-    }
-
-    /** How long the commander of an actuating socket may stay silent before control lapses; 0 for never. */
-    default long controlLapseMillis() {
-        return 0;
-    }
-
-    /** The engine's clock, in microseconds since the epoch (the clock of the samples' {@code t}). */
-    default long nowMicros() {
-        return System.currentTimeMillis() * 1_000;
+    default Optional<ControlLease> lease() {
+        return Optional.empty();
     }
 
     /** Receives what an exposed method emits. */
@@ -77,6 +69,10 @@ public interface ControlPoint {
 
         /** A method the socket's values reach tells its clients something about what they asked. */
         default void onNotice(ControlNotice notice) {
+        }
+
+        /** Who commands the socket changed: a {@code control} line for every client (see {@link ControlLease}). */
+        default void onControl(Frame line) {
         }
     }
 

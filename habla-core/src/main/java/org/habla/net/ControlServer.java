@@ -63,16 +63,8 @@ public final class ControlServer implements AutoCloseable {
         this.point = Objects.requireNonNull(point, "point");
         this.expose = Objects.requireNonNull(expose, "expose");
         this.limits = Objects.requireNonNull(limits, "limits");
-        this.lease = point.actuating() ? new ControlLease(point.name(), point.controlLapseMillis(),
-                point::nowMicros, point::writerLeft, this::tellEveryone) : null;
+        this.lease = point.lease().orElse(null);
         this.protocol = new ControlProtocol(point, limits, lease);
-    }
-
-    /** A notice to every client (who commands the socket changed). */
-    private void tellEveryone(Frame notice) {
-        for (ControlClient c : clients) {
-            c.offerNotice(notice);
-        }
     }
 
     /** Binds the port and starts accepting clients. */
@@ -247,6 +239,13 @@ public final class ControlServer implements AutoCloseable {
             Frame frame = Frame.of(line);
             for (ControlClient c : clients) {
                 c.offerNotice(frame);
+            }
+        }
+
+        @Override
+        public void onControl(Frame line) {
+            for (ControlClient c : clients) {
+                c.offerNotice(line);
             }
         }
 

@@ -57,8 +57,7 @@ final class FakeControlPoint implements ControlPoint {
     private final AtomicLong seq = new AtomicLong();
     private volatile boolean stale;
     private volatile Rejected rejectNext;
-    private volatile boolean actuating;
-    private volatile long lapseMillis;
+    private volatile ControlLease lease;
     final BlockingQueue<Written> writes = new LinkedBlockingQueue<>();
     final AtomicInteger writersLeft = new AtomicInteger();
 
@@ -75,19 +74,14 @@ final class FakeControlPoint implements ControlPoint {
     /** The same, but what is written reaches an actuator: one commander at a time, lapsing after silence. */
     static FakeControlPoint commanded(long lapseMillis) {
         FakeControlPoint p = new FakeControlPoint("tracker", true, false);
-        p.actuating = true;
-        p.lapseMillis = lapseMillis;
+        p.lease = new ControlLease(p.name, lapseMillis, () -> System.currentTimeMillis() * 1_000, p::writerLeft,
+                line -> p.listeners.forEach(l -> l.onControl(line)));
         return p;
     }
 
     @Override
-    public boolean actuating() {
-        return actuating;
-    }
-
-    @Override
-    public long controlLapseMillis() {
-        return lapseMillis;
+    public java.util.Optional<ControlLease> lease() {
+        return java.util.Optional.ofNullable(lease);
     }
 
     @Override
