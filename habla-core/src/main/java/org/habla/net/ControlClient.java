@@ -29,21 +29,20 @@ final class ControlClient implements ControlProtocol.Replies {
 
     private final Socket socket;
     private final String label;
-    private final ControlPoint point;
     private final ControlProtocol protocol;
     private final Limits limits;
     private final ControlServer.Counters counters;
     private final Runnable onClosed;
     private final Outbox outbox;
     private final AtomicBoolean closed = new AtomicBoolean();
-    private final AtomicBoolean wrote = new AtomicBoolean();
+    private final ClientId id;
     private volatile Thread writer;
 
-    ControlClient(Socket socket, String label, ControlPoint point, ControlProtocol protocol, Limits limits,
+    ControlClient(Socket socket, String label, ClientId id, ControlProtocol protocol, Limits limits,
             ControlServer.Counters counters, Runnable onClosed) {
         this.socket = socket;
+        this.id = id;
         this.label = label;
-        this.point = point;
         this.protocol = protocol;
         this.limits = limits;
         this.counters = counters;
@@ -88,8 +87,8 @@ final class ControlClient implements ControlProtocol.Replies {
     }
 
     @Override
-    public void wrote() {
-        wrote.set(true);
+    public ClientId id() {
+        return id;
     }
 
     private void readLoop() {
@@ -179,7 +178,7 @@ final class ControlClient implements ControlProtocol.Replies {
         close();
     }
 
-    /** Closes the connection once; tells the engine if this client had written values. */
+    /** Closes the connection once; if this client commanded the socket, control is free and the robot stopped. */
     void close() {
         if (!closed.compareAndSet(false, true)) {
             return;
@@ -191,11 +190,9 @@ final class ControlClient implements ControlProtocol.Replies {
             LOG.debug("{}: close: {}", label, e.toString());
         }
         try {
-            if (wrote.get()) {
-                point.writerLeft();
-            }
+            protocol.left(this);
         } catch (RuntimeException e) {
-            LOG.warn("{}: the engine failed on writerLeft", label, e);
+            LOG.warn("{}: the engine failed on the commander leaving", label, e);
         }
         onClosed.run();
         LOG.debug("{}: closed", label);

@@ -14,6 +14,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import org.habla.config.Expose;
 import org.habla.config.Limits;
+import org.habla.method.ControlNotice;
 import org.habla.method.Output;
 import org.habla.sample.Sample;
 import org.slf4j.Logger;
@@ -41,6 +42,7 @@ public final class ControlServer implements AutoCloseable {
     private final Expose expose;
     private final Limits limits;
     private final ControlProtocol protocol;
+    private final ControlLease lease;
     private final List<ControlClient> clients = new CopyOnWriteArrayList<>();
     private final Counters counters = new Counters();
     private final AtomicLong droppedByGone = new AtomicLong();
@@ -61,7 +63,8 @@ public final class ControlServer implements AutoCloseable {
         this.point = Objects.requireNonNull(point, "point");
         this.expose = Objects.requireNonNull(expose, "expose");
         this.limits = Objects.requireNonNull(limits, "limits");
-        this.protocol = new ControlProtocol(point, limits);
+        this.lease = point.lease().orElse(null);
+        this.protocol = new ControlProtocol(point, limits, lease);
     }
 
     /** Binds the port and starts accepting clients. */
@@ -100,13 +103,16 @@ public final class ControlServer implements AutoCloseable {
         return clients.size();
     }
 
-    /** Clients now and in total, refused connections, lines each way, dropped samples and protocol errors. */
+    /**
+     * Clients now and in total, refused connections, lines each way, dropped samples and protocol errors; on an
+     * actuating socket, who commands it ({@code control}).
+     */
     public ObjectNode stats() {
         long dropped = droppedByGone.get();
         for (ControlClient c : clients) {
             dropped += c.dropped();
         }
-        return JsonNodeFactory.instance.objectNode()
+        ObjectNode stats = JsonNodeFactory.instance.objectNode()
                 .put("socket", point.name())
                 .put("port", listener == null ? expose.port() : port())
                 .put("clients", clients.size())
@@ -116,6 +122,10 @@ public final class ControlServer implements AutoCloseable {
                 .put("linesOut", counters.linesOut.get())
                 .put("dropped", dropped)
                 .put("errors", counters.errors.get());
+        if (lease != null) {
+            stats.set("control", lease.status());
+        }
+        return stats;
     }
 
     @Override
@@ -177,7 +187,9 @@ public final class ControlServer implements AutoCloseable {
         counters.connections.incrementAndGet();
         String label = "control-" + point.name() + "-" + n;
         ControlClient[] self = new ControlClient[1];
-        self[0] = new ControlClient(socket, label, point, protocol, limits, counters, () -> {
+        ClientId id = new ClientId(point.name() + "#" + n,
+                socket.getInetAddress().getHostAddress() + ":" + socket.getPort());
+        self[0] = new ControlClient(socket, label, id, protocol, limits, counters, () -> {
             if (clients.remove(self[0])) {
                 droppedByGone.addAndGet(self[0].dropped());
             }
@@ -212,6 +224,28 @@ public final class ControlServer implements AutoCloseable {
             }
             for (ControlClient c : clients) {
                 c.offerSample(output.name(), frame);
+            }
+        }
+
+        @Override
+        public void onNotice(ControlNotice notice) {
+            ObjectNode line = JsonNodeFactory.instance.objectNode()
+                    .put("type", "notice")
+                    .put("notice", notice.notice())
+                    .put("method", notice.methodId())
+                    .put("t", notice.sourceMicros())
+                    .put("message", notice.message());
+            line.set("detail", notice.detail().json());
+            Frame frame = Frame.of(line);
+            for (ControlClient c : clients) {
+                c.offerNotice(frame);
+            }
+        }
+
+        @Override
+        public void onControl(Frame line) {
+            for (ControlClient c : clients) {
+                c.offerNotice(line);
             }
         }
 

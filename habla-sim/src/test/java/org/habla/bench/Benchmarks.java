@@ -6,7 +6,7 @@ import java.util.List;
 /**
  * Runs the engine benchmarks and prints their figures: {@code bench/run [latency] [throughput] [fanout] [monitor]
  * [vision] [worker] [mqtt] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up), and the
- * reliability runs of docs/reliability.md with {@code bench/run chaos} (never part of "all").
+ * reliability runs of docs/reliability.md with {@code bench/run chaos} (only when named: they take minutes).
  */
 public final class Benchmarks {
 
@@ -51,6 +51,7 @@ public final class Benchmarks {
             new MqttBench(1_000, 3, seconds).run();
         }
         if (list.contains("chaos")) {
+            new WatchdogChaosBench(20).run();
             new ReconnectChaosBench(20).run();
             new QuietPeerChaosBench(5).run();
         }
