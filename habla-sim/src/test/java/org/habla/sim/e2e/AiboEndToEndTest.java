@@ -96,7 +96,7 @@ class AiboEndToEndTest {
     @Test
     @Order(3)
     void aTouchReachesTheRewardSocket() throws Exception {
-        Process client = rig.probeAsync("first", "" + rig.port("reward"), "20");
+        Process client = rig.probeAsync("first", "" + rig.port("reward"), "60");
         try (BufferedReader out = new BufferedReader(new InputStreamReader(client.getInputStream(), StandardCharsets.UTF_8))) {
             assertThat(out.readLine()).contains("ready");
             rig.truth.send(TruthLink.op("touch").put("sensor", "back"));
@@ -104,7 +104,7 @@ class AiboEndToEndTest {
         } finally {
             client.destroyForcibly();
         }
-        client = rig.probeAsync("first", "" + rig.port("reward"), "20");
+        client = rig.probeAsync("first", "" + rig.port("reward"), "60");
         try (BufferedReader out = new BufferedReader(new InputStreamReader(client.getInputStream(), StandardCharsets.UTF_8))) {
             assertThat(out.readLine()).contains("ready");
             rig.truth.send(TruthLink.op("touch").put("sensor", "head"));
