@@ -11,6 +11,7 @@ import org.habla.driver.ChannelDescriptor;
 import org.habla.graph.EngineClock;
 import org.habla.graph.GraphTap;
 import org.habla.graph.MethodGraph;
+import org.habla.net.BlockBudget;
 import org.habla.net.ControlPoint;
 import org.habla.net.ControlServer;
 import org.habla.plugin.PluginRegistry;
@@ -32,6 +33,8 @@ public final class Daemon implements AutoCloseable {
     private final MethodGraph graph;
     private final EngineClock clock;
     private final Map<String, ControlServer> servers = new LinkedHashMap<>();
+    /** Memory for blocks clients are sending, on every control socket together. */
+    private final BlockBudget blockBudget;
     private StatusServer statusServer;
     private volatile boolean closed;
 
@@ -39,6 +42,7 @@ public final class Daemon implements AutoCloseable {
         this.config = config;
         this.graph = graph;
         this.clock = clock;
+        this.blockBudget = BlockBudget.of("limits.processBlockBudgetBytes", config.limits().processBlockBudgetBytes());
     }
 
     /**
@@ -80,12 +84,13 @@ public final class Daemon implements AutoCloseable {
         Daemon d = new Daemon(config, graph, clock);
         try {
             for (ControlPoint point : d.graph.controlPoints()) {
-                ControlServer server = new ControlServer(point, d.graph.exposeOf(point), config.limits());
+                ControlServer server = new ControlServer(point, d.graph.exposeOf(point), config.limits(),
+                        d.blockBudget);
                 d.servers.put(point.name(), server);
                 server.start();
             }
             if (config.status().port() > 0) {
-                d.statusServer = new StatusServer(config.status(), d::status);
+                d.statusServer = new StatusServer(config.status(), config.limits(), d::status);
                 d.statusServer.start();
             }
             d.graph.start();
@@ -126,7 +131,15 @@ public final class Daemon implements AutoCloseable {
         ObjectNode st = graph.status();
         ArrayNode sockets = st.putArray("sockets");
         servers.values().forEach(s -> sockets.add(s.stats()));
+        st.putObject("blocks")
+                .put("bytesInFlight", blockBudget.reserved())
+                .put("budgetBytes", blockBudget.limitBytes());
         return st;
+    }
+
+    /** Bytes the control sockets hold now for blocks still arriving (the daemon's own count). */
+    public long blockBytesInFlight() {
+        return blockBudget.reserved();
     }
 
     /** Stops the actuators first, then closes the sockets, then stops the graph. Safe to call twice. */
