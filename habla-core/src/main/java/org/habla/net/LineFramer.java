@@ -23,14 +23,16 @@ import java.util.Objects;
  */
 public final class LineFramer {
 
+    /** The read buffer grows to this while reads fill it; an idle stream holds only the first size. */
     private static final int BUFFER_BYTES = 8_192;
+    private static final int FIRST_BUFFER_BYTES = 512;
     /** The room reserved for a block when its first bytes arrive; it doubles as more come. */
     static final int FIRST_BLOCK_BYTES = 65_536;
     private static final byte[] NO_BYTES = new byte[0];
 
     private final InputStream in;
     private final int maxLineBytes;
-    private final byte[] buf = new byte[BUFFER_BYTES];
+    private byte[] buf = new byte[FIRST_BUFFER_BYTES];
     private int pos;
     private int end;
     /** When the frame being read got its first byte ({@link System#nanoTime()}), or 0 between frames. */
@@ -212,6 +214,9 @@ public final class LineFramer {
     }
 
     private boolean fill() throws IOException {
+        if (end == buf.length && buf.length < BUFFER_BYTES) {
+            buf = new byte[Math.min(BUFFER_BYTES, buf.length * 4)]; // the last read filled it: more is coming
+        }
         int n = in.read(buf, 0, buf.length);
         while (n == 0) {
             n = in.read(buf, 0, buf.length);
