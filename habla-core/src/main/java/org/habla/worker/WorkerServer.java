@@ -14,8 +14,6 @@ import org.habla.config.Limits;
 import org.habla.graph.EngineClock;
 import org.habla.net.BlockBudget;
 import org.habla.net.ConnectionGuard;
-import org.habla.net.FrameWriter;
-import org.habla.net.WorkerProtocol;
 import org.habla.plugin.PluginRegistry;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;

@@ -49,7 +49,7 @@ class HostileCrowdTest {
     @Test
     void aThousandHostileConnectionsNeitherStarveAGoodClientNorHoldMemory() throws Exception {
         BlockBudget process = BlockBudget.of("limits.processBlockBudgetBytes", PROCESS_BUDGET);
-        Limits limits = new Limits(4_096, 1 << 20, 16, 64).withDeadlines(3_000, 500, 2_000)
+        Limits limits = new Limits(4_096, 1 << 20, 16, 64).withDeadlines(5_000, 500, 2_000)
                 .withBlockBudgets(4L << 20, PROCESS_BUDGET);
         FakeControlPoint point = FakeControlPoint.twoWay();
         ExecutorService threads = Executors.newVirtualThreadPerTaskExecutor();

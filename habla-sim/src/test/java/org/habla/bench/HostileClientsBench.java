@@ -75,14 +75,15 @@ final class HostileClientsBench {
                         }
                     }
                     SteadyClient.Window during = good.take();
-                    crowd.startReading();
+                    crowd.startReading(); // and wait (at most 60 s) until the daemon has ended every one
                     long end = System.nanoTime() + 60_000_000_000L;
                     while (crowd.ended() < hostile && System.nanoTime() < end) {
                         Thread.sleep(200);
                         peakRss = Math.max(peakRss, rig.figures().rssMb());
                     }
+                    crowd.close(); // what is still open now is counted as open
                     Map<HostileCrowd.Kind, Map<HostileCrowd.Outcome, Integer>> outcomes = crowd.outcomes();
-                    crowd.close();
+                    good.take();
                     Thread.sleep(10_000);
                     SteadyClient.Window after = good.take();
                     PioneerRig.ProcessFigures figuresAfter = rig.figures();

@@ -127,7 +127,7 @@ final class HostileCrowd implements AutoCloseable {
             }
             return readFor(s, Long.MAX_VALUE);
         } catch (IOException e) {
-            return Outcome.CLOSED; // refused, reset, broken pipe: the daemon closed it
+            return closing ? Outcome.OPEN : Outcome.CLOSED; // refused, reset, broken pipe: the daemon closed it
         } catch (InterruptedException e) {
             return Outcome.OPEN;
         }
@@ -147,7 +147,7 @@ final class HostileCrowd implements AutoCloseable {
             } catch (SocketTimeoutException e) {
                 continue;
             } catch (IOException e) {
-                return answered ? Outcome.ANSWERED : Outcome.CLOSED;
+                return closing ? Outcome.OPEN : answered ? Outcome.ANSWERED : Outcome.CLOSED;
             }
             if (n < 0) {
                 return answered ? Outcome.ANSWERED : Outcome.CLOSED;

@@ -1,5 +1,6 @@
 package org.habla.bench;
 
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.net.InetSocketAddress;
@@ -10,7 +11,6 @@ import org.HdrHistogram.Histogram;
 import org.habla.net.Frame;
 import org.habla.net.FrameReader;
 import org.habla.net.FrameWriter;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 
 /**
  * A good control client for the chaos benchmarks: writes an action label with an id ten times a second and
