@@ -6,12 +6,23 @@ import java.io.IOException;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Consumer;
+import org.habla.bridge.Bridge;
+import org.habla.config.BridgeConfig;
 import org.habla.config.HablaConfig;
+import org.habla.config.MethodConfig;
+import org.habla.config.Source;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.graph.EngineClock;
 import org.habla.graph.GraphTap;
 import org.habla.graph.MethodGraph;
 import org.habla.net.BlockBudget;
+import org.habla.graph.OutputInfo;
+import org.habla.monitor.LiveGraph;
+import org.habla.monitor.Monitor;
+import org.habla.draw.GraphPicture;
+import org.habla.draw.SvgWriter;
+import org.habla.sample.Sample;
 import org.habla.net.ControlPoint;
 import org.habla.net.ControlServer;
 import org.habla.plugin.PluginRegistry;
@@ -20,8 +31,8 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The HABLA daemon: a config's method graph with a control server on every exposed method's port
- * and the status endpoint. The one assembly point between the engine and the sockets.
+ * The HABLA daemon: a config's method graph with a control server on every exposed method's port, the
+ * config's bridges and the status endpoint. The one assembly point between the engine and the sockets.
  */
 public final class Daemon implements AutoCloseable {
 
@@ -35,7 +46,9 @@ public final class Daemon implements AutoCloseable {
     private final Map<String, ControlServer> servers = new LinkedHashMap<>();
     /** Memory for blocks clients are sending, on every control socket together. */
     private final BlockBudget blockBudget;
+    private final Map<String, Bridge> bridges = new LinkedHashMap<>();
     private StatusServer statusServer;
+    private Monitor monitor;
     private volatile boolean closed;
 
     private Daemon(HablaConfig config, MethodGraph graph, EngineClock clock) {
@@ -58,7 +71,7 @@ public final class Daemon implements AutoCloseable {
     public static Daemon start(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap)
             throws IOException {
         checkPlacements(config);
-        return assemble(config, MethodGraph.build(config, registry, clock, tap), clock);
+        return assemble(config, registry, MethodGraph.build(config, registry, clock, tap), clock, true);
     }
 
     /**
@@ -68,7 +81,8 @@ public final class Daemon implements AutoCloseable {
     public static Daemon replaying(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
             Map<String, List<ChannelDescriptor>> channels) throws IOException {
         checkPlacements(config);
-        return assemble(config, MethodGraph.replaying(config, registry, clock, tap, channels), clock);
+        // A replay carries no bridge: what it computes again must not reach a broker as if it were live.
+        return assemble(config, registry, MethodGraph.replaying(config, registry, clock, tap, channels), clock, false);
     }
 
     /** Asks every worker the config places methods on whether it can run them. */
@@ -79,8 +93,12 @@ public final class Daemon implements AutoCloseable {
         }
     }
 
-    /** Starts the control sockets and the status endpoint around a built graph, then the graph. */
-    private static Daemon assemble(HablaConfig config, MethodGraph graph, EngineClock clock) throws IOException {
+    /**
+     * Starts the control sockets, the config's bridges (when {@code withBridges}), the status endpoint and the
+     * monitor around a built graph, then the graph.
+     */
+    private static Daemon assemble(HablaConfig config, PluginRegistry registry, MethodGraph graph, EngineClock clock,
+            boolean withBridges) throws IOException {
         Daemon d = new Daemon(config, graph, clock);
         try {
             for (ControlPoint point : d.graph.controlPoints()) {
@@ -89,17 +107,29 @@ public final class Daemon implements AutoCloseable {
                 d.servers.put(point.name(), server);
                 server.start();
             }
+            if (withBridges) {
+                for (BridgeConfig bc : config.bridges()) {
+                    Bridge bridge = Bridges.create(registry, bc);
+                    d.bridges.put(bc.id(), bridge);
+                    bridge.start(config.system(), d.graph.controlPoints(), Bridges.role(registry, bc));
+                }
+            }
             if (config.status().port() > 0) {
                 d.statusServer = new StatusServer(config.status(), config.limits(), d::status);
                 d.statusServer.start();
+            }
+            if (config.status().monitorPort() > 0) {
+                d.monitor = Monitor.start(config.status().bind(), config.status().monitorPort(), d.liveView(),
+                        SvgWriter.write(GraphPicture.of(config, registry)));
             }
             d.graph.start();
         } catch (IOException | RuntimeException e) {
             d.close();
             throw e;
         }
-        LOG.info("HABLA daemon '{}' running: {} control sockets{}", config.system(), d.servers.size(),
-                d.statusServer == null ? "" : ", status on port " + d.statusServer.port());
+        LOG.info("HABLA daemon '{}' running: {} control sockets{}{}", config.system(), d.servers.size(),
+                d.statusServer == null ? "" : ", status on port " + d.statusServer.port(),
+                d.monitor == null ? "" : ", monitor on http://" + config.status().bind() + ":" + d.monitor.port() + "/");
         return d;
     }
 
@@ -126,6 +156,43 @@ public final class Daemon implements AutoCloseable {
         return statusServer == null ? 0 : statusServer.port();
     }
 
+    /** The monitor's port, or 0 when there is no monitor. */
+    public int monitorPort() {
+        return monitor == null ? 0 : monitor.port();
+    }
+
+    /** What the monitor may read of this daemon: the status, the outputs and a tap on them; nothing to write. */
+    private LiveGraph liveView() {
+        return new LiveGraph() {
+            @Override
+            public ObjectNode status() {
+                return Daemon.this.status();
+            }
+
+            @Override
+            public Map<String, List<String>> inputs() {
+                Map<String, List<String>> reads = new LinkedHashMap<>();
+                for (MethodConfig m : config.methods()) {
+                    reads.put(m.id(), m.inputs().values().stream()
+                            .filter(s -> s instanceof Source.MethodOutput)
+                            .map(Source::text)
+                            .toList());
+                }
+                return reads;
+            }
+
+            @Override
+            public List<OutputInfo> outputs() {
+                return graph.outputs();
+            }
+
+            @Override
+            public AutoCloseable watchOutputs(Consumer<Sample> watcher) {
+                return graph.watchOutputs(watcher);
+            }
+        };
+    }
+
     /** The engine's status with the sockets' figures. */
     public ObjectNode status() {
         ObjectNode st = graph.status();
@@ -134,6 +201,10 @@ public final class Daemon implements AutoCloseable {
         st.putObject("blocks")
                 .put("bytesInFlight", blockBudget.reserved())
                 .put("budgetBytes", blockBudget.limitBytes());
+        if (!bridges.isEmpty()) {
+            ArrayNode bs = st.putArray("bridges");
+            bridges.forEach((id, b) -> bs.add(b.status().put("id", id)));
+        }
         return st;
     }
 
@@ -151,7 +222,11 @@ public final class Daemon implements AutoCloseable {
         closed = true;
         LOG.info("HABLA daemon '{}' stopping: actuators first", config.system());
         graph.stopActuators("the daemon is shutting down");
+        bridges.values().forEach(Bridge::close);
         servers.values().forEach(ControlServer::close);
+        if (monitor != null) {
+            monitor.close();
+        }
         if (statusServer != null) {
             statusServer.close();
         }

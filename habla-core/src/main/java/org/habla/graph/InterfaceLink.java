@@ -12,6 +12,7 @@ import java.util.concurrent.atomic.LongAdder;
 import java.util.function.Consumer;
 import org.habla.config.InterfaceConfig;
 import org.habla.driver.ChannelDescriptor;
+import org.habla.driver.ClientConnection;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.ReadingSink;
@@ -36,8 +37,9 @@ final class InterfaceLink {
     private final GraphTap tap;
     private final Map<String, ChannelDescriptor> channels = new HashMap<>();
     private final Map<String, OutputPort> readings = new HashMap<>();
-    private final Map<String, ConnectionLink> commandRoutes = new HashMap<>();
-    private final List<ConnectionLink> connections = new ArrayList<>();
+    private final Map<String, String> unavailable = new java.util.concurrent.ConcurrentHashMap<>();
+    private final Map<String, Link> commandRoutes = new HashMap<>();
+    private final List<Link> connections = new ArrayList<>();
     private final List<Consumer<Boolean>> stateListeners = new ArrayList<>();
     private final boolean replayed;
     private final Sink sink = new Sink();
@@ -48,6 +50,8 @@ final class InterfaceLink {
     private volatile ObjectNode robotInfo = JsonNodeFactory.instance.objectNode();
     private volatile MotionWatchdog watchdog;
     private volatile boolean up;
+    /** When the link last went up or down (engine clock, µs); its start until the first change. */
+    private volatile long sinceMicros;
     private AutoCloseable linkTicker;
 
     /**
@@ -77,6 +81,18 @@ final class InterfaceLink {
                 commandRoutes.put(channel, link);
             }
         }
+        for (ClientConnection c : replayed ? List.<ClientConnection>of() : driver.clientConnections()) {
+            ClientLink link = new ClientLink(config.id(), c, config.reconnect(), sink, this::connectionChanged);
+            connections.add(link);
+            for (String channel : c.commandChannels()) {
+                commandRoutes.put(channel, link);
+            }
+        }
+    }
+
+    /** Why a reading channel's device is unavailable now (its link being up), or null when it is available. */
+    String unavailable(String channel) {
+        return unavailable.get(channel);
     }
 
     String id() {
@@ -105,7 +121,8 @@ final class InterfaceLink {
     }
 
     void start() {
-        for (ConnectionLink c : connections) {
+        sinceMicros = clock.nowMicros();
+        for (Link c : connections) {
             c.start();
         }
         linkTicker = clock.every(1_000_000, this::publishLink);
@@ -120,7 +137,7 @@ final class InterfaceLink {
                 LOG.debug("link ticker: {}", e.toString());
             }
         }
-        for (ConnectionLink c : connections) {
+        for (Link c : connections) {
             c.stop();
         }
     }
@@ -128,7 +145,7 @@ final class InterfaceLink {
     /** Sends a command sample from an actuator method to its channel. */
     void command(String channel, Sample sample) {
         ChannelDescriptor d = channels.get(channel);
-        ConnectionLink link = commandRoutes.get(channel);
+        Link link = commandRoutes.get(channel);
         if (d == null || (link == null && !replayed)) {
             drop(channel, "no connection carries it");
             return;
@@ -151,7 +168,7 @@ final class InterfaceLink {
         }
         if (!link.command(channel, sample.payload())) {
             tap.command(config.id(), channel, sample, false);
-            drop(channel, "link " + config.id() + "/" + link.connection().name() + " is down");
+            drop(channel, "link " + config.id() + "/" + link.connectionName() + " is down");
             return;
         }
         tap.command(config.id(), channel, sample, true);
@@ -171,6 +188,7 @@ final class InterfaceLink {
     void replayLink(boolean isUp) {
         if (isUp != up) {
             up = isUp;
+            sinceMicros = clock.nowMicros();
             tap.link(config.id(), isUp, clock.nowMicros());
             for (Consumer<Boolean> l : stateListeners) {
                 l.accept(isUp);
@@ -180,8 +198,8 @@ final class InterfaceLink {
 
     /** Writes the stop of every connection that carries a motion channel, each from a thread of its own. */
     void stopMotion() {
-        for (ConnectionLink link : connections) {
-            boolean carriesMotion = link.connection().commandChannels().stream()
+        for (Link link : connections) {
+            boolean carriesMotion = link.commandChannels().stream()
                     .map(channels::get).anyMatch(c -> c != null && c.motion());
             if (carriesMotion) {
                 Thread.ofVirtual().name("habla-stop-" + config.id()).start(link::stopMotion);
@@ -191,8 +209,8 @@ final class InterfaceLink {
 
     /** Stops motion and waits briefly for the stop to be written (shutdown). */
     void stopMotionNow() {
-        for (ConnectionLink link : connections) {
-            if (link.connection().commandChannels().stream().map(channels::get).anyMatch(c -> c != null && c.motion())) {
+        for (Link link : connections) {
+            if (link.commandChannels().stream().map(channels::get).anyMatch(c -> c != null && c.motion())) {
                 link.stopMotion();
             }
         }
@@ -206,9 +224,14 @@ final class InterfaceLink {
     }
 
     private void connectionChanged() {
-        boolean all = connections.stream().allMatch(ConnectionLink::up);
+        boolean all = connections.stream().allMatch(Link::up);
+        if (all && !up) {
+            // A fresh session tells its devices' availability again.
+            unavailable.clear();
+        }
         if (all != up) {
             up = all;
+            sinceMicros = clock.nowMicros();
             tap.link(config.id(), all, clock.nowMicros());
             publishLink();
             for (Consumer<Boolean> l : stateListeners) {
@@ -223,9 +246,9 @@ final class InterfaceLink {
             return;
         }
         StringBuilder detail = new StringBuilder();
-        for (ConnectionLink c : connections) {
+        for (Link c : connections) {
             if (!c.up()) {
-                detail.append(detail.length() == 0 ? "" : "; ").append(c.connection().name()).append(" down")
+                detail.append(detail.length() == 0 ? "" : "; ").append(c.connectionName()).append(" down")
                         .append(c.lastError().isEmpty() ? "" : ": " + c.lastError());
             }
         }
@@ -241,6 +264,7 @@ final class InterfaceLink {
         n.put("driver", config.driver());
         n.put("address", config.address().toString());
         n.put("up", up);
+        n.put("sinceMicros", sinceMicros);
         if (replayed) {
             n.put("replayed", true);
         }
@@ -251,6 +275,10 @@ final class InterfaceLink {
         n.put("unknownChannel", unknownChannel.sum());
         n.put("commandsSent", commandsSent.sum());
         n.put("commandsDropped", commandsDropped.get());
+        if (!unavailable.isEmpty()) {
+            ObjectNode un = n.putObject("unavailable");
+            unavailable.forEach(un::put);
+        }
         ObjectNode rs = n.putObject("readings");
         readings.forEach((name, port) -> rs.put(name, port.published()));
         return n;
@@ -286,6 +314,23 @@ final class InterfaceLink {
             long n = malformed.sum();
             if (n <= 10 || n % 1000 == 0) {
                 LOG.warn("interface {}: malformed input dropped ({} so far): {}", config.id(), n, what);
+            }
+        }
+
+        @Override
+        public void availability(String channel, boolean available, String why) {
+            if (!readings.containsKey(channel) || Driver.LINK_CHANNEL.name().equals(channel)) {
+                unknownChannel.increment();
+                return;
+            }
+            String before = available ? unavailable.remove(channel) : unavailable.put(channel, why);
+            if ((before == null) == available) {
+                return;
+            }
+            LOG.info("interface {}: the device of channel {} is {} ({})", config.id(), channel,
+                    available ? "available again" : "unavailable", why);
+            for (Consumer<Boolean> l : stateListeners) {
+                l.accept(up);
             }
         }
 

@@ -22,7 +22,7 @@ import org.habla.net.Frame;
  * and why — a daemon killed mid-write leaves exactly that, a torn last record, and every record before it
  * reads back. Not thread-safe.
  */
-public final class RecordingReader implements AutoCloseable {
+public final class RecordingReader implements RecordingSource {
 
     /** The longest header line read (the config record is the largest). */
     public static final int MAX_LINE_BYTES = 16 << 20;
@@ -72,6 +72,7 @@ public final class RecordingReader implements AutoCloseable {
         }
     }
 
+    @Override
     public RecordingHeader header() {
         return header;
     }

@@ -23,7 +23,7 @@ import org.habla.recording.RecordedEvent;
 import org.habla.recording.Recorder;
 import org.habla.recording.RecordingException;
 import org.habla.recording.RecordingHeader;
-import org.habla.recording.RecordingReader;
+import org.habla.recording.RecordingSource;
 import org.habla.plugin.PluginRegistry;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -80,7 +80,7 @@ public final class Replayer {
     public static Replayer open(Path file, Optional<Path> override, PluginRegistry registry)
             throws IOException, RecordingException, ConfigException {
         RecordingHeader header;
-        try (RecordingReader r = RecordingReader.open(file)) {
+        try (RecordingSource r = RecordingSource.open(file)) {
             header = r.header();
         }
         ConfigLoader loader = new ConfigLoader(registry);
@@ -130,7 +130,7 @@ public final class Replayer {
         }
         OutputComparison comparison = new OutputComparison(recorder == null ? GraphTap.NONE : recorder);
         Daemon daemon = Daemon.replaying(config, registry, clock, comparison, header.interfaces());
-        try (RecordingReader reader = RecordingReader.open(file)) {
+        try (RecordingSource reader = RecordingSource.open(file)) {
             onStarted.accept(daemon);
             Feed feed = new Feed(daemon.graph(), clock, options, recordedTicks);
             long wallStart = System.nanoTime();
@@ -170,7 +170,7 @@ public final class Replayer {
     }
 
     private boolean hasTicks() throws IOException {
-        try (RecordingReader r = RecordingReader.open(file)) {
+        try (RecordingSource r = RecordingSource.open(file)) {
             for (RecordedEvent e = r.next(); e != null; e = r.next()) {
                 if (e instanceof RecordedEvent.Tick) {
                     return true;

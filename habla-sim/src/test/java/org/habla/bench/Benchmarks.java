@@ -4,8 +4,8 @@ import java.util.Arrays;
 import java.util.List;
 
 /**
- * Runs the engine benchmarks and prints their figures: {@code bench/run [latency] [throughput] [fanout]
- * [vision] [worker] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up). The
+ * Runs the engine benchmarks and prints their figures: {@code bench/run [latency] [throughput] [fanout] [monitor]
+ * [vision] [worker] [mqtt] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up). The
  * {@code chaos} group runs only when named: {@code bench/run chaos [--hostile N] [--attack-seconds S]
  * [--soak-minutes M]}, or one of its parts, {@code hostile} or {@code soak}.
  */
@@ -22,8 +22,8 @@ public final class Benchmarks {
             seconds = Integer.parseInt(list.get(at + 1));
         }
         boolean all = list.stream().noneMatch(a -> a.equals("latency") || a.equals("throughput") || a.equals("fanout")
-                || a.equals("vision") || a.equals("worker") || a.equals("chaos") || a.equals("hostile")
-                || a.equals("soak"));
+                || a.equals("vision") || a.equals("worker") || a.equals("monitor") || a.equals("recording") || a.equals("mqtt")
+                || a.equals("chaos") || a.equals("hostile") || a.equals("soak"));
         System.out.printf("HABLA engine benchmarks: %d cores, %s %s, %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name"), System.getProperty("java.version"), System.getProperty("os.name"));
         System.out.println("load average at start (1, 5, 15 min): " + loadAverage());
@@ -39,8 +39,17 @@ public final class Benchmarks {
         if (all || list.contains("vision")) {
             new VisionBench(2_000).run();
         }
+        if (list.contains("recording")) {
+            new RecordingBench(seconds).run();
+        }
+        if (list.contains("monitor")) {
+            new MonitorBench(3, seconds, 3).run();
+        }
         if (all || list.contains("worker")) {
             new WorkerBench(1_000, 3, seconds).run();
+        }
+        if (all || list.contains("mqtt")) {
+            new MqttBench(1_000, 3, seconds).run();
         }
         if (list.contains("chaos") || list.contains("hostile")) {
             new HostileClientsBench(option(list, "--hostile", 1_000), option(list, "--attack-seconds", 60)).run();
