@@ -189,7 +189,7 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
                     client = true;
                     Optional<String> refusal = guard.promote(this);
                     if (refusal.isPresent()) {
-                        reply(ControlProtocol.error("too_many_clients", refusal.get(), null));
+                        reply(ControlProtocol.error("too_many_clients", refusal.get(), frame.header().get("id")));
                         LOG.info("{}: refused as a client: {}", label, refusal.get());
                         closeAfterError();
                         return;
