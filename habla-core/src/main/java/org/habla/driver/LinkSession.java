@@ -18,7 +18,13 @@ import org.habla.sample.Payload;
  */
 public interface LinkSession {
 
-    /** Runs the connection's opening exchange (e.g. SYNC0/1/2, OPEN, ENABLE). Reads time out. */
+    /**
+     * Runs the connection's opening exchange (e.g. SYNC0/1/2, OPEN, ENABLE). Reads time out. A session that
+     * carries a motion channel leaves the robot still: a robot that may remember the speeds of an earlier session
+     * and resume them is stopped before anything is enabled (the Pioneer's STOP right after OPEN, zeros to the
+     * Aibo's walk). A protocol whose robot stops by itself when the connection ends, as HABLA's interface
+     * protocol asks of its programs, needs nothing here.
+     */
     default void handshake(InputStream in, OutputStream out, ReadingSink sink) throws IOException {
     }
 

@@ -5,8 +5,10 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.function.Consumer;
@@ -27,6 +29,11 @@ import org.slf4j.LoggerFactory;
  * channel (plus the engine's {@code link} channel), and the routing of commands to the connection
  * that carries them. Motion commands are dropped — never delayed — while their connection is down
  * or the motion watchdog has tripped.
+ *
+ * <p>A watchdog trip leaves a stop <em>owed</em> on every connection that carries a motion channel. It is
+ * paid at once from a thread of its own and, at the latest, just before the next motion command on that
+ * connection, under one lock: a new motion never reaches the robot ahead of the stop, and a stop that could
+ * not be written while the connection was down is written before the first motion after it comes back.
  */
 final class InterfaceLink {
 
@@ -47,6 +54,8 @@ final class InterfaceLink {
     private final LongAdder unknownChannel = new LongAdder();
     private final LongAdder commandsSent = new LongAdder();
     private final AtomicLong commandsDropped = new AtomicLong();
+    private final Object motionLock = new Object();
+    private final Set<Link> stopsOwed = new HashSet<>();
     private volatile ObjectNode robotInfo = JsonNodeFactory.instance.objectNode();
     private volatile MotionWatchdog watchdog;
     private volatile boolean up;
@@ -150,29 +159,50 @@ final class InterfaceLink {
             drop(channel, "no connection carries it");
             return;
         }
-        MotionWatchdog w = watchdog;
-        if (d.motion() && w != null && !w.allowsMotion()) {
-            tap.command(config.id(), channel, sample, false);
-            drop(channel, "the motion watchdog has stopped the robot");
-            return;
-        }
         if (replayed) {
-            if (!up) {
-                tap.command(config.id(), channel, sample, false);
-                drop(channel, "link " + config.id() + " is down in the recording");
-                return;
+            if (d.motion() && !motionAllowed()) {
+                refuse(channel, sample, "the motion watchdog has stopped the robot");
+            } else if (!up) {
+                refuse(channel, sample, "link " + config.id() + " is down in the recording");
+            } else {
+                tap.command(config.id(), channel, sample, true);
+                commandsSent.increment();
             }
-            tap.command(config.id(), channel, sample, true);
-            commandsSent.increment();
             return;
         }
+        if (d.motion()) {
+            // Under the motion lock: a trip either comes before the check (and the command is dropped) or
+            // after the write (and its stop follows the command).
+            synchronized (motionLock) {
+                if (!motionAllowed()) {
+                    refuse(channel, sample, "the motion watchdog has stopped the robot");
+                    return;
+                }
+                payOwedStop(link);
+                send(channel, sample, link);
+            }
+        } else {
+            send(channel, sample, link);
+        }
+    }
+
+    private boolean motionAllowed() {
+        MotionWatchdog w = watchdog;
+        return w == null || w.allowsMotion();
+    }
+
+    private void send(String channel, Sample sample, Link link) {
         if (!link.command(channel, sample.payload())) {
-            tap.command(config.id(), channel, sample, false);
-            drop(channel, "link " + config.id() + "/" + link.connectionName() + " is down");
+            refuse(channel, sample, "link " + config.id() + "/" + link.connectionName() + " is down");
             return;
         }
         tap.command(config.id(), channel, sample, true);
         commandsSent.increment();
+    }
+
+    private void refuse(String channel, Sample sample, String why) {
+        tap.command(config.id(), channel, sample, false);
+        drop(channel, why);
     }
 
     /** A recorded reading, replayed: published exactly as the driver's session (or the link heartbeat) did. */
@@ -196,22 +226,50 @@ final class InterfaceLink {
         }
     }
 
-    /** Writes the stop of every connection that carries a motion channel, each from a thread of its own. */
-    void stopMotion() {
-        for (Link link : connections) {
-            boolean carriesMotion = link.commandChannels().stream()
-                    .map(channels::get).anyMatch(c -> c != null && c.motion());
-            if (carriesMotion) {
-                Thread.ofVirtual().name("habla-stop-" + config.id()).start(link::stopMotion);
+    /** Owes a stop on every connection that carries a motion channel (see the class comment). */
+    void oweStop() {
+        synchronized (motionLock) {
+            for (Link link : connections) {
+                if (carriesMotion(link)) {
+                    stopsOwed.add(link);
+                }
             }
         }
+    }
+
+    /** Pays the owed stops now, each connection from a thread of its own. */
+    void stopMotion() {
+        for (Link link : connections) {
+            if (carriesMotion(link)) {
+                Thread.ofVirtual().name("habla-stop-" + config.id()).start(() -> {
+                    synchronized (motionLock) {
+                        payOwedStop(link);
+                    }
+                });
+            }
+        }
+    }
+
+    /** Writes the stop owed on {@code link}, if any; it stays owed while the connection is down. */
+    private void payOwedStop(Link link) {
+        if (stopsOwed.contains(link) && link.stopMotion()) {
+            stopsOwed.remove(link);
+        }
+    }
+
+    private boolean carriesMotion(Link link) {
+        return link.commandChannels().stream().map(channels::get).anyMatch(c -> c != null && c.motion());
     }
 
     /** Stops motion and waits briefly for the stop to be written (shutdown). */
     void stopMotionNow() {
         for (Link link : connections) {
-            if (link.commandChannels().stream().map(channels::get).anyMatch(c -> c != null && c.motion())) {
-                link.stopMotion();
+            if (carriesMotion(link)) {
+                synchronized (motionLock) {
+                    if (link.stopMotion()) {
+                        stopsOwed.remove(link);
+                    }
+                }
             }
         }
     }

@@ -103,6 +103,10 @@ public final class MethodGraph implements AutoCloseable {
         for (MethodConfig mc : config.methods()) {
             wire(mc);
         }
+        routeNotices();
+        for (String id : motionPath()) {
+            runners.get(id).followMotionResets(watchdog::resets);
+        }
         for (MethodConfig mc : config.methods()) {
             upstreamInterfaces.put(mc.id(), upstream(mc.id(), new LinkedHashSet<>()));
             upstreamChannels.put(mc.id(), upstreamChannels(mc.id(), new LinkedHashSet<>()));
@@ -187,6 +191,12 @@ public final class MethodGraph implements AutoCloseable {
             }
         }
         return false;
+    }
+
+    /** Whether the method, or one its outputs feed, writes an interface's command channel. */
+    private boolean actuates(String methodId) {
+        return downstream(methodId, new LinkedHashSet<>()).stream()
+                .anyMatch(id -> !config.method(id).orElseThrow().commands().isEmpty());
     }
 
     /** The method and every method its outputs feed, directly or not. */
@@ -280,7 +290,7 @@ public final class MethodGraph implements AutoCloseable {
             runner.port(out).subscribe(sample -> link.command(channel, sample));
         }
         mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner,
-                x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap)));
+                x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap, actuates(mc.id()))));
     }
 
     private Set<String> upstream(String methodId, Set<String> visited) {
@@ -297,6 +307,47 @@ public final class MethodGraph implements AutoCloseable {
             }
         }
         return result;
+    }
+
+    /** Sends what each method tells control clients to the sockets whose values reach it. */
+    private void routeNotices() {
+        for (MethodRunner r : runners.values()) {
+            List<ExposedMethod> told = exposed.stream().filter(x -> !x.controlInputs().isEmpty()
+                    && downstream(x.methodId(), new LinkedHashSet<>()).contains(r.id())).toList();
+            if (!told.isEmpty()) {
+                r.tellControlVia(notice -> told.forEach(x -> x.notice(notice)));
+            }
+        }
+    }
+
+    /**
+     * The methods whose outputs lead, through other methods or directly, to a motion command channel: the ones
+     * that must forget their motion when the watchdog stops the robot.
+     */
+    private Set<String> motionPath() {
+        Set<String> found = new LinkedHashSet<>();
+        for (MethodConfig mc : config.methods()) {
+            boolean drives = mc.commands().values().stream().anyMatch(ref -> {
+                ChannelDescriptor d = links.get(ref.interfaceId()).channel(ref.channel());
+                return d != null && d.motion();
+            });
+            if (drives) {
+                feeding(mc.id(), found);
+            }
+        }
+        return found;
+    }
+
+    /** Adds the method and every method whose outputs feed it, directly or not. */
+    private void feeding(String methodId, Set<String> found) {
+        if (!found.add(methodId)) {
+            return;
+        }
+        for (Source s : config.method(methodId).orElseThrow().inputs().values()) {
+            if (s instanceof Source.MethodOutput mo) {
+                feeding(mo.methodId(), found);
+            }
+        }
     }
 
     /** The interface channels whose readings reach {@code methodId}. */

@@ -31,7 +31,6 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
 
     private final Socket socket;
     private final String label;
-    private final ControlPoint point;
     private final ControlProtocol protocol;
     private final Limits limits;
     private final BlockBudget budget;
@@ -42,16 +41,16 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     private final PeerActivity activity = new PeerActivity();
     private final AtomicBoolean closed = new AtomicBoolean();
     private final AtomicBoolean evicted = new AtomicBoolean();
-    private final AtomicBoolean wrote = new AtomicBoolean();
+    private final ClientId id;
     private volatile Thread writer;
     private volatile Thread reader;
     private volatile FrameReader frames;
 
-    ControlClient(Socket socket, String label, ControlPoint point, ControlProtocol protocol, Limits limits,
+    ControlClient(Socket socket, String label, ClientId id, ControlProtocol protocol, Limits limits,
             BlockBudget budget, ConnectionGuard guard, ControlServer.Counters counters, Runnable onClosed) {
         this.socket = socket;
+        this.id = id;
         this.label = label;
-        this.point = point;
         this.protocol = protocol;
         this.limits = limits;
         this.budget = budget;
@@ -149,8 +148,8 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     }
 
     @Override
-    public void wrote() {
-        wrote.set(true);
+    public ClientId id() {
+        return id;
     }
 
     private void readLoop() {
@@ -265,7 +264,7 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
         close();
     }
 
-    /** Closes the connection once; tells the engine if this client had written values. */
+    /** Closes the connection once; if this client commanded the socket, control is free and the robot stopped. */
     void close() {
         if (!closed.compareAndSet(false, true)) {
             return;
@@ -277,11 +276,9 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
             LOG.debug("{}: close: {}", label, e.toString());
         }
         try {
-            if (wrote.get()) {
-                point.writerLeft();
-            }
+            protocol.left(this);
         } catch (RuntimeException e) {
-            LOG.warn("{}: the engine failed on writerLeft", label, e);
+            LOG.warn("{}: the engine failed on the commander leaving", label, e);
         }
         onClosed.run();
         LOG.debug("{}: closed", label);

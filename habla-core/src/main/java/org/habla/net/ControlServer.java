@@ -13,6 +13,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import org.habla.config.Expose;
 import org.habla.config.Limits;
+import org.habla.method.ControlNotice;
 import org.habla.method.Output;
 import org.habla.sample.Sample;
 import org.slf4j.Logger;
@@ -45,6 +46,7 @@ public final class ControlServer implements AutoCloseable {
     private final Expose expose;
     private final Limits limits;
     private final ControlProtocol protocol;
+    private final ControlLease lease;
     private final ConnectionGuard guard;
     private final BlockBudget budget;
     private final List<ControlClient> clients = new CopyOnWriteArrayList<>();
@@ -72,7 +74,8 @@ public final class ControlServer implements AutoCloseable {
         this.point = Objects.requireNonNull(point, "point");
         this.expose = Objects.requireNonNull(expose, "expose");
         this.limits = Objects.requireNonNull(limits, "limits");
-        this.protocol = new ControlProtocol(point, limits);
+        this.lease = point.lease().orElse(null);
+        this.protocol = new ControlProtocol(point, limits, lease);
         this.guard = new ConnectionGuard("control socket '" + point.name() + "'", limits.maxClientsPerPort(),
                 "limits.maxClientsPerPort", limits);
         this.budget = processBudget.child("limits.socketBlockBudgetBytes", limits.socketBlockBudgetBytes());
@@ -115,7 +118,10 @@ public final class ControlServer implements AutoCloseable {
         return clients.size();
     }
 
-    /** Clients now and in total, refused connections, lines each way, dropped samples and protocol errors. */
+    /**
+     * Clients now and in total, refused connections, lines each way, dropped samples and protocol errors; on an
+     * actuating socket, who commands it ({@code control}).
+     */
     public ObjectNode stats() {
         long dropped = droppedByGone.get();
         for (ControlClient c : clients) {
@@ -132,7 +138,11 @@ public final class ControlServer implements AutoCloseable {
                 .put("dropped", dropped)
                 .put("errors", counters.errors.get());
         guard.putStats(stats);
-        return stats.put("blockBytes", budget.reserved());
+        stats.put("blockBytes", budget.reserved());
+        if (lease != null) {
+            stats.set("control", lease.status());
+        }
+        return stats;
     }
 
     /** Bytes this port holds now for blocks still arriving. */
@@ -187,7 +197,9 @@ public final class ControlServer implements AutoCloseable {
         socket.setTcpNoDelay(true);
         String label = "control-" + point.name() + "-" + n;
         ControlClient[] self = new ControlClient[1];
-        self[0] = new ControlClient(socket, label, point, protocol, limits, budget, guard, counters, () -> {
+        ClientId id = new ClientId(point.name() + "#" + n,
+                socket.getInetAddress().getHostAddress() + ":" + socket.getPort());
+        self[0] = new ControlClient(socket, label, id, protocol, limits, budget, guard, counters, () -> {
             guard.left(self[0]);
             if (clients.remove(self[0])) {
                 droppedByGone.addAndGet(self[0].dropped());
@@ -225,6 +237,28 @@ public final class ControlServer implements AutoCloseable {
             }
             for (ControlClient c : clients) {
                 c.offerSample(output.name(), frame);
+            }
+        }
+
+        @Override
+        public void onNotice(ControlNotice notice) {
+            ObjectNode line = JsonNodeFactory.instance.objectNode()
+                    .put("type", "notice")
+                    .put("notice", notice.notice())
+                    .put("method", notice.methodId())
+                    .put("t", notice.sourceMicros())
+                    .put("message", notice.message());
+            line.set("detail", notice.detail().json());
+            Frame frame = Frame.of(line);
+            for (ControlClient c : clients) {
+                c.offerNotice(frame);
+            }
+        }
+
+        @Override
+        public void onControl(Frame line) {
+            for (ControlClient c : clients) {
+                c.offerNotice(line);
             }
         }
 

@@ -328,8 +328,8 @@ class ControlServerTest {
     }
 
     @Test
-    void theEngineHearsWhenAWritingClientLeavesButNotAReadingOne() throws Exception {
-        FakeControlPoint point = FakeControlPoint.twoWay();
+    void theEngineHearsWhenTheCommanderLeavesButNotAReadingClient() throws Exception {
+        FakeControlPoint point = FakeControlPoint.commanded(0);
         ControlServer server = serve(point, SMALL);
         try (TestClient readerOnly = connect(server)) {
             readerOnly.send("{\"op\":\"ping\"}");

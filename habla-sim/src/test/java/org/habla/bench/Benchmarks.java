@@ -5,9 +5,9 @@ import java.util.List;
 
 /**
  * Runs the engine benchmarks and prints their figures: {@code bench/run [latency] [throughput] [fanout] [monitor]
- * [vision] [worker] [mqtt] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up). The
- * {@code chaos} group runs only when named: {@code bench/run chaos [--hostile N] [--attack-seconds S]
- * [--soak-minutes M]}, or one of its parts, {@code hostile} or {@code soak}.
+ * [vision] [worker] [mqtt] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up), and the
+ * robustness runs of {@code bench/run chaos} (only when named: they take minutes), or its parts {@code hostile}
+ * and {@code soak} ({@code --hostile N}, {@code --attack-seconds S}, {@code --soak-minutes M}).
  */
 public final class Benchmarks {
 
@@ -50,6 +50,9 @@ public final class Benchmarks {
         }
         if (all || list.contains("mqtt")) {
             new MqttBench(1_000, 3, seconds).run();
+        }
+        if (list.contains("chaos")) {
+            new WatchdogChaosBench(20).run();
         }
         if (list.contains("chaos") || list.contains("hostile")) {
             new HostileClientsBench(option(list, "--hostile", 1_000), option(list, "--attack-seconds", 60)).run();
