@@ -107,12 +107,17 @@ public final class StatusCommand implements Callable<Integer> {
         }
         if (st.has("sockets")) {
             out.println();
-            out.printf(Locale.ROOT, "%-18s %6s %8s %10s %8s  %s%n", "SOCKET", "PORT", "CLIENTS", "LINES OUT", "DROPS",
-                    "COMMANDED BY");
+            out.printf(Locale.ROOT, "%-18s %6s %8s %10s %8s %8s %8s  %s%n", "SOCKET", "PORT", "CLIENTS", "LINES OUT",
+                    "DROPS", "EVICTED", "TIMEOUTS", "COMMANDED BY");
             for (JsonNode s : st.path("sockets")) {
-                out.printf(Locale.ROOT, "%-18s %6d %8d %10d %8d  %s%n", s.path("socket").asText(), s.path("port").asInt(),
-                        s.path("clients").asInt(), s.path("linesOut").asLong(), s.path("dropped").asLong(),
-                        commander(s.path("control")));
+                out.printf(Locale.ROOT, "%-18s %6d %8d %10d %8d %8d %8d  %s%n", s.path("socket").asText(),
+                        s.path("port").asInt(), s.path("clients").asInt(), s.path("linesOut").asLong(),
+                        s.path("dropped").asLong(), s.path("evicted").asLong(),
+                        s.path("idleTimeouts").asLong() + s.path("frameTimeouts").asLong(), commander(s.path("control")));
+            }
+            if (st.has("blocks")) {
+                out.printf(Locale.ROOT, "blocks in flight: %d of %d bytes%n", st.path("blocks").path("bytesInFlight")
+                        .asLong(), st.path("blocks").path("budgetBytes").asLong());
             }
         }
         out.println("(* = not ready yet)");

@@ -96,9 +96,25 @@ public final class ConfigSchema {
                 "maxBinaryBytes", integer(1, ConfigLoader.MAX_BINARY_BYTES, d.maxBinaryBytes(),
                         "The largest \"bytes\" block accepted after a line [bytes]"),
                 "maxClientsPerPort", integer(1, ConfigLoader.MAX_CLIENTS_PER_PORT, d.maxClientsPerPort(),
-                        "Control clients at once on one method's port"),
+                        "Clients (connections that have sent a request) at once on one port"),
+                "maxPendingPerPort", integer(1, ConfigLoader.MAX_PENDING_PER_PORT, d.maxPendingPerPort(),
+                        "Connections at once on one port that have sent no request yet; the one waiting longest "
+                                + "gives way to a newcomer"),
                 "clientQueueSamples", integer(1, ConfigLoader.MAX_CLIENT_QUEUE_SAMPLES, d.clientQueueSamples(),
-                        "Samples waiting for one slow client before the oldest are dropped")));
+                        "Samples waiting for one slow client before the oldest are dropped"),
+                "idleTimeoutMs", integer(0, ConfigLoader.MAX_MS, d.idleTimeoutMs(),
+                        "Close a connection that has sent no frame and taken no byte for this long; 0: never [ms]"),
+                "frameTimeoutMs", integer(1, ConfigLoader.MAX_MS, d.frameTimeoutMs(),
+                        "A frame a peer has begun to send must arrive whole within this time; the status "
+                                + "endpoint's answer must be taken within it [ms]"),
+                "evictableIdleMs", integer(0, ConfigLoader.MAX_MS, d.evictableIdleMs(),
+                        "On a full port, a client idle this long may be evicted to admit a newcomer [ms]"),
+                "socketBlockBudgetBytes", integer(1, ConfigLoader.MAX_BLOCK_BUDGET_BYTES, d.socketBlockBudgetBytes(),
+                        "Memory for \"bytes\" blocks in flight on one port, all its connections together; "
+                                + "not below maxBinaryBytes (when left out: at least maxBinaryBytes) [bytes]"),
+                "processBlockBudgetBytes", integer(1, ConfigLoader.MAX_BLOCK_BUDGET_BYTES, d.processBlockBudgetBytes(),
+                        "Memory for blocks in flight on every port of the process together; not below "
+                                + "socketBlockBudgetBytes [bytes]")));
     }
 
     private static ObjectNode iface(PluginRegistry registry) {

@@ -16,6 +16,7 @@ import org.habla.driver.ChannelDescriptor;
 import org.habla.graph.EngineClock;
 import org.habla.graph.GraphTap;
 import org.habla.graph.MethodGraph;
+import org.habla.net.BlockBudget;
 import org.habla.graph.OutputInfo;
 import org.habla.monitor.LiveGraph;
 import org.habla.monitor.Monitor;
@@ -43,6 +44,8 @@ public final class Daemon implements AutoCloseable {
     private final MethodGraph graph;
     private final EngineClock clock;
     private final Map<String, ControlServer> servers = new LinkedHashMap<>();
+    /** Memory for blocks clients are sending, on every control socket together. */
+    private final BlockBudget blockBudget;
     private final Map<String, Bridge> bridges = new LinkedHashMap<>();
     private StatusServer statusServer;
     private Monitor monitor;
@@ -52,6 +55,7 @@ public final class Daemon implements AutoCloseable {
         this.config = config;
         this.graph = graph;
         this.clock = clock;
+        this.blockBudget = BlockBudget.of("limits.processBlockBudgetBytes", config.limits().processBlockBudgetBytes());
     }
 
     /**
@@ -98,7 +102,8 @@ public final class Daemon implements AutoCloseable {
         Daemon d = new Daemon(config, graph, clock);
         try {
             for (ControlPoint point : d.graph.controlPoints()) {
-                ControlServer server = new ControlServer(point, d.graph.exposeOf(point), config.limits());
+                ControlServer server = new ControlServer(point, d.graph.exposeOf(point), config.limits(),
+                        d.blockBudget);
                 d.servers.put(point.name(), server);
                 server.start();
             }
@@ -110,7 +115,7 @@ public final class Daemon implements AutoCloseable {
                 }
             }
             if (config.status().port() > 0) {
-                d.statusServer = new StatusServer(config.status(), d::status);
+                d.statusServer = new StatusServer(config.status(), config.limits(), d::status);
                 d.statusServer.start();
             }
             if (config.status().monitorPort() > 0) {
@@ -193,11 +198,19 @@ public final class Daemon implements AutoCloseable {
         ObjectNode st = graph.status();
         ArrayNode sockets = st.putArray("sockets");
         servers.values().forEach(s -> sockets.add(s.stats()));
+        st.putObject("blocks")
+                .put("bytesInFlight", blockBudget.reserved())
+                .put("budgetBytes", blockBudget.limitBytes());
         if (!bridges.isEmpty()) {
             ArrayNode bs = st.putArray("bridges");
             bridges.forEach((id, b) -> bs.add(b.status().put("id", id)));
         }
         return st;
+    }
+
+    /** Bytes the control sockets hold now for blocks still arriving (the daemon's own count). */
+    public long blockBytesInFlight() {
+        return blockBudget.reserved();
     }
 
     /** Stops the actuators first, then closes the sockets, then stops the graph. Safe to call twice. */

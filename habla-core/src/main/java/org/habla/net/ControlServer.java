@@ -3,7 +3,6 @@ package org.habla.net;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
@@ -28,11 +27,16 @@ import org.slf4j.LoggerFactory;
  * <pre>
  *   engine --samples, staleness--&gt; listener (encodes once, only enqueues) --&gt; client 1 outbox --&gt; writer
  *                                                                       \--&gt; client 2 outbox --&gt; writer
- *   acceptor thread --&gt; ControlClient per connection (virtual threads), at most maxClientsPerPort
+ *   acceptor thread --&gt; ConnectionGuard (cap, eviction, deadlines) --&gt; ControlClient per connection
+ *                                                                       (virtual threads)
  * </pre>
  *
  * The engine's listener never blocks and never does I/O; a client that stops reading loses its oldest
- * samples (counted, and told) and delays nobody else.
+ * samples (counted, and told) and delays nobody else. A newcomer is always let in; at most
+ * {@code maxPendingPerPort} connections wait without having sent a request and at most
+ * {@code maxClientsPerPort} clients hold the port, and a full port evicts one that only holds its place
+ * ({@link AdmissionPolicy}). The blocks clients write reserve their memory from the port's
+ * {@link BlockBudget} as they arrive.
  */
 public final class ControlServer implements AutoCloseable {
 
@@ -43,6 +47,8 @@ public final class ControlServer implements AutoCloseable {
     private final Limits limits;
     private final ControlProtocol protocol;
     private final ControlLease lease;
+    private final ConnectionGuard guard;
+    private final BlockBudget budget;
     private final List<ControlClient> clients = new CopyOnWriteArrayList<>();
     private final Counters counters = new Counters();
     private final AtomicLong droppedByGone = new AtomicLong();
@@ -53,18 +59,26 @@ public final class ControlServer implements AutoCloseable {
     /** The server's running counts. */
     static final class Counters {
         final AtomicLong connections = new AtomicLong();
-        final AtomicLong refused = new AtomicLong();
         final AtomicLong linesIn = new AtomicLong();
         final AtomicLong linesOut = new AtomicLong();
         final AtomicLong errors = new AtomicLong();
     }
 
+    /** A server with a block budget of its own for the process's share (one server alone, tests). */
     public ControlServer(ControlPoint point, Expose expose, Limits limits) {
+        this(point, expose, limits, BlockBudget.of("limits.processBlockBudgetBytes", limits.processBlockBudgetBytes()));
+    }
+
+    /** A server whose port's block budget is part of {@code processBudget}, shared by every port of the daemon. */
+    public ControlServer(ControlPoint point, Expose expose, Limits limits, BlockBudget processBudget) {
         this.point = Objects.requireNonNull(point, "point");
         this.expose = Objects.requireNonNull(expose, "expose");
         this.limits = Objects.requireNonNull(limits, "limits");
         this.lease = point.lease().orElse(null);
         this.protocol = new ControlProtocol(point, limits, lease);
+        this.guard = new ConnectionGuard("control socket '" + point.name() + "'", limits.maxClientsPerPort(),
+                "limits.maxClientsPerPort", limits);
+        this.budget = processBudget.child("limits.socketBlockBudgetBytes", limits.socketBlockBudgetBytes());
     }
 
     /** Binds the port and starts accepting clients. */
@@ -76,7 +90,7 @@ public final class ControlServer implements AutoCloseable {
         ServerSocket server = new ServerSocket();
         try {
             server.setReuseAddress(true);
-            server.bind(new InetSocketAddress(InetAddress.getByName(bind), expose.port()), 50);
+            server.bind(new InetSocketAddress(InetAddress.getByName(bind), expose.port()), ConnectionGuard.ACCEPT_BACKLOG);
         } catch (IOException e) {
             server.close();
             throw new IOException("control socket '" + point.name() + "' of method " + point.methodId()
@@ -84,6 +98,7 @@ public final class ControlServer implements AutoCloseable {
         }
         listener = server;
         subscription = point.subscribe(new Fanout());
+        guard.start();
         Thread acceptor = new Thread(this::acceptLoop, "control-" + point.name() + "-accept");
         acceptor.setDaemon(true);
         acceptor.start();
@@ -117,15 +132,22 @@ public final class ControlServer implements AutoCloseable {
                 .put("port", listener == null ? expose.port() : port())
                 .put("clients", clients.size())
                 .put("connections", counters.connections.get())
-                .put("refused", counters.refused.get())
+                .put("refused", guard.refusedTotal())
                 .put("linesIn", counters.linesIn.get())
                 .put("linesOut", counters.linesOut.get())
                 .put("dropped", dropped)
                 .put("errors", counters.errors.get());
+        guard.putStats(stats);
+        stats.put("blockBytes", budget.reserved());
         if (lease != null) {
             stats.set("control", lease.status());
         }
         return stats;
+    }
+
+    /** Bytes this port holds now for blocks still arriving. */
+    public long blockBytesInFlight() {
+        return budget.reserved();
     }
 
     @Override
@@ -135,6 +157,7 @@ public final class ControlServer implements AutoCloseable {
         if (s != null) {
             s.close();
         }
+        guard.close();
         ServerSocket l = listener;
         if (l != null) {
             try {
@@ -172,29 +195,19 @@ public final class ControlServer implements AutoCloseable {
 
     private void admit(Socket socket, long n) throws IOException {
         socket.setTcpNoDelay(true);
-        if (clients.size() >= limits.maxClientsPerPort()) {
-            counters.refused.incrementAndGet();
-            LOG.warn("control socket '{}': refusing {}: {} clients already", point.name(),
-                    socket.getRemoteSocketAddress(), clients.size());
-            socket.setSoTimeout(1_000);
-            OutputStream out = socket.getOutputStream();
-            new FrameWriter(out).send(ControlProtocol.error("too_many_clients", "socket '" + point.name()
-                    + "' already has maxClientsPerPort=" + limits.maxClientsPerPort() + " clients", null).header());
-            socket.shutdownOutput();
-            closeQuietly(socket);
-            return;
-        }
-        counters.connections.incrementAndGet();
         String label = "control-" + point.name() + "-" + n;
         ControlClient[] self = new ControlClient[1];
         ClientId id = new ClientId(point.name() + "#" + n,
                 socket.getInetAddress().getHostAddress() + ":" + socket.getPort());
-        self[0] = new ControlClient(socket, label, id, protocol, limits, counters, () -> {
+        self[0] = new ControlClient(socket, label, id, protocol, limits, budget, guard, counters, () -> {
+            guard.left(self[0]);
             if (clients.remove(self[0])) {
                 droppedByGone.addAndGet(self[0].dropped());
             }
         });
-        clients.add(self[0]);
+        clients.add(self[0]); // before admission: if it is evicted at once, its close removes it again
+        guard.admit(self[0]);
+        counters.connections.incrementAndGet();
         LOG.debug("{}: connected from {}", label, socket.getRemoteSocketAddress());
         self[0].start();
     }

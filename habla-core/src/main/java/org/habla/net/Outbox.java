@@ -173,6 +173,28 @@ final class Outbox {
         }
     }
 
+    /**
+     * Drops whatever waits and accepts nothing more but {@code last}, which {@link #take} hands out next
+     * (an eviction's error line); then {@code take} returns {@code null}.
+     */
+    void finishWith(Frame last) {
+        lock.lock();
+        try {
+            if (finished) {
+                return;
+            }
+            queue.clear();
+            held.clear();
+            samples = 0;
+            replies = 0;
+            queue.add(new Entry(last, Kind.REPLY));
+            finished = true;
+            changed.signalAll();
+        } finally {
+            lock.unlock();
+        }
+    }
+
     long droppedTotal() {
         lock.lock();
         try {

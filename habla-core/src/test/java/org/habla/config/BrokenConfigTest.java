@@ -27,6 +27,7 @@ class BrokenConfigTest {
         system-not-a-string               | $.system                        | must be a string, not a number (5)
         limit-not-an-integer              | $.limits.maxLineBytes           | must be an integer in 1..16777216, not a string ("64k")
         limit-zero                        | $.limits.maxClientsPerPort      | must be in 1..1024, was 0
+        limit-socket-budget-below-largest-block | $.limits.socketBlockBudgetBytes | must not be less than maxBinaryBytes (33554432)
         safety-unknown-key                | $.safety.watchdog               | unknown key 'watchdog' (allowed: watchdogMs)
         status-port-out-of-range          | $.status.port                   | must be in 0..65535, was 70000
         interfaces-not-an-array           | $.interfaces                    | must be an array, not an object

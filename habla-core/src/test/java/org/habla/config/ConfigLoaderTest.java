@@ -57,6 +57,18 @@ class ConfigLoaderTest {
     }
 
     @Test
+    void everySocketLimitIsReadAndBudgetsLeftOutGrowWithTheLargestBlock() throws Exception {
+        HablaConfig config = loader.parse("""
+                {"system": "s", "limits": {"maxPendingPerPort": 32, "idleTimeoutMs": 0, "frameTimeoutMs": 2500,
+                  "evictableIdleMs": 700, "processBlockBudgetBytes": 100000000}}""");
+        assertThat(config.limits()).isEqualTo(Limits.DEFAULTS.withCaps(16, 32).withDeadlines(0, 2_500, 700)
+                .withBlockBudgets(Limits.SOCKET_BLOCK_BUDGET_BYTES, 100_000_000));
+        Limits big = loader.parse("{\"system\": \"s\", \"limits\": {\"maxBinaryBytes\": 100000000}}").limits();
+        assertThat(big.socketBlockBudgetBytes()).isEqualTo(100_000_000);
+        assertThat(big.processBlockBudgetBytes()).isEqualTo(100_000_000);
+    }
+
+    @Test
     void absentSectionsTakeTheirDefaults() throws Exception {
         HablaConfig config = loader.parse("{\"system\": \"bare\"}");
 
