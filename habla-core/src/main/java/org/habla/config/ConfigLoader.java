@@ -37,7 +37,7 @@ public final class ConfigLoader {
     static final Set<String> INTERFACE_KEYS = Set.of("id", "driver", "address", "params", "reconnect");
     static final Set<String> RECONNECT_KEYS = Set.of("initialMs", "maxMs", "connectTimeoutMs", "readTimeoutMs");
     static final Set<String> METHOD_KEYS =
-            Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host", "fallback");
+            Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host", "fallback", "feedback");
     static final Set<String> EXPOSE_KEYS = Set.of("port", "name", "bind");
 
     /** The keys of each fixed object of the format, by where it sits ({@code []} stands for any element). */

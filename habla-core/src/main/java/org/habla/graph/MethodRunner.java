@@ -16,6 +16,7 @@ import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 import org.habla.driver.ChannelDescriptor;
+import org.habla.method.Delivery;
 import org.habla.method.Input;
 import org.habla.method.Method;
 import org.habla.method.MethodContext;
@@ -66,6 +67,15 @@ final class MethodRunner implements MethodContext {
 
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
             WorkCount work, GraphTap tap) {
+        this(id, type, method, clock, backgroundPool, work, tap, java.util.Set.of());
+    }
+
+    /**
+     * A runner whose inputs named in {@code latestInputs} (the wires of a declared cycle) hold only the newest
+     * sample, whatever delivery the method type asks for.
+     */
+    MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
+            WorkCount work, GraphTap tap, java.util.Set<String> latestInputs) {
         this.work = work;
         this.tap = tap;
         this.id = id;
@@ -74,7 +84,8 @@ final class MethodRunner implements MethodContext {
         this.clock = clock;
         this.backgroundPool = backgroundPool;
         for (Input<?> in : method.inputs()) {
-            InputSlot slot = new InputSlot(in, this::wake, work);
+            InputSlot slot = new InputSlot(in, latestInputs.contains(in.name()) ? Delivery.latest() : in.delivery(),
+                    this::wake, work);
             slots.add(slot);
             slotByInput.put(in, slot);
         }
@@ -405,7 +416,7 @@ final class MethodRunner implements MethodContext {
         ObjectNode inputs = n.putObject("inputs");
         for (InputSlot slot : slots) {
             ObjectNode i = inputs.putObject(slot.input().name());
-            i.put("delivery", slot.input().delivery().mode().name().toLowerCase(java.util.Locale.ROOT));
+            i.put("delivery", slot.delivery().mode().name().toLowerCase(java.util.Locale.ROOT));
             i.put("depth", slot.depth());
             i.put("offered", slot.offered());
             i.put("dropped", slot.dropped());
