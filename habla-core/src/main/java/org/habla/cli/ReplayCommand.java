@@ -7,6 +7,7 @@ import java.nio.file.Path;
 import java.util.Optional;
 import java.util.concurrent.Callable;
 import org.habla.config.ConfigException;
+import org.habla.daemon.PortsUnavailableException;
 import org.habla.plugin.PluginRegistry;
 import org.habla.recording.RecordingException;
 import org.habla.replay.ReplayResult;
@@ -100,6 +101,9 @@ public final class ReplayCommand implements Callable<Integer> {
             });
         } catch (FileAlreadyExistsException e) {
             return fail(err, recordTo + " already exists; a recording is never overwritten", ExitCodes.USAGE_OR_CONFIG);
+        } catch (PortsUnavailableException e) {
+            ConfigReport.errors(err, override != null ? override : file, e.errors(), "the replay does not start");
+            return ExitCodes.USAGE_OR_CONFIG;
         } catch (IOException | RecordingException e) {
             return fail(err, e.getMessage(), ExitCodes.RUNTIME_FAILURE);
         }

@@ -6,6 +6,7 @@ import java.io.IOException;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.habla.config.ConfigError;
 import org.habla.config.HablaConfig;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.graph.EngineClock;
@@ -75,17 +76,52 @@ public final class Daemon implements AutoCloseable {
         }
     }
 
-    /** Starts the control sockets and the status endpoint around a built graph, then the graph. */
+    /**
+     * Checks that every port the config names can be listened on, without listening on any.
+     *
+     * @throws PortsUnavailableException naming each port that cannot be had, at its JSON path
+     */
+    public static void checkPorts(HablaConfig config) throws PortsUnavailableException {
+        List<ConfigError> taken = PortCheck.unavailable(config);
+        if (!taken.isEmpty()) {
+            throw new PortsUnavailableException(taken);
+        }
+    }
+
+    /**
+     * Binds every port first — the control sockets and the status endpoint — and only when all are held starts
+     * serving them and the graph. A port that cannot be had stops the start before anything served or moved.
+     */
     private static Daemon assemble(HablaConfig config, MethodGraph graph, EngineClock clock) throws IOException {
+        try {
+            checkPorts(config);
+        } catch (PortsUnavailableException e) {
+            graph.close();
+            throw e;
+        }
         Daemon d = new Daemon(config, graph, clock);
         try {
             for (ControlPoint point : d.graph.controlPoints()) {
                 ControlServer server = new ControlServer(point, d.graph.exposeOf(point), config.limits());
                 d.servers.put(point.name(), server);
-                server.start();
+                try {
+                    server.bind();
+                } catch (IOException e) {
+                    throw new PortsUnavailableException(List.of(PortCheck.controlSocketError(config, point.methodId(), e)));
+                }
             }
             if (config.status().port() > 0) {
                 d.statusServer = new StatusServer(config.status(), d::status);
+                try {
+                    d.statusServer.bind();
+                } catch (IOException e) {
+                    throw new PortsUnavailableException(List.of(new ConfigError("$.status.port", e.getMessage())));
+                }
+            }
+            for (ControlServer server : d.servers.values()) {
+                server.start();
+            }
+            if (d.statusServer != null) {
                 d.statusServer.start();
             }
             d.graph.start();

@@ -64,12 +64,15 @@ public final class ControlServer implements AutoCloseable {
         this.protocol = new ControlProtocol(point, limits);
     }
 
-    /** Binds the port and starts accepting clients. */
-    public void start() throws IOException {
+    /**
+     * Binds the port without accepting anyone yet, so a daemon can hold all its ports before it serves on any.
+     * A connection that arrives before {@link #start} waits in the backlog (and is reset if the server closes).
+     */
+    public void bind() throws IOException {
         if (listener != null) {
-            throw new IllegalStateException("control socket '" + point.name() + "' is already started");
+            throw new IllegalStateException("control socket '" + point.name() + "' is already bound");
         }
-        String bind = expose.bind() == null || expose.bind().isBlank() ? "127.0.0.1" : expose.bind();
+        String bind = bindAddress();
         ServerSocket server = new ServerSocket();
         try {
             server.setReuseAddress(true);
@@ -80,11 +83,26 @@ public final class ControlServer implements AutoCloseable {
                     + " cannot listen on " + bind + ":" + expose.port() + ": " + e.getMessage(), e);
         }
         listener = server;
+    }
+
+    /** Binds the port if {@link #bind} was not called, and starts accepting clients. */
+    public void start() throws IOException {
+        if (subscription != null) {
+            throw new IllegalStateException("control socket '" + point.name() + "' is already started");
+        }
+        if (listener == null) {
+            bind();
+        }
+        String bind = bindAddress();
         subscription = point.subscribe(new Fanout());
         Thread acceptor = new Thread(this::acceptLoop, "control-" + point.name() + "-accept");
         acceptor.setDaemon(true);
         acceptor.start();
         LOG.info("control socket '{}' of method {} listening on {}:{}", point.name(), point.methodId(), bind, port());
+    }
+
+    private String bindAddress() {
+        return expose.bind() == null || expose.bind().isBlank() ? "127.0.0.1" : expose.bind();
     }
 
     /** The bound port (useful when the config asked for port 0). */

@@ -123,6 +123,7 @@ public final class Replayer {
             throws IOException, RecordingException, InterruptedException {
         boolean recordedTicks = hasTicks();
         ReplayClock clock = new ReplayClock(header.startMicros());
+        Daemon.checkPorts(config);
         Recorder recorder = null;
         if (recordTo.isPresent()) {
             recorder = Recorder.create(recordTo.get(), new RecordingHeader(header.startMicros(), header.timeScale(),

@@ -36,19 +36,33 @@ public final class StatusServer implements AutoCloseable {
         this.snapshot = Objects.requireNonNull(snapshot, "snapshot");
     }
 
-    /** Binds and starts answering; does nothing when the config's port is 0 (the endpoint is off). */
+    /**
+     * Binds the config's port without answering anyone yet (so a daemon holds all its ports before it serves on
+     * any); does nothing when the port is 0 (the endpoint is off).
+     */
+    public void bind() throws IOException {
+        bind(config.port());
+    }
+
+    /** Binds (unless {@link #bind} did) and starts answering; does nothing when the config's port is 0. */
     public void start() throws IOException {
-        start(config.port());
+        if (listener == null) {
+            bind(config.port());
+        }
+        accept();
     }
 
     /** Binds to an ephemeral port whatever the config says (tests, several daemons on one machine). */
     public void startOnAnyPort() throws IOException {
-        start(-1);
+        bind(-1);
+        accept();
     }
 
-    private void start(int port) throws IOException {
+    private void bind(int port) throws IOException {
+        if (listener != null) {
+            throw new IllegalStateException("the status endpoint is already bound");
+        }
         if (port == 0) {
-            LOG.info("status endpoint is off (port 0)");
             return;
         }
         String bind = config.bind() == null || config.bind().isBlank() ? "127.0.0.1" : config.bind();
@@ -61,6 +75,15 @@ public final class StatusServer implements AutoCloseable {
             throw new IOException("status endpoint cannot listen on " + bind + ":" + port + ": " + e.getMessage(), e);
         }
         listener = server;
+    }
+
+    private void accept() {
+        ServerSocket server = listener;
+        if (server == null) {
+            LOG.info("status endpoint is off (port 0)");
+            return;
+        }
+        String bind = config.bind() == null || config.bind().isBlank() ? "127.0.0.1" : config.bind();
         Thread acceptor = new Thread(this::acceptLoop, "status-accept");
         acceptor.setDaemon(true);
         acceptor.start();
