@@ -75,7 +75,7 @@ final class ControlProtocol {
         h.putObject("limits")
                 .put("maxLineBytes", limits.maxLineBytes())
                 .put("maxBinaryBytes", limits.maxBinaryBytes())
-                .put("queueSamples", limits.clientQueueSamples());
+                .put("clientQueueSamples", limits.clientQueueSamples());
         return Frame.of(h);
     }
 
