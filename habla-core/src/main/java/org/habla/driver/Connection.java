@@ -11,8 +11,12 @@ import java.util.function.Supplier;
  * @param port             the TCP port on the interface's host
  * @param commandChannels  the command channels written through this connection
  * @param sessions         makes a fresh session for every (re)connection
+ * @param optional         whether the interface is up without it: a connection that carries no data the robot
+ *                         needs to stream (a menu server that only switches the others on). The engine still keeps
+ *                         it connected and reports it in the {@code link} record.
  */
-public record Connection(String name, int port, Set<String> commandChannels, Supplier<LinkSession> sessions) {
+public record Connection(String name, int port, Set<String> commandChannels, Supplier<LinkSession> sessions,
+        boolean optional) {
 
     public Connection {
         Objects.requireNonNull(name, "name");
@@ -21,5 +25,15 @@ public record Connection(String name, int port, Set<String> commandChannels, Sup
         }
         commandChannels = Set.copyOf(commandChannels);
         Objects.requireNonNull(sessions, "sessions");
+    }
+
+    /** A connection the interface needs to be up. */
+    public Connection(String name, int port, Set<String> commandChannels, Supplier<LinkSession> sessions) {
+        this(name, port, commandChannels, sessions, false);
+    }
+
+    /** This connection, marked optional: the interface is up while it is down. */
+    public Connection asOptional() {
+        return new Connection(name, port, commandChannels, sessions, true);
     }
 }

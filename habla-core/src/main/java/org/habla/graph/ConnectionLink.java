@@ -232,6 +232,9 @@ final class ConnectionLink {
         n.put("name", connection.name());
         n.put("port", connection.port());
         n.put("up", up);
+        if (connection.optional()) {
+            n.put("optional", true);
+        }
         n.put("connects", connects.get());
         n.put("failures", failures.get());
         if (!lastError.isEmpty()) {

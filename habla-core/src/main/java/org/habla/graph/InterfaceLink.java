@@ -205,8 +205,17 @@ final class InterfaceLink {
         }
     }
 
+    /**
+     * Whether the interface is up: every connection it needs is (a driver's optional connections, such as a menu
+     * server, do not count unless all of its connections are optional).
+     */
+    private boolean requiredUp() {
+        List<ConnectionLink> required = connections.stream().filter(c -> !c.connection().optional()).toList();
+        return (required.isEmpty() ? connections : required).stream().allMatch(ConnectionLink::up);
+    }
+
     private void connectionChanged() {
-        boolean all = connections.stream().allMatch(ConnectionLink::up);
+        boolean all = requiredUp();
         if (all != up) {
             up = all;
             tap.link(config.id(), all, clock.nowMicros());
@@ -214,6 +223,9 @@ final class InterfaceLink {
             for (Consumer<Boolean> l : stateListeners) {
                 l.accept(all);
             }
+        } else if (connections.size() > 1) {
+            // The interface stays up (or down), but the record says which connections are: tell it now.
+            publishLink();
         }
     }
 
@@ -223,14 +235,18 @@ final class InterfaceLink {
             return;
         }
         StringBuilder detail = new StringBuilder();
+        ObjectNode each = JsonNodeFactory.instance.objectNode();
         for (ConnectionLink c : connections) {
+            each.put(c.connection().name(), c.up());
             if (!c.up()) {
-                detail.append(detail.length() == 0 ? "" : "; ").append(c.connection().name()).append(" down")
+                detail.append(detail.length() == 0 ? "" : "; ").append(c.connection().name())
+                        .append(c.connection().optional() ? " (optional)" : "").append(" down")
                         .append(c.lastError().isEmpty() ? "" : ": " + c.lastError());
             }
         }
         RecordValue value = RecordValue.builder().put("up", up).put("interface", config.id())
-                .put("detail", detail.length() == 0 ? "all connections up" : detail.toString()).build();
+                .put("detail", detail.length() == 0 ? "all connections up" : detail.toString())
+                .set("connections", each).build();
         readings.get(Driver.LINK_CHANNEL.name()).publish(value, clock.nowMicros(), false,
                 s -> tap.reading(config.id(), Driver.LINK_CHANNEL.name(), s));
     }
