@@ -44,7 +44,14 @@ public final class ControlServer implements AutoCloseable {
     private final List<ControlClient> clients = new CopyOnWriteArrayList<>();
     private final Counters counters = new Counters();
     private final AtomicLong droppedByGone = new AtomicLong();
+    /**
+     * The longest {@link #close} waits for the acceptor to leave its {@code accept}: the operating system releases
+     * the port only then, so a daemon started right after this one closed can have it.
+     */
+    static final long ACCEPTOR_STOP_MILLIS = 2_000;
+
     private volatile ServerSocket listener;
+    private volatile Thread acceptor;
     private volatile ControlPoint.Subscription subscription;
     private volatile boolean closed;
 
@@ -95,9 +102,10 @@ public final class ControlServer implements AutoCloseable {
         }
         String bind = bindAddress();
         subscription = point.subscribe(new Fanout());
-        Thread acceptor = new Thread(this::acceptLoop, "control-" + point.name() + "-accept");
-        acceptor.setDaemon(true);
-        acceptor.start();
+        Thread a = new Thread(this::acceptLoop, "control-" + point.name() + "-accept");
+        a.setDaemon(true);
+        acceptor = a;
+        a.start();
         LOG.info("control socket '{}' of method {} listening on {}:{}", point.name(), point.methodId(), bind, port());
     }
 
@@ -151,8 +159,21 @@ public final class ControlServer implements AutoCloseable {
                 LOG.debug("closing control socket '{}': {}", point.name(), e.toString());
             }
         }
+        awaitAcceptorGone();
         for (ControlClient c : clients) {
             c.close();
+        }
+    }
+
+    private void awaitAcceptorGone() {
+        Thread a = acceptor;
+        if (a == null || a == Thread.currentThread()) {
+            return;
+        }
+        try {
+            a.join(ACCEPTOR_STOP_MILLIS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
     }
 

@@ -28,7 +28,11 @@ public final class StatusServer implements AutoCloseable {
 
     private final StatusConfig config;
     private final Supplier<ObjectNode> snapshot;
+    /** The longest {@link #close} waits for the acceptor to leave {@code accept}, which is when the port is released. */
+    private static final long ACCEPTOR_STOP_MILLIS = 2_000;
+
     private volatile ServerSocket listener;
+    private volatile Thread acceptor;
     private volatile boolean closed;
 
     public StatusServer(StatusConfig config, Supplier<ObjectNode> snapshot) {
@@ -84,9 +88,10 @@ public final class StatusServer implements AutoCloseable {
             return;
         }
         String bind = config.bind() == null || config.bind().isBlank() ? "127.0.0.1" : config.bind();
-        Thread acceptor = new Thread(this::acceptLoop, "status-accept");
-        acceptor.setDaemon(true);
-        acceptor.start();
+        Thread a = new Thread(this::acceptLoop, "status-accept");
+        a.setDaemon(true);
+        acceptor = a;
+        a.start();
         LOG.info("status endpoint listening on {}:{}", bind, server.getLocalPort());
     }
 
@@ -113,6 +118,14 @@ public final class StatusServer implements AutoCloseable {
                 s.close();
             } catch (IOException e) {
                 LOG.debug("closing the status endpoint: {}", e.toString());
+            }
+        }
+        Thread a = acceptor;
+        if (a != null && a != Thread.currentThread()) {
+            try {
+                a.join(ACCEPTOR_STOP_MILLIS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
             }
         }
     }
