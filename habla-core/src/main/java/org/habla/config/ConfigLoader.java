@@ -33,7 +33,7 @@ public final class ConfigLoader {
     static final Set<String> LIMITS_KEYS =
             Set.of("maxLineBytes", "maxBinaryBytes", "maxClientsPerPort", "clientQueueSamples");
     static final Set<String> SAFETY_KEYS = Set.of("watchdogMs");
-    static final Set<String> STATUS_KEYS = Set.of("bind", "port");
+    static final Set<String> STATUS_KEYS = Set.of("bind", "port", "monitorPort");
     static final Set<String> INTERFACE_KEYS = Set.of("id", "driver", "address", "params", "reconnect");
     static final Set<String> RECONNECT_KEYS = Set.of("initialMs", "maxMs", "connectTimeoutMs", "readTimeoutMs");
     static final Set<String> METHOD_KEYS =
@@ -177,6 +177,6 @@ public final class ConfigLoader {
         o.allowOnly(STATUS_KEYS);
         StatusConfig d = StatusConfig.DEFAULTS;
         return new StatusConfig(o.optionalString("bind").orElse(d.bind()),
-                (int) o.integer("port", d.port(), 0, 65_535));
+                (int) o.integer("port", d.port(), 0, 65_535), (int) o.integer("monitorPort", d.monitorPort(), 0, 65_535));
     }
 }

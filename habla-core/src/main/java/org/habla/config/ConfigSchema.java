@@ -52,7 +52,9 @@ public final class ConfigSchema {
                         "Stop the robot when no control client has written for this long; 0 turns the silence check off [ms]"))));
         p.set("status", object("The status endpoint read by `habla status`.").set("properties", props(
                 "bind", string("The address to listen on.").put("default", StatusConfig.DEFAULTS.bind()),
-                "port", integer(0, 65_535, StatusConfig.DEFAULTS.port(), "The TCP port; 0 turns the endpoint off."))));
+                "port", integer(0, 65_535, StatusConfig.DEFAULTS.port(), "The TCP port; 0 turns the endpoint off."),
+                "monitorPort", integer(0, 65_535, StatusConfig.DEFAULTS.monitorPort(),
+                        "The live monitor's port: a web page and the Foxglove WebSocket protocol; 0: no monitor."))));
         p.set("interfaces", NODES.objectNode().put("description", "The robot's interface servers.")
                 .put("type", "array").set("items", ref("interface")));
         p.set("methods", NODES.objectNode().put("description", "The methods of the graph.")

@@ -31,6 +31,10 @@ final class DuplicateCheck {
         if (status.port() != 0) {
             ports.put(Integer.toString(status.port()), new JsonPath(statusWhere));
         }
+        if (status.monitorPort() != 0) {
+            first(ports, Integer.toString(status.monitorPort()), new JsonPath("$.status.monitorPort"),
+                    "port " + status.monitorPort());
+        }
         for (MethodEntry m : methods) {
             if (m.id() != null) {
                 first(methodIds, m.id(), m.path().field("id"), "method id '" + m.id() + "'");

@@ -1,12 +1,18 @@
 package org.habla.config;
 
 /**
- * The status endpoint read by {@code habla status}.
+ * The status endpoint read by {@code habla status}, and the live monitor served beside it.
  *
- * @param bind the address to listen on
- * @param port the TCP port (0 turns the endpoint off)
+ * @param bind        the address both listen on
+ * @param port        the status endpoint's TCP port (0 turns it off)
+ * @param monitorPort the port of the live monitor: a web page and the Foxglove WebSocket protocol (0: no monitor)
  */
-public record StatusConfig(String bind, int port) {
+public record StatusConfig(String bind, int port, int monitorPort) {
 
-    public static final StatusConfig DEFAULTS = new StatusConfig("127.0.0.1", 7099);
+    public static final StatusConfig DEFAULTS = new StatusConfig("127.0.0.1", 7099, 0);
+
+    /** The status endpoint without a monitor. */
+    public StatusConfig(String bind, int port) {
+        this(bind, port, 0);
+    }
 }

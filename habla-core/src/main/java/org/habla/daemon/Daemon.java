@@ -6,12 +6,21 @@ import java.io.IOException;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Consumer;
 import org.habla.config.ConfigError;
 import org.habla.config.HablaConfig;
+import org.habla.config.MethodConfig;
+import org.habla.config.Source;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.graph.EngineClock;
 import org.habla.graph.GraphTap;
 import org.habla.graph.MethodGraph;
+import org.habla.graph.OutputInfo;
+import org.habla.monitor.LiveGraph;
+import org.habla.monitor.Monitor;
+import org.habla.draw.GraphPicture;
+import org.habla.draw.SvgWriter;
+import org.habla.sample.Sample;
 import org.habla.net.ControlPoint;
 import org.habla.net.ControlServer;
 import org.habla.plugin.PluginRegistry;
@@ -34,6 +43,7 @@ public final class Daemon implements AutoCloseable {
     private final EngineClock clock;
     private final Map<String, ControlServer> servers = new LinkedHashMap<>();
     private StatusServer statusServer;
+    private Monitor monitor;
     private volatile boolean closed;
 
     private Daemon(HablaConfig config, MethodGraph graph, EngineClock clock) {
@@ -55,7 +65,7 @@ public final class Daemon implements AutoCloseable {
     public static Daemon start(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap)
             throws IOException {
         checkPlacements(config);
-        return assemble(config, MethodGraph.build(config, registry, clock, tap), clock);
+        return assemble(config, registry, MethodGraph.build(config, registry, clock, tap), clock);
     }
 
     /**
@@ -65,7 +75,7 @@ public final class Daemon implements AutoCloseable {
     public static Daemon replaying(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
             Map<String, List<ChannelDescriptor>> channels) throws IOException {
         checkPlacements(config);
-        return assemble(config, MethodGraph.replaying(config, registry, clock, tap, channels), clock);
+        return assemble(config, registry, MethodGraph.replaying(config, registry, clock, tap, channels), clock);
     }
 
     /** Asks every worker the config places methods on whether it can run them. */
@@ -89,10 +99,12 @@ public final class Daemon implements AutoCloseable {
     }
 
     /**
-     * Binds every port first — the control sockets and the status endpoint — and only when all are held starts
-     * serving them and the graph. A port that cannot be had stops the start before anything served or moved.
+     * Binds every port first — the control sockets and the status endpoint, then the monitor — and only when all
+     * are held starts serving the control sockets and the status endpoint, then the graph. A port that cannot be had
+     * stops the start before any control socket served or anything moved.
      */
-    private static Daemon assemble(HablaConfig config, MethodGraph graph, EngineClock clock) throws IOException {
+    private static Daemon assemble(HablaConfig config, PluginRegistry registry, MethodGraph graph, EngineClock clock)
+            throws IOException {
         try {
             checkPorts(config);
         } catch (PortsUnavailableException e) {
@@ -118,6 +130,16 @@ public final class Daemon implements AutoCloseable {
                     throw new PortsUnavailableException(List.of(new ConfigError("$.status.port", e.getMessage())));
                 }
             }
+            if (config.status().monitorPort() > 0) {
+                // The monitor binds and serves in one step: it starts last of the ports, before any control
+                // socket serves, so a monitor port taken meanwhile still leaves the control sockets unused.
+                try {
+                    d.monitor = Monitor.start(config.status().bind(), config.status().monitorPort(), d.liveView(),
+                            SvgWriter.write(GraphPicture.of(config, registry)));
+                } catch (IOException e) {
+                    throw new PortsUnavailableException(List.of(new ConfigError("$.status.monitorPort", e.getMessage())));
+                }
+            }
             for (ControlServer server : d.servers.values()) {
                 server.start();
             }
@@ -129,8 +151,9 @@ public final class Daemon implements AutoCloseable {
             d.close();
             throw e;
         }
-        LOG.info("HABLA daemon '{}' running: {} control sockets{}", config.system(), d.servers.size(),
-                d.statusServer == null ? "" : ", status on port " + d.statusServer.port());
+        LOG.info("HABLA daemon '{}' running: {} control sockets{}{}", config.system(), d.servers.size(),
+                d.statusServer == null ? "" : ", status on port " + d.statusServer.port(),
+                d.monitor == null ? "" : ", monitor on http://" + config.status().bind() + ":" + d.monitor.port() + "/");
         return d;
     }
 
@@ -157,6 +180,43 @@ public final class Daemon implements AutoCloseable {
         return statusServer == null ? 0 : statusServer.port();
     }
 
+    /** The monitor's port, or 0 when there is no monitor. */
+    public int monitorPort() {
+        return monitor == null ? 0 : monitor.port();
+    }
+
+    /** What the monitor may read of this daemon: the status, the outputs and a tap on them; nothing to write. */
+    private LiveGraph liveView() {
+        return new LiveGraph() {
+            @Override
+            public ObjectNode status() {
+                return Daemon.this.status();
+            }
+
+            @Override
+            public Map<String, List<String>> inputs() {
+                Map<String, List<String>> reads = new LinkedHashMap<>();
+                for (MethodConfig m : config.methods()) {
+                    reads.put(m.id(), m.inputs().values().stream()
+                            .filter(s -> s instanceof Source.MethodOutput)
+                            .map(Source::text)
+                            .toList());
+                }
+                return reads;
+            }
+
+            @Override
+            public List<OutputInfo> outputs() {
+                return graph.outputs();
+            }
+
+            @Override
+            public AutoCloseable watchOutputs(Consumer<Sample> watcher) {
+                return graph.watchOutputs(watcher);
+            }
+        };
+    }
+
     /** The engine's status with the sockets' figures. */
     public ObjectNode status() {
         ObjectNode st = graph.status();
@@ -175,6 +235,9 @@ public final class Daemon implements AutoCloseable {
         LOG.info("HABLA daemon '{}' stopping: actuators first", config.system());
         graph.stopActuators("the daemon is shutting down");
         servers.values().forEach(ControlServer::close);
+        if (monitor != null) {
+            monitor.close();
+        }
         if (statusServer != null) {
             statusServer.close();
         }

@@ -32,11 +32,15 @@ final class PortCheck {
             if (m.expose().isPresent()) {
                 Expose x = m.expose().get();
                 String at = "$.methods[" + i + "].expose";
-                probe(at, "control socket '" + x.name() + "'", bindOf(x.bind()), x.port()).ifPresent(errors::add);
+                probe(at, "port", "control socket '" + x.name() + "'", bindOf(x.bind()), x.port()).ifPresent(errors::add);
             }
         }
         if (config.status().port() > 0) {
-            probe("$.status", "the status endpoint", bindOf(config.status().bind()), config.status().port())
+            probe("$.status", "port", "the status endpoint", bindOf(config.status().bind()), config.status().port())
+                    .ifPresent(errors::add);
+        }
+        if (config.status().monitorPort() > 0) {
+            probe("$.status", "monitorPort", "the monitor", bindOf(config.status().bind()), config.status().monitorPort())
                     .ifPresent(errors::add);
         }
         return errors;
@@ -56,7 +60,7 @@ final class PortCheck {
         return bind == null || bind.isBlank() ? "127.0.0.1" : bind;
     }
 
-    private static java.util.Optional<ConfigError> probe(String at, String what, String bind, int port) {
+    private static java.util.Optional<ConfigError> probe(String at, String portKey, String what, String bind, int port) {
         if (port <= 0) {
             return java.util.Optional.empty();
         }
@@ -72,7 +76,7 @@ final class PortCheck {
             probe.bind(new InetSocketAddress(address, port));
             return java.util.Optional.empty();
         } catch (IOException e) {
-            return java.util.Optional.of(new ConfigError(at + ".port", what + " cannot listen on " + bind + ":"
+            return java.util.Optional.of(new ConfigError(at + "." + portKey, what + " cannot listen on " + bind + ":"
                     + port + ": " + e.getMessage() + " (another program has the port, or the address is not this"
                     + " computer's)"));
         }

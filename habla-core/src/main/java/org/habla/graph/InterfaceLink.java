@@ -48,6 +48,8 @@ final class InterfaceLink {
     private volatile ObjectNode robotInfo = JsonNodeFactory.instance.objectNode();
     private volatile MotionWatchdog watchdog;
     private volatile boolean up;
+    /** When the link last went up or down (engine clock, µs); its start until the first change. */
+    private volatile long sinceMicros;
     private AutoCloseable linkTicker;
 
     /**
@@ -105,6 +107,7 @@ final class InterfaceLink {
     }
 
     void start() {
+        sinceMicros = clock.nowMicros();
         for (ConnectionLink c : connections) {
             c.start();
         }
@@ -171,6 +174,7 @@ final class InterfaceLink {
     void replayLink(boolean isUp) {
         if (isUp != up) {
             up = isUp;
+            sinceMicros = clock.nowMicros();
             tap.link(config.id(), isUp, clock.nowMicros());
             for (Consumer<Boolean> l : stateListeners) {
                 l.accept(isUp);
@@ -218,6 +222,7 @@ final class InterfaceLink {
         boolean all = requiredUp();
         if (all != up) {
             up = all;
+            sinceMicros = clock.nowMicros();
             tap.link(config.id(), all, clock.nowMicros());
             publishLink();
             for (Consumer<Boolean> l : stateListeners) {
@@ -257,6 +262,7 @@ final class InterfaceLink {
         n.put("driver", config.driver());
         n.put("address", config.address().toString());
         n.put("up", up);
+        n.put("sinceMicros", sinceMicros);
         if (replayed) {
             n.put("replayed", true);
         }

@@ -386,6 +386,34 @@ public final class MethodGraph implements AutoCloseable {
         return ((ExposedMethod) point).expose();
     }
 
+    /** Every method's outputs, in config order (method by method, each in declaration order). */
+    public List<OutputInfo> outputs() {
+        List<OutputInfo> all = new ArrayList<>();
+        for (MethodRunner r : runners.values()) {
+            for (Output<?> out : r.method().outputs()) {
+                all.add(new OutputInfo(r.id(), out.name(), out.shape()));
+            }
+        }
+        return all;
+    }
+
+    /**
+     * Hands every sample any method emits to {@code watcher}, on the thread that emits it, after the method's
+     * subscribers in the graph; the watcher must not block (a monitor keeps the newest few and returns).
+     * Closing the handle stops it.
+     */
+    public AutoCloseable watchOutputs(java.util.function.Consumer<org.habla.sample.Sample> watcher) {
+        List<Runnable> undo = new ArrayList<>();
+        for (MethodRunner r : runners.values()) {
+            for (Output<?> out : r.method().outputs()) {
+                OutputPort port = r.port(out);
+                port.subscribe(watcher);
+                undo.add(() -> port.unsubscribe(watcher));
+            }
+        }
+        return () -> undo.forEach(Runnable::run);
+    }
+
     /** Stops every motion now and keeps motion commands out until a control client writes again. */
     public void stopActuators(String reason) {
         watchdog.trip(reason);

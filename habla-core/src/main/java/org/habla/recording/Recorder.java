@@ -1,6 +1,5 @@
 package org.habla.recording;
 
-import java.io.BufferedOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.nio.file.Files;
@@ -12,7 +11,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import org.habla.graph.EngineClock;
 import org.habla.graph.GraphTap;
-import org.habla.net.FrameWriter;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.ImageFrame;
 import org.habla.sample.Sample;
@@ -51,11 +49,13 @@ public final class Recorder implements GraphTap, AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(Recorder.class);
     private static final RecordedEvent STOP = new RecordedEvent.End(0, 0, 0);
+    /** Marks the point up to which {@link #flush} waits; never written. */
+    private static final RecordedEvent FLUSH = new RecordedEvent.End(0, 0, 0);
 
     private final Path file;
     private final EngineClock clock;
     private final OutputStream stream;
-    private final FrameWriter out;
+    private final EventFile out;
     private final BlockingQueue<RecordedEvent> queue = new ArrayBlockingQueue<>(QUEUE_EVENTS + 1);
     private final AtomicLong queuedBytes = new AtomicLong();
     private final AtomicLong dropped = new AtomicLong();
@@ -63,12 +63,14 @@ public final class Recorder implements GraphTap, AutoCloseable {
     private final Thread writer;
     private volatile boolean closed;
     private volatile boolean failed;
+    private volatile long writerCpuAtEnd = -1;
+    private final java.util.concurrent.Semaphore flushed = new java.util.concurrent.Semaphore(0);
 
-    private Recorder(Path file, EngineClock clock, OutputStream stream) {
+    private Recorder(Path file, EngineClock clock, OutputStream stream, EventFile out) {
         this.file = file;
         this.clock = clock;
         this.stream = stream;
-        this.out = new FrameWriter(stream);
+        this.out = out;
         this.writer = new Thread(this::writeLoop, "habla-recorder");
         this.writer.setDaemon(true);
     }
@@ -79,9 +81,9 @@ public final class Recorder implements GraphTap, AutoCloseable {
      */
     public static Recorder create(Path file, RecordingHeader header, EngineClock clock) throws IOException {
         OutputStream s = Files.newOutputStream(file, StandardOpenOption.CREATE_NEW, StandardOpenOption.WRITE);
-        Recorder r = new Recorder(file, clock, s);
+        Recorder r;
         try {
-            r.out.send(RecordingCodec.header(header));
+            r = new Recorder(file, clock, s, EventFile.create(file, s, header));
         } catch (IOException e) {
             s.close();
             throw e;
@@ -98,6 +100,15 @@ public final class Recorder implements GraphTap, AutoCloseable {
     /** Events dropped because the writer fell behind. */
     public long dropped() {
         return dropped.get();
+    }
+
+    /** CPU time the writer thread has used so far (encoding, compressing, writing), ns; -1 if not measurable. */
+    public long writerCpuNanos() {
+        if (!writer.isAlive()) {
+            return writerCpuAtEnd;
+        }
+        java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+        return mx.isThreadCpuTimeSupported() ? mx.getThreadCpuTime(writer.threadId()) : -1;
     }
 
     /** Events written so far (the header not counted). */
@@ -175,15 +186,20 @@ public final class Recorder implements GraphTap, AutoCloseable {
                 if (e == STOP) {
                     break;
                 }
+                if (e == FLUSH) {
+                    out.flush();
+                    flushed.release();
+                    continue;
+                }
                 if (e != null) {
                     queuedBytes.addAndGet(-(e instanceof RecordedEvent.End ? 0 : bytesOf(e)));
-                    out.write(RecordingCodec.frame(e));
+                    out.write(e);
                     written.incrementAndGet();
                 }
                 if (System.nanoTime() - nextFlush >= 0) {
                     long d = dropped.get();
                     if (d != droppedWritten) {
-                        out.write(RecordingCodec.frame(new RecordedEvent.Dropped(clock.nowMicros(), d)));
+                        out.write(new RecordedEvent.Dropped(clock.nowMicros(), d));
                         droppedWritten = d;
                     }
                     out.flush();
@@ -191,19 +207,23 @@ public final class Recorder implements GraphTap, AutoCloseable {
                 }
             }
             for (RecordedEvent e = queue.poll(); e != null; e = queue.poll()) {
-                if (e != STOP) {
-                    out.write(RecordingCodec.frame(e));
+                if (e == FLUSH) {
+                    flushed.release();
+                } else if (e != STOP) {
+                    out.write(e);
                     written.incrementAndGet();
                 }
             }
-            out.write(RecordingCodec.frame(new RecordedEvent.End(clock.nowMicros(), written.get(), dropped.get())));
-            out.flush();
+            out.write(new RecordedEvent.End(clock.nowMicros(), written.get(), dropped.get()));
+            out.finish();
         } catch (IOException e) {
             failed = true;
             LOG.error("recording {} stopped: cannot write: {}", file, e.toString());
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } finally {
+            java.lang.management.ThreadMXBean mx = java.lang.management.ManagementFactory.getThreadMXBean();
+            writerCpuAtEnd = mx.isCurrentThreadCpuTimeSupported() ? mx.getCurrentThreadCpuTime() : -1;
             try {
                 stream.close();
             } catch (IOException e) {
@@ -220,6 +240,17 @@ public final class Recorder implements GraphTap, AutoCloseable {
             case RecordedEvent.Output o -> bytes(o.sample());
             default -> 0;
         };
+    }
+
+    /**
+     * Waits until every event offered before this call is written and handed to the operating system (for
+     * MCAP, its chunk is closed); false if the writer did not get there within {@code timeoutMillis}.
+     */
+    public boolean flush(long timeoutMillis) throws InterruptedException {
+        if (closed || failed || !queue.offer(FLUSH)) {
+            return false;
+        }
+        return flushed.tryAcquire(timeoutMillis, TimeUnit.MILLISECONDS);
     }
 
     /** Writes what is queued, then the end record, and closes the file. Safe to call twice. */

@@ -24,7 +24,7 @@ import org.habla.net.Frame;
  * and every record before it reads back — or damage: a complete record that cannot be read, or a bad record
  * with whole records after it ({@link Cut}). Not thread-safe.
  */
-public final class RecordingReader implements AutoCloseable {
+public final class RecordingReader implements RecordingSource {
 
     /** The longest header line read (the config record is the largest). */
     public static final int MAX_LINE_BYTES = 16 << 20;
@@ -76,6 +76,7 @@ public final class RecordingReader implements AutoCloseable {
         }
     }
 
+    @Override
     public RecordingHeader header() {
         return header;
     }
@@ -167,7 +168,7 @@ public final class RecordingReader implements AutoCloseable {
      * whole record follows; a complete record that is bad, or one with whole records after it, is damage.
      */
     private Frame stop(long start, String reason, boolean fileEndsInside) throws IOException {
-        OptionalLong next = WholeRecordSearch.after(file, start, size);
+        OptionalLong next = WholeRecordSearch.after(file, start, size, WholeRecordSearch.LINE_RECORD);
         cut = fileEndsInside && next.isEmpty() ? Cut.tornEnd(start, size - start, reason)
                 : new Cut(start, size - start, reason, true, next);
         ended = true;

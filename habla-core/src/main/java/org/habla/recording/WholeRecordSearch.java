@@ -12,14 +12,38 @@ import java.nio.file.StandardOpenOption;
 import java.util.OptionalLong;
 
 /**
- * Looks past a record that could not be read for the next whole one, to tell damage from a torn end. A whole
- * record starts with the bytes {@code {"type":"} (as a recorder writes every record, {@code type} first), its
- * line is a JSON object with a numeric {@code "t"}, ends with {@code \n}, and the binary block it declares fits
- * in the file. A record may start anywhere (right after another's binary block, not only after a newline), so
- * every {@code {} is a candidate; the prefix rules out nearly all of them at once. One pass from the bad record
- * to the end of the file, in blocks of {@value #BLOCK_BYTES} bytes.
+ * Looks past a record that could not be read for the next whole one, to tell damage from a torn end: a kill leaves
+ * nothing whole after the record it tore. A record may start anywhere after the bad one (right after another's
+ * binary block, inside what a corrupted length swallowed), so every byte that can begin a record of the format is a
+ * candidate, and the format's {@link Probe} rules nearly all of them out from their first bytes. One pass from the
+ * bad record to the end of the file, in blocks of {@value #BLOCK_BYTES} bytes.
  */
 final class WholeRecordSearch {
+
+    /** How a format's whole record looks from its first byte on. */
+    interface Probe {
+        /** The byte every record of the format begins with. */
+        byte firstByte();
+
+        /** Whether a whole record starts at {@code at} of a file of {@code size} bytes. */
+        boolean wholeRecordAt(FileChannel ch, long at, long size) throws IOException;
+    }
+
+    /**
+     * The line format's records: they begin with {@code {"type":"} (a recorder writes {@code type} first), the line
+     * is a JSON object with a numeric {@code "t"} ended by {@code \n}, and the binary block it declares fits.
+     */
+    static final Probe LINE_RECORD = new Probe() {
+        @Override
+        public byte firstByte() {
+            return '{';
+        }
+
+        @Override
+        public boolean wholeRecordAt(FileChannel ch, long at, long size) throws IOException {
+            return startsWholeLine(ch, at, size);
+        }
+    };
 
     private static final ObjectMapper JSON = new ObjectMapper();
     private static final byte[] PREFIX = "{\"type\":\"".getBytes(StandardCharsets.US_ASCII);
@@ -29,9 +53,10 @@ final class WholeRecordSearch {
     }
 
     /** The offset of the first whole record that starts after {@code from}, if any. */
-    static OptionalLong after(Path file, long from, long size) throws IOException {
+    static OptionalLong after(Path file, long from, long size, Probe probe) throws IOException {
         try (FileChannel ch = FileChannel.open(file, StandardOpenOption.READ)) {
             ByteBuffer block = ByteBuffer.allocate(BLOCK_BYTES);
+            byte first = probe.firstByte();
             for (long base = from + 1; base < size; ) {
                 block.clear();
                 int n = ch.read(block, base);
@@ -39,7 +64,7 @@ final class WholeRecordSearch {
                     break;
                 }
                 for (int i = 0; i < n; i++) {
-                    if (block.get(i) == '{' && startsWholeRecord(ch, base + i, size)) {
+                    if (block.get(i) == first && probe.wholeRecordAt(ch, base + i, size)) {
                         return OptionalLong.of(base + i);
                     }
                 }
@@ -49,12 +74,18 @@ final class WholeRecordSearch {
         return OptionalLong.empty();
     }
 
-    private static boolean startsWholeRecord(FileChannel ch, long at, long size) throws IOException {
-        ByteBuffer prefix = ByteBuffer.allocate(PREFIX.length);
-        while (prefix.hasRemaining() && ch.read(prefix, at + prefix.position()) > 0) {
-            // fill the prefix
+    /** Reads exactly {@code n} bytes at {@code at}, or fewer at the end of the file. */
+    static ByteBuffer read(FileChannel ch, long at, int n) throws IOException {
+        ByteBuffer b = ByteBuffer.allocate(n);
+        while (b.hasRemaining() && ch.read(b, at + b.position()) > 0) {
+            // fill
         }
-        if (prefix.hasRemaining() || !java.util.Arrays.equals(prefix.array(), PREFIX)) {
+        return b.flip();
+    }
+
+    private static boolean startsWholeLine(FileChannel ch, long at, long size) throws IOException {
+        ByteBuffer prefix = read(ch, at, PREFIX.length);
+        if (prefix.remaining() < PREFIX.length || !java.util.Arrays.equals(prefix.array(), PREFIX)) {
             return false;
         }
         ByteArrayOutputStream line = new ByteArrayOutputStream(256);

@@ -25,7 +25,7 @@ import org.habla.recording.Recorder;
 import org.habla.recording.RecordingDamagedException;
 import org.habla.recording.RecordingException;
 import org.habla.recording.RecordingHeader;
-import org.habla.recording.RecordingReader;
+import org.habla.recording.RecordingSource;
 import org.habla.plugin.PluginRegistry;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -99,7 +99,7 @@ public final class Replayer {
         RecordingHeader header;
         boolean ticks = false;
         Optional<Cut> cut;
-        try (RecordingReader r = RecordingReader.open(file)) {
+        try (RecordingSource r = RecordingSource.open(file)) {
             header = r.header();
             for (RecordedEvent e = r.next(); e != null; e = r.next()) {
                 ticks |= e instanceof RecordedEvent.Tick;
@@ -161,7 +161,7 @@ public final class Replayer {
         }
         OutputComparison comparison = new OutputComparison(recorder == null ? GraphTap.NONE : recorder);
         Daemon daemon = Daemon.replaying(config, registry, clock, comparison, header.interfaces());
-        try (RecordingReader reader = RecordingReader.open(file)) {
+        try (RecordingSource reader = RecordingSource.open(file)) {
             onStarted.accept(daemon);
             Feed feed = new Feed(daemon.graph(), clock, options, recordedTicks);
             long wallStart = System.nanoTime();

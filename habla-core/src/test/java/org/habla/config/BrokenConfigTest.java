@@ -38,6 +38,7 @@ class BrokenConfigTest {
         duplicate-method-id               | $.methods[1].id                 | duplicate method id 'sonar': already used at $.methods[0].id
         duplicate-expose-port             | $.methods[3].expose.port        | duplicate port 7004: already used at $.methods[2].expose.port
         expose-port-is-status-port        | $.methods[0].expose.port        | duplicate port 7099: already used at $.status.port (the status endpoint's default)
+        monitor-port-is-status-port       | $.status.monitorPort            | duplicate port 7099: already used at $.status.port
         duplicate-expose-name             | $.methods[1].expose.name        | duplicate socket name 'action': already used at $.methods[0].expose.name
         unknown-method-type               | $.methods[0].type               | unknown method type 'sonr' (known: action, broken-model, distance-angle,
         unknown-layer                     | $.methods[0].layer              | unknown layer 'sensors' (expected sensors_actuators, processing or virtual)

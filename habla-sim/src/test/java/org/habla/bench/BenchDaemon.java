@@ -26,10 +26,16 @@ final class BenchDaemon {
 
     /** The same, with the processing method placed on the worker {@code host} ({@code host:port}) if not null. */
     static Daemon start(int robotPort, String host) throws IOException, ConfigException {
-        int port = DaemonProcess.freePorts(1)[0];
+        return start(robotPort, host, false);
+    }
+
+    /** The same, with the live monitor on a free port if {@code monitor}. */
+    static Daemon start(int robotPort, String host, boolean monitor) throws IOException, ConfigException {
+        int[] ports = DaemonProcess.freePorts(2);
+        int port = ports[0];
         String relay = "\"params\": {\"kind\": \"number\", \"delivery\": \"queue\", \"capacity\": 4096}";
         String json = """
-                {"system": "bench", "status": {"port": 0},
+                {"system": "bench", "status": {"port": 0, "monitorPort": %d},
                  "interfaces": [{"id": "robot", "driver": "habla", "address": "127.0.0.1:%d",
                                  "params": {"channels": %s}}],
                  "methods": [
@@ -38,7 +44,7 @@ final class BenchDaemon {
                    {"id": "v", "type": "pass-through", "layer": "virtual", "inputs": {"in": "p.out"}, %s,
                     "expose": {"port": %d, "name": "value"}}
                  ]}
-                """.formatted(robotPort, BenchRobot.CHANNELS_JSON, relay, relay,
+                """.formatted(monitor ? ports[1] : 0, robotPort, BenchRobot.CHANNELS_JSON, relay, relay,
                         host == null ? "" : ", \"host\": \"" + host + "\"", relay, port);
         PluginRegistry registry = PluginRegistry.discover();
         HablaConfig config = new ConfigLoader(registry).parse(json);

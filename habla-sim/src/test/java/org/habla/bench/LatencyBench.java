@@ -48,18 +48,32 @@ final class LatencyBench {
     }
 
     /** What the client connects to, and how to take it down. */
-    record Path(int port, AutoCloseable closer) {
+    record Path(int port, AutoCloseable closer, Daemon daemon) {
+        Path(int port, AutoCloseable closer) {
+            this(port, closer, null);
+        }
     }
 
     interface PathFactory {
         Path open(BenchRobot robot) throws Exception;
     }
 
-    private void measure(String name, PathFactory factory) throws Exception {
+    /** One measurement of a path; {@code during} runs once the client has had its first sample (may be null). */
+    void measure(String name, PathFactory factory) throws Exception {
+        measure(name, factory, null);
+    }
+
+    interface During {
+        AutoCloseable start(Path path) throws Exception;
+    }
+
+    void measure(String name, PathFactory factory, During during) throws Exception {
         try (BenchRobot robot = new BenchRobot(1_000_000_000L / rateHz)) {
             Path path = factory.open(robot);
+            AutoCloseable extra = null;
             try (SampleClient client = new SampleClient(path.port())) {
                 await(() -> client.total() > 0, 20_000, name + ": no sample reached the client");
+                extra = during == null ? null : during.start(path);
                 Thread.sleep(warmupS * 1000L);
                 long sentBefore = robot.sent();
                 client.startRecording();
@@ -74,6 +88,9 @@ final class LatencyBench {
                     System.out.printf("  note: the robot sent %d readings in the window%n", sent);
                 }
             } finally {
+                if (extra != null) {
+                    extra.close();
+                }
                 path.closer().close();
             }
         }

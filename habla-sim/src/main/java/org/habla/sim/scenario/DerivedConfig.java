@@ -78,6 +78,9 @@ public final class DerivedConfig {
         if (root.path("status").isObject() && root.path("status").has("port")) {
             ObjectNode s = (ObjectNode) root.get("status");
             s.put("port", s.get("port").asInt() + portOffset);
+            if (s.path("monitorPort").asInt() > 0) {
+                s.put("monitorPort", s.get("monitorPort").asInt() + portOffset);
+            }
         } else {
             root.putObject("status").put("port", 7099 + portOffset);
         }

@@ -7,7 +7,7 @@ import java.nio.file.Path;
 import java.util.List;
 import org.habla.recording.RecordedEvent;
 import org.habla.recording.Recording;
-import org.habla.recording.RecordingReader;
+import org.habla.recording.RecordingSource;
 import org.habla.replay.OutputComparison;
 import org.habla.sample.NumberValue;
 import org.habla.sample.TextValue;
@@ -76,13 +76,13 @@ class PioneerRecordReplayTest {
 
     @Test
     void aRecordedPioneerEpisodeReplaysToTheSameVirtualOutputsValueForValue() throws Exception {
-        Path file = dir.resolve("episode-" + System.nanoTime() + ".habla-rec");
+        Path file = dir.resolve("episode-" + System.nanoTime() + ".mcap");
         rig.startDaemon("--record", file.toString());
         rig.awaitReady(60_000);
         episode();
         assertThat(rig.daemon.terminate(10_000)).as("the daemon stops on SIGTERM").isZero();
 
-        Recording recorded = RecordingReader.readAll(file);
+        Recording recorded = RecordingSource.readAll(file);
         assertThat(recorded.complete()).as("a daemon stopped cleanly ends its recording").isTrue();
         assertThat(recorded.events(RecordedEvent.Reading.class)).as("readings recorded").hasSizeGreaterThan(100);
         assertThat(recorded.events(RecordedEvent.ControlWrite.class)).extracting(w -> w.sample().payload())
@@ -92,10 +92,11 @@ class PioneerRecordReplayTest {
         assertThat(values(recorded, "reward.reward")).containsSubsequence(
                 OutputComparison.canonical(new NumberValue(1)), OutputComparison.canonical(new NumberValue(-1)));
         assertThat(values(recorded, "distance.distance_angle")).hasSizeGreaterThan(30);
+        McapCheck.independentReadersAgree(file, recorded);
 
-        Path again = dir.resolve("replayed-" + System.nanoTime() + ".habla-rec");
+        Path again = dir.resolve("replayed-" + System.nanoTime() + ".mcap");
         DaemonProcess replay = replay(file, again);
-        Recording replayed = RecordingReader.readAll(again);
+        Recording replayed = RecordingSource.readAll(again);
         for (String stream : VIRTUAL) {
             assertThat(values(replayed, stream)).as("%s replayed; replay said:%n%s", stream, replay.output())
                     .isEqualTo(values(recorded, stream));
@@ -106,7 +107,7 @@ class PioneerRecordReplayTest {
 
     @Test
     void aDaemonKilledMidRecordingLeavesAFileThatReplays() throws Exception {
-        Path file = dir.resolve("killed-" + System.nanoTime() + ".habla-rec");
+        Path file = dir.resolve("killed-" + System.nanoTime() + ".mcap");
         rig.startDaemon("--record", file.toString());
         rig.awaitReady(60_000);
         rig.place(1.2, 0.8, 0.0);
@@ -115,15 +116,15 @@ class PioneerRecordReplayTest {
         rig.after(1.5);
         rig.daemon.close();   // SIGKILL: no shutdown hook, no end record
 
-        Recording recorded = RecordingReader.readAll(file);
+        Recording recorded = RecordingSource.readAll(file);
         assertThat(recorded.complete()).as("a killed daemon writes no end record").isFalse();
         assertThat(values(recorded, "distance.distance_angle")).hasSizeGreaterThan(10);
         assertThat(recorded.events(RecordedEvent.ControlWrite.class)).hasSize(1);
 
-        Path again = dir.resolve("replayed-killed-" + System.nanoTime() + ".habla-rec");
+        Path again = dir.resolve("replayed-killed-" + System.nanoTime() + ".mcap");
         DaemonProcess replay = replay(file, again);
         assertThat(replay.output()).contains("replayed ").contains("did not stop cleanly");
-        Recording replayed = RecordingReader.readAll(again);
+        Recording replayed = RecordingSource.readAll(again);
         for (String stream : VIRTUAL) {
             List<String> before = values(recorded, stream);
             List<String> after = values(replayed, stream);
