@@ -78,6 +78,24 @@ class RunPortInUseTest {
     }
 
     @Test
+    void aMonitorPortInUseIsAConfigErrorAtItsPath(@TempDir Path dir) throws Exception {
+        try (ServerSocket taken = new ServerSocket(0, 1, LOOPBACK)) {
+            Path file = dir.resolve("monitor.json");
+            Files.writeString(file, """
+                    {"system": "ports", "status": {"port": 0, "monitorPort": %d}, "methods": [
+                      {"id": "action", "type": "action", "layer": "virtual", "inputs": {"action": "control"},
+                       "expose": {"port": %d}}]}
+                    """.formatted(taken.getLocalPort(), freePort()));
+
+            CommandRun run = CommandRun.of(new RunCommand(TestPlugins.registry()), file.toString());
+
+            assertThat(run.exitCode()).isEqualTo(ExitCodes.USAGE_OR_CONFIG);
+            assertThat(run.err()).contains("$.status.monitorPort: the monitor cannot listen on 127.0.0.1:"
+                    + taken.getLocalPort());
+        }
+    }
+
+    @Test
     void aRecordingIsNotStartedWhenAPortIsInUse(@TempDir Path dir) throws Exception {
         try (ServerSocket taken = new ServerSocket(0, 1, LOOPBACK)) {
             Path file = config(dir, freePort(), taken.getLocalPort(), 0);
