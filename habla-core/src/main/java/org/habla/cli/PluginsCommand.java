@@ -49,6 +49,12 @@ public final class PluginsCommand implements Callable<Integer> {
             out.println("  " + e.getKey() + "  " + e.getValue().description());
             printParams(out, e.getValue().paramsType());
         }
+        out.println();
+        out.println("Bridge types (" + r.bridges().size() + "):");
+        for (Map.Entry<String, org.habla.plugin.BridgeProvider<?>> e : r.bridges().entrySet()) {
+            out.println("  " + e.getKey() + "  " + e.getValue().description());
+            printParams(out, e.getValue().paramsType());
+        }
         out.flush();
         return ExitCodes.OK;
     }

@@ -29,7 +29,7 @@ import org.habla.plugin.PluginRegistry;
 public final class ConfigLoader {
 
     static final Set<String> ROOT_KEYS =
-            Set.of("$schema", "description", "system", "limits", "safety", "status", "interfaces", "methods");
+            Set.of("$schema", "description", "system", "limits", "safety", "status", "interfaces", "methods", "bridges");
     static final Set<String> LIMITS_KEYS =
             Set.of("maxLineBytes", "maxBinaryBytes", "maxClientsPerPort", "clientQueueSamples");
     static final Set<String> SAFETY_KEYS = Set.of("watchdogMs");
@@ -39,6 +39,7 @@ public final class ConfigLoader {
     static final Set<String> METHOD_KEYS =
             Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host", "fallback", "feedback");
     static final Set<String> EXPOSE_KEYS = Set.of("port", "name", "bind");
+    static final Set<String> BRIDGE_KEYS = Set.of("id", "type", "address", "params");
 
     /** The keys of each fixed object of the format, by where it sits ({@code []} stands for any element). */
     static final Map<String, Set<String>> KEYS_BY_OBJECT = Map.of(
@@ -49,7 +50,8 @@ public final class ConfigLoader {
             "$.interfaces[]", INTERFACE_KEYS,
             "$.interfaces[].reconnect", RECONNECT_KEYS,
             "$.methods[]", METHOD_KEYS,
-            "$.methods[].expose", EXPOSE_KEYS);
+            "$.methods[].expose", EXPOSE_KEYS,
+            "$.bridges[]", BRIDGE_KEYS);
 
     /** The largest JSON line a socket may be allowed: 16 MiB. */
     static final int MAX_LINE_BYTES = 16 * 1024 * 1024;
@@ -147,6 +149,9 @@ public final class ConfigLoader {
         }
         new DuplicateCheck(errors).run(status, root.has("status"), interfaces, methods);
         new WiringCheck(errors, interfaces, methods).run(methods);
+        java.util.Set<String> sockets = new java.util.HashSet<>();
+        methods.forEach(m -> m.expose().ifPresent(x -> sockets.add(x.name())));
+        List<BridgeConfig> bridges = new BridgeReader(registry, errors, baseDir).read(root.array("bridges"), sockets);
 
         if (!errors.isEmpty() || system.isEmpty()
                 || !interfaces.stream().allMatch(InterfaceEntry::complete)
@@ -155,7 +160,7 @@ public final class ConfigLoader {
         }
         return Optional.of(new HablaConfig(system.get(), limits, safety, status,
                 interfaces.stream().map(InterfaceEntry::toConfig).toList(),
-                methods.stream().map(MethodEntry::toConfig).toList()));
+                methods.stream().map(MethodEntry::toConfig).toList(), bridges));
     }
 
     private Limits limits(CheckedObject o) {

@@ -59,6 +59,8 @@ public final class ConfigSchema {
                 .put("type", "array").set("items", ref("interface")));
         p.set("methods", NODES.objectNode().put("description", "The methods of the graph.")
                 .put("type", "array").set("items", ref("method")));
+        p.set("bridges", NODES.objectNode().put("description", "Bridges that carry exposed methods to another "
+                + "transport (an MQTT broker) beside their sockets.").put("type", "array").set("items", bridge(registry)));
 
         ObjectNode defs = root.putObject("$defs");
         defs.set("id", string("A letter, then up to 63 letters, digits, '_' or '-'.").put("pattern", ID_PATTERN));
@@ -71,6 +73,8 @@ public final class ConfigSchema {
         defs.set("method", method(registry));
         registry.methods().forEach((name, provider) -> defs.set("params.method." + name, params(provider)));
         registry.drivers().forEach((name, provider) -> defs.set("params.driver." + name, params(provider)));
+        registry.bridges().forEach((name, provider) -> defs.set("params.bridge." + name,
+                ParamsSchema.of(provider.paramsType()).put("description", provider.description())));
         sortKeys(root);
         return root;
     }
@@ -116,6 +120,20 @@ public final class ConfigSchema {
         ArrayNode cases = s.putArray("allOf");
         registry.drivers().keySet().forEach(name -> cases.add(when("driver", name,
                 props("params", ref("params.driver." + name)))));
+        return s;
+    }
+
+    private static ObjectNode bridge(PluginRegistry registry) {
+        ObjectNode s = withRequired(object("One bridge: a bridge type, where it connects, its params."), "id", "type",
+                "address");
+        s.set("properties", props(
+                "id", ref("id").put("description", "The bridge's id, for logs and the status."),
+                "type", string("The bridge type.").set("enum", strings(registry.bridges().keySet())),
+                "address", string("host or host:port of the broker.").put("minLength", 1),
+                "params", object("The bridge's own params (see the bridge type).").put("additionalProperties", true)));
+        ArrayNode cases = s.putArray("allOf");
+        registry.bridges().keySet().forEach(name -> cases.add(when("type", name,
+                props("params", ref("params.bridge." + name)))));
         return s;
     }
 

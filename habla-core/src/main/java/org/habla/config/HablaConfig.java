@@ -5,15 +5,22 @@ import java.util.Optional;
 import java.util.Set;
 
 /**
- * A whole, valid config: the system's name, its interfaces, its methods and the daemon's settings.
+ * A whole, valid config: the system's name, its interfaces, its methods, its bridges and the daemon's settings.
  * Only {@link ConfigLoader} makes these, after every check has passed.
  */
 public record HablaConfig(String system, Limits limits, Safety safety, StatusConfig status,
-        List<InterfaceConfig> interfaces, List<MethodConfig> methods) {
+        List<InterfaceConfig> interfaces, List<MethodConfig> methods, List<BridgeConfig> bridges) {
 
     public HablaConfig {
         interfaces = List.copyOf(interfaces);
         methods = List.copyOf(methods);
+        bridges = List.copyOf(bridges);
+    }
+
+    /** A config without bridges. */
+    public HablaConfig(String system, Limits limits, Safety safety, StatusConfig status,
+            List<InterfaceConfig> interfaces, List<MethodConfig> methods) {
+        this(system, limits, safety, status, interfaces, methods, List.of());
     }
 
     public Optional<MethodConfig> method(String id) {

@@ -7,6 +7,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
+import org.habla.bridge.Bridge;
+import org.habla.config.BridgeConfig;
 import org.habla.config.ConfigError;
 import org.habla.config.HablaConfig;
 import org.habla.config.MethodConfig;
@@ -29,8 +31,8 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The HABLA daemon: a config's method graph with a control server on every exposed method's port
- * and the status endpoint. The one assembly point between the engine and the sockets.
+ * The HABLA daemon: a config's method graph with a control server on every exposed method's port, the
+ * config's bridges and the status endpoint. The one assembly point between the engine and the sockets.
  */
 public final class Daemon implements AutoCloseable {
 
@@ -42,6 +44,7 @@ public final class Daemon implements AutoCloseable {
     private final MethodGraph graph;
     private final EngineClock clock;
     private final Map<String, ControlServer> servers = new LinkedHashMap<>();
+    private final Map<String, Bridge> bridges = new LinkedHashMap<>();
     private StatusServer statusServer;
     private Monitor monitor;
     private volatile boolean closed;
@@ -65,7 +68,7 @@ public final class Daemon implements AutoCloseable {
     public static Daemon start(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap)
             throws IOException {
         checkPlacements(config);
-        return assemble(config, registry, MethodGraph.build(config, registry, clock, tap), clock);
+        return assemble(config, registry, MethodGraph.build(config, registry, clock, tap), clock, true);
     }
 
     /**
@@ -75,7 +78,8 @@ public final class Daemon implements AutoCloseable {
     public static Daemon replaying(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
             Map<String, List<ChannelDescriptor>> channels) throws IOException {
         checkPlacements(config);
-        return assemble(config, registry, MethodGraph.replaying(config, registry, clock, tap, channels), clock);
+        // A replay carries no bridge: what it computes again must not reach a broker as if it were live.
+        return assemble(config, registry, MethodGraph.replaying(config, registry, clock, tap, channels), clock, false);
     }
 
     /** Asks every worker the config places methods on whether it can run them. */
@@ -100,11 +104,12 @@ public final class Daemon implements AutoCloseable {
 
     /**
      * Binds every port first — the control sockets and the status endpoint, then the monitor — and only when all
-     * are held starts serving the control sockets and the status endpoint, then the graph. A port that cannot be had
-     * stops the start before any control socket served or anything moved.
+     * are held starts serving the control sockets and the status endpoint, then the config's bridges (when
+     * {@code withBridges}), then the graph. A port that cannot be had stops the start before any control socket
+     * served, any bridge connected or anything moved.
      */
-    private static Daemon assemble(HablaConfig config, PluginRegistry registry, MethodGraph graph, EngineClock clock)
-            throws IOException {
+    private static Daemon assemble(HablaConfig config, PluginRegistry registry, MethodGraph graph, EngineClock clock,
+            boolean withBridges) throws IOException {
         try {
             checkPorts(config);
         } catch (PortsUnavailableException e) {
@@ -145,6 +150,13 @@ public final class Daemon implements AutoCloseable {
             }
             if (d.statusServer != null) {
                 d.statusServer.start();
+            }
+            if (withBridges) {
+                for (BridgeConfig bc : config.bridges()) {
+                    Bridge bridge = Bridges.create(registry, bc);
+                    d.bridges.put(bc.id(), bridge);
+                    bridge.start(config.system(), d.graph.controlPoints(), Bridges.role(registry, bc));
+                }
             }
             d.graph.start();
         } catch (IOException | RuntimeException e) {
@@ -222,6 +234,10 @@ public final class Daemon implements AutoCloseable {
         ObjectNode st = graph.status();
         ArrayNode sockets = st.putArray("sockets");
         servers.values().forEach(s -> sockets.add(s.stats()));
+        if (!bridges.isEmpty()) {
+            ArrayNode bs = st.putArray("bridges");
+            bridges.forEach((id, b) -> bs.add(b.status().put("id", id)));
+        }
         return st;
     }
 
@@ -234,6 +250,7 @@ public final class Daemon implements AutoCloseable {
         closed = true;
         LOG.info("HABLA daemon '{}' stopping: actuators first", config.system());
         graph.stopActuators("the daemon is shutting down");
+        bridges.values().forEach(Bridge::close);
         servers.values().forEach(ControlServer::close);
         if (monitor != null) {
             monitor.close();

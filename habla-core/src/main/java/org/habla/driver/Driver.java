@@ -20,6 +20,14 @@ public interface Driver {
     /** Every channel the robot offers, readings and commands, with their metadata. */
     List<ChannelDescriptor> channels();
 
-    /** The connections to open; readings may come on any of them, commands go where listed. */
+    /** The TCP connections to open; readings may come on any of them, commands go where listed. */
     List<Connection> connections();
+
+    /**
+     * The connections a client library opens itself (e.g. to an MQTT broker, with TLS), kept by the engine like
+     * the {@link #connections()}: back-off, staleness and the motion watchdog are the same. None by default.
+     */
+    default List<ClientConnection> clientConnections() {
+        return List.of();
+    }
 }

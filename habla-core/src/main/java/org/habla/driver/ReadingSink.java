@@ -17,4 +17,15 @@ public interface ReadingSink {
 
     /** Facts learnt from the robot (its name, model, firmware), shown in the status. */
     void robotInfo(ObjectNode info);
+
+    /**
+     * The device behind a reading channel went away or came back while the link itself stayed up (e.g. a
+     * sensor's availability topic said {@code offline}). While a channel is unavailable, every method that
+     * depends on it is stale, as if its link were down. Channels are available until said otherwise. A sink
+     * that does not track devices ignores this.
+     *
+     * @param why what the device said, for the status and the clients
+     */
+    default void availability(String channel, boolean available, String why) {
+    }
 }

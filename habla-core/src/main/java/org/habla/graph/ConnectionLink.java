@@ -25,7 +25,7 @@ import org.slf4j.LoggerFactory;
  * Writes come from any thread and are serialised; a write to a connection that is down is refused,
  * never queued, so a command is never applied late.
  */
-final class ConnectionLink {
+final class ConnectionLink implements Link {
 
     private static final Logger LOG = LoggerFactory.getLogger(ConnectionLink.class);
 
@@ -59,21 +59,35 @@ final class ConnectionLink {
         this.onStateChange = onStateChange;
     }
 
-    Connection connection() {
-        return connection;
+    @Override
+    public String connectionName() {
+        return connection.name();
     }
 
-    boolean up() {
+    @Override
+    public boolean optional() {
+        return connection.optional();
+    }
+
+    @Override
+    public java.util.Set<String> commandChannels() {
+        return connection.commandChannels();
+    }
+
+    @Override
+    public boolean up() {
         return up;
     }
 
-    void start() {
+    @Override
+    public void start() {
         running = true;
         thread = Thread.ofVirtual().name("habla-link-" + name).start(this::loop);
     }
 
     /** Says goodbye if connected, closes the socket and stops reconnecting. */
-    void stop() {
+    @Override
+    public void stop() {
         running = false;
         if (up) {
             write("goodbye", (s, o) -> s.goodbye(o));
@@ -195,11 +209,13 @@ final class ConnectionLink {
 
 
     /** Writes a command now; false if the connection is down or the write failed. */
-    boolean command(String channel, Payload value) {
+    @Override
+    public boolean command(String channel, Payload value) {
         return write("command " + channel, (s, o) -> s.write(channel, value, o));
     }
 
-    boolean stopMotion() {
+    @Override
+    public boolean stopMotion() {
         return write("stop", (s, o) -> s.stopMotion(o));
     }
 
@@ -227,7 +243,8 @@ final class ConnectionLink {
         }
     }
 
-    ObjectNode status() {
+    @Override
+    public ObjectNode status() {
         ObjectNode n = JsonNodeFactory.instance.objectNode();
         n.put("name", connection.name());
         n.put("port", connection.port());
@@ -243,7 +260,8 @@ final class ConnectionLink {
         return n;
     }
 
-    String lastError() {
+    @Override
+    public String lastError() {
         return lastError;
     }
 

@@ -12,6 +12,7 @@ import java.util.concurrent.atomic.LongAdder;
 import java.util.function.Consumer;
 import org.habla.config.InterfaceConfig;
 import org.habla.driver.ChannelDescriptor;
+import org.habla.driver.ClientConnection;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.ReadingSink;
@@ -36,8 +37,9 @@ final class InterfaceLink {
     private final GraphTap tap;
     private final Map<String, ChannelDescriptor> channels = new HashMap<>();
     private final Map<String, OutputPort> readings = new HashMap<>();
-    private final Map<String, ConnectionLink> commandRoutes = new HashMap<>();
-    private final List<ConnectionLink> connections = new ArrayList<>();
+    private final Map<String, String> unavailable = new java.util.concurrent.ConcurrentHashMap<>();
+    private final Map<String, Link> commandRoutes = new HashMap<>();
+    private final List<Link> connections = new ArrayList<>();
     private final List<Consumer<Boolean>> stateListeners = new ArrayList<>();
     private final boolean replayed;
     private final Sink sink = new Sink();
@@ -79,6 +81,18 @@ final class InterfaceLink {
                 commandRoutes.put(channel, link);
             }
         }
+        for (ClientConnection c : replayed ? List.<ClientConnection>of() : driver.clientConnections()) {
+            ClientLink link = new ClientLink(config.id(), c, config.reconnect(), sink, this::connectionChanged);
+            connections.add(link);
+            for (String channel : c.commandChannels()) {
+                commandRoutes.put(channel, link);
+            }
+        }
+    }
+
+    /** Why a reading channel's device is unavailable now (its link being up), or null when it is available. */
+    String unavailable(String channel) {
+        return unavailable.get(channel);
     }
 
     String id() {
@@ -108,7 +122,7 @@ final class InterfaceLink {
 
     void start() {
         sinceMicros = clock.nowMicros();
-        for (ConnectionLink c : connections) {
+        for (Link c : connections) {
             c.start();
         }
         linkTicker = clock.every(1_000_000, this::publishLink);
@@ -123,7 +137,7 @@ final class InterfaceLink {
                 LOG.debug("link ticker: {}", e.toString());
             }
         }
-        for (ConnectionLink c : connections) {
+        for (Link c : connections) {
             c.stop();
         }
     }
@@ -131,7 +145,7 @@ final class InterfaceLink {
     /** Sends a command sample from an actuator method to its channel. */
     void command(String channel, Sample sample) {
         ChannelDescriptor d = channels.get(channel);
-        ConnectionLink link = commandRoutes.get(channel);
+        Link link = commandRoutes.get(channel);
         if (d == null || (link == null && !replayed)) {
             drop(channel, "no connection carries it");
             return;
@@ -154,7 +168,7 @@ final class InterfaceLink {
         }
         if (!link.command(channel, sample.payload())) {
             tap.command(config.id(), channel, sample, false);
-            drop(channel, "link " + config.id() + "/" + link.connection().name() + " is down");
+            drop(channel, "link " + config.id() + "/" + link.connectionName() + " is down");
             return;
         }
         tap.command(config.id(), channel, sample, true);
@@ -184,8 +198,8 @@ final class InterfaceLink {
 
     /** Writes the stop of every connection that carries a motion channel, each from a thread of its own. */
     void stopMotion() {
-        for (ConnectionLink link : connections) {
-            boolean carriesMotion = link.connection().commandChannels().stream()
+        for (Link link : connections) {
+            boolean carriesMotion = link.commandChannels().stream()
                     .map(channels::get).anyMatch(c -> c != null && c.motion());
             if (carriesMotion) {
                 Thread.ofVirtual().name("habla-stop-" + config.id()).start(link::stopMotion);
@@ -195,8 +209,8 @@ final class InterfaceLink {
 
     /** Stops motion and waits briefly for the stop to be written (shutdown). */
     void stopMotionNow() {
-        for (ConnectionLink link : connections) {
-            if (link.connection().commandChannels().stream().map(channels::get).anyMatch(c -> c != null && c.motion())) {
+        for (Link link : connections) {
+            if (link.commandChannels().stream().map(channels::get).anyMatch(c -> c != null && c.motion())) {
                 link.stopMotion();
             }
         }
@@ -214,12 +228,16 @@ final class InterfaceLink {
      * server, do not count unless all of its connections are optional).
      */
     private boolean requiredUp() {
-        List<ConnectionLink> required = connections.stream().filter(c -> !c.connection().optional()).toList();
-        return (required.isEmpty() ? connections : required).stream().allMatch(ConnectionLink::up);
+        List<Link> required = connections.stream().filter(c -> !c.optional()).toList();
+        return (required.isEmpty() ? connections : required).stream().allMatch(Link::up);
     }
 
     private void connectionChanged() {
         boolean all = requiredUp();
+        if (all && !up) {
+            // A fresh session tells its devices' availability again.
+            unavailable.clear();
+        }
         if (all != up) {
             up = all;
             sinceMicros = clock.nowMicros();
@@ -241,11 +259,11 @@ final class InterfaceLink {
         }
         StringBuilder detail = new StringBuilder();
         ObjectNode each = JsonNodeFactory.instance.objectNode();
-        for (ConnectionLink c : connections) {
-            each.put(c.connection().name(), c.up());
+        for (Link c : connections) {
+            each.put(c.connectionName(), c.up());
             if (!c.up()) {
-                detail.append(detail.length() == 0 ? "" : "; ").append(c.connection().name())
-                        .append(c.connection().optional() ? " (optional)" : "").append(" down")
+                detail.append(detail.length() == 0 ? "" : "; ").append(c.connectionName())
+                        .append(c.optional() ? " (optional)" : "").append(" down")
                         .append(c.lastError().isEmpty() ? "" : ": " + c.lastError());
             }
         }
@@ -273,6 +291,10 @@ final class InterfaceLink {
         n.put("unknownChannel", unknownChannel.sum());
         n.put("commandsSent", commandsSent.sum());
         n.put("commandsDropped", commandsDropped.get());
+        if (!unavailable.isEmpty()) {
+            ObjectNode un = n.putObject("unavailable");
+            unavailable.forEach(un::put);
+        }
         ObjectNode rs = n.putObject("readings");
         readings.forEach((name, port) -> rs.put(name, port.published()));
         return n;
@@ -308,6 +330,23 @@ final class InterfaceLink {
             long n = malformed.sum();
             if (n <= 10 || n % 1000 == 0) {
                 LOG.warn("interface {}: malformed input dropped ({} so far): {}", config.id(), n, what);
+            }
+        }
+
+        @Override
+        public void availability(String channel, boolean available, String why) {
+            if (!readings.containsKey(channel) || Driver.LINK_CHANNEL.name().equals(channel)) {
+                unknownChannel.increment();
+                return;
+            }
+            String before = available ? unavailable.remove(channel) : unavailable.put(channel, why);
+            if ((before == null) == available) {
+                return;
+            }
+            LOG.info("interface {}: the device of channel {} is {} ({})", config.id(), channel,
+                    available ? "available again" : "unavailable", why);
+            for (Consumer<Boolean> l : stateListeners) {
+                l.accept(up);
             }
         }
 

@@ -52,6 +52,7 @@ public final class MethodGraph implements AutoCloseable {
     private final Map<String, MethodRunner> runners = new LinkedHashMap<>();
     private final Map<String, InterfaceLink> links = new LinkedHashMap<>();
     private final Map<String, Set<String>> upstreamInterfaces = new HashMap<>();
+    private final Map<String, Set<Source.Channel>> upstreamChannels = new HashMap<>();
     private final Map<String, RemotePlacement> placements = new LinkedHashMap<>();
     private final Map<String, Set<String>> upstreamPlacements = new HashMap<>();
     private final Object staleLock = new Object();
@@ -104,6 +105,7 @@ public final class MethodGraph implements AutoCloseable {
         }
         for (MethodConfig mc : config.methods()) {
             upstreamInterfaces.put(mc.id(), upstream(mc.id(), new LinkedHashSet<>()));
+            upstreamChannels.put(mc.id(), upstreamChannels(mc.id(), new LinkedHashSet<>()));
             upstreamPlacements.put(mc.id(), upstreamPlacements(mc.id(), new LinkedHashSet<>()));
         }
         for (InterfaceLink link : links.values()) {
@@ -297,6 +299,22 @@ public final class MethodGraph implements AutoCloseable {
         return result;
     }
 
+    /** The interface channels whose readings reach {@code methodId}. */
+    private Set<Source.Channel> upstreamChannels(String methodId, Set<String> visited) {
+        Set<Source.Channel> result = new LinkedHashSet<>();
+        if (!visited.add(methodId)) {
+            return result;
+        }
+        for (Source s : config.method(methodId).orElseThrow().inputs().values()) {
+            switch (s) {
+                case Source.Channel ch -> result.add(ch);
+                case Source.MethodOutput mo -> result.addAll(upstreamChannels(mo.methodId(), visited));
+                case Source.Control c -> { }
+            }
+        }
+        return result;
+    }
+
     /** The methods placed on workers that {@code methodId} depends on, itself included. */
     private Set<String> upstreamPlacements(String methodId, Set<String> visited) {
         Set<String> result = new LinkedHashSet<>();
@@ -344,6 +362,12 @@ public final class MethodGraph implements AutoCloseable {
         for (String id : upstreamInterfaces.getOrDefault(methodId, Set.of())) {
             if (!links.get(id).up()) {
                 return "interface " + id + " is down";
+            }
+        }
+        for (Source.Channel ch : upstreamChannels.getOrDefault(methodId, Set.of())) {
+            String why = links.get(ch.interfaceId()).unavailable(ch.channel());
+            if (why != null) {
+                return "the device of @" + ch.interfaceId() + "." + ch.channel() + " is unavailable: " + why;
             }
         }
         for (String id : upstreamPlacements.getOrDefault(methodId, Set.of())) {

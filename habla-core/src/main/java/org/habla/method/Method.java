@@ -331,8 +331,8 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
     }
 
     private void markFailed(String what, Throwable e) {
+        failure = "failed to " + what + ": " + e;   // before the state, so whoever sees FAILED sees why
         state = MethodState.FAILED;
-        failure = "failed to " + what + ": " + e;
         LOG.error("method {} ({}) FAILED to {}: {}", id(), getClass().getSimpleName(), what, e.toString());
         LOG.debug("method {} failure trace", id(), e);
     }

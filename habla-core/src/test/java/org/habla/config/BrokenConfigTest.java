@@ -22,7 +22,7 @@ class BrokenConfigTest {
         syntax-error                      | $                               | invalid JSON at line 2, column 17
         duplicate-key                     | $                               | Duplicate field 'system'
         root-is-array                     | $                               | must be an object, not an array
-        unknown-root-key                  | $.methds                        | unknown key 'methds' (allowed: $schema, description, interfaces, limits, methods, safety, status, system)
+        unknown-root-key                  | $.methds                        | unknown key 'methds' (allowed: $schema, bridges, description, interfaces, limits, methods, safety, status, system)
         missing-system                    | $.system                        | required key 'system' is missing
         system-not-a-string               | $.system                        | must be a string, not a number (5)
         limit-not-an-integer              | $.limits.maxLineBytes           | must be an integer in 1..16777216, not a string ("64k")
@@ -31,6 +31,7 @@ class BrokenConfigTest {
         status-port-out-of-range          | $.status.port                   | must be in 0..65535, was 70000
         interfaces-not-an-array           | $.interfaces                    | must be an array, not an object
         unknown-driver                    | $.interfaces[0].driver          | unknown driver type 'arcos' (known: robot-sim)
+        unknown-bridge-type               | $.bridges[0].type               | unknown bridge type 'carrier-pigeon' (known: none registered)
         bad-address                       | $.interfaces[0].address         | '127.0.0.1:port' is not an address
         reconnect-max-below-initial       | $.interfaces[0].reconnect.maxMs | must not be less than initialMs (500), was 100
         bad-interface-id                  | $.interfaces[0].id              | '1robot' is not an id: a letter then

@@ -19,7 +19,7 @@ class ConfigSchemaTest {
 
     @Test
     void everyKeyTheLoaderAcceptsIsInTheSchemaAndViceVersa() {
-        assertThat(ConfigLoader.KEYS_BY_OBJECT).hasSize(8);
+        assertThat(ConfigLoader.KEYS_BY_OBJECT).hasSize(9);
         ConfigLoader.KEYS_BY_OBJECT.forEach((where, keys) -> {
             JsonNode object = at(where);
             assertThat(names(object.get("properties"))).as("keys of %s", where).isEqualTo(new TreeSet<>(keys));
@@ -31,8 +31,9 @@ class ConfigSchemaTest {
     void everyFixedObjectOfTheSchemaIsOneTheLoaderKnows() {
         List<String> closed = new ArrayList<>();
         collectClosedObjects(schema, "", closed);
-        // the 8 fixed objects, plus one params object per method and driver type
-        assertThat(closed).hasSize(8 + registry.methods().size() + registry.drivers().size());
+        // the 9 fixed objects, plus one params object per method, driver and bridge type
+        assertThat(closed).hasSize(9 + registry.methods().size() + registry.drivers().size()
+                + registry.bridges().size());
     }
 
     @Test

@@ -5,7 +5,7 @@ import java.util.List;
 
 /**
  * Runs the engine benchmarks and prints their figures: {@code bench/run [latency] [throughput] [fanout] [monitor]
- * [vision] [worker] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up).
+ * [vision] [worker] [mqtt] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up).
  */
 public final class Benchmarks {
 
@@ -20,7 +20,7 @@ public final class Benchmarks {
             seconds = Integer.parseInt(list.get(at + 1));
         }
         boolean all = list.stream().noneMatch(a -> a.equals("latency") || a.equals("throughput") || a.equals("fanout")
-                || a.equals("vision") || a.equals("worker") || a.equals("monitor") || a.equals("recording"));
+                || a.equals("vision") || a.equals("worker") || a.equals("monitor") || a.equals("recording") || a.equals("mqtt"));
         System.out.printf("HABLA engine benchmarks: %d cores, %s %s, %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name"), System.getProperty("java.version"), System.getProperty("os.name"));
         System.out.println("load average at start (1, 5, 15 min): " + loadAverage());
@@ -44,6 +44,9 @@ public final class Benchmarks {
         }
         if (all || list.contains("worker")) {
             new WorkerBench(1_000, 3, seconds).run();
+        }
+        if (all || list.contains("mqtt")) {
+            new MqttBench(1_000, 3, seconds).run();
         }
         System.out.println("\nload average at end (1, 5, 15 min): " + loadAverage());
         System.exit(0);

@@ -19,8 +19,8 @@ import org.habla.sample.Sample;
  * into frames of {@code frameMs}; for each the method emits on {@code features} an
  * {@code audio-features} record ({@code rms}, {@code db}, {@code pitchHz}, {@code voiced},
  * {@code spectrum}) — what an emotion recogniser needs about intonation and volume. On
- * {@code segments} it emits each loud stretch of sound the utterance gate finds, as one mono 16-bit
- * chunk at the input's rate, for the recognisers (speech, notes) to work on whole utterances.
+ * {@code segments} it emits each utterance its voice-activity detector finds ({@link UtteranceGate}),
+ * as one mono 16-bit chunk at the input's rate, for the recognisers to work on whole utterances.
  */
 public final class AudioProcessing extends ProcessingMethod {
 
@@ -52,6 +52,7 @@ public final class AudioProcessing extends ProcessingMethod {
             return;
         }
         double[] mono = MonoAudio.mix(chunk);
+        gate.offer(mono).forEach(this::emitSegment);
         int frame = analyzer.frameLength();
         int at = 0;
         while (at < mono.length) {
@@ -71,7 +72,6 @@ public final class AudioProcessing extends ProcessingMethod {
     private void analyze(double[] frame) {
         FrameFeatures f = analyzer.analyze(frame);
         emit(features, f.toRecord());
-        gate.offer(frame, f.db()).ifPresent(this::emitSegment);
     }
 
     private void restart(AudioFormat next) {
@@ -97,7 +97,7 @@ public final class AudioProcessing extends ProcessingMethod {
         }
         analyzer = new FrameAnalyzer(rate, frame, params.bands(), minPitch, maxPitch, params.aperiodicity(),
                 params.voicedMinDb());
-        gate = new UtteranceGate(rate, frame, params.gate());
+        gate = new UtteranceGate(rate, params.gate());
         pending = new double[frame];
         pendingCount = 0;
     }

@@ -18,24 +18,31 @@ public record AudioProcessingParams(
         Double aperiodicity,
         @Param(value = "Quietest frame that can be voiced", unit = "dBFS", defaultValue = "-50")
         Double voicedMinDb,
-        @Param(value = "How far above the noise floor a frame must be to open the utterance gate", unit = "dB",
-                defaultValue = "12")
+        @Param(value = "Voice activity: how far above the noise floor (the quietest tenth of the last noiseWindowMs) "
+                + "the speech band must be", unit = "dB", defaultValue = "10")
         Double openAboveFloorDb,
-        @Param(value = "Quietest frame that can open the gate, whatever the floor", unit = "dBFS", defaultValue = "-50")
+        @Param(value = "Voice activity: how far above the background (the median level of the last noiseWindowMs: "
+                + "steady noise, distant talk) the speech band must be", unit = "dB", defaultValue = "9")
+        Double openAboveBackgroundDb,
+        @Param(value = "Voice activity: the quietest speech, whatever the room", unit = "dBFS", defaultValue = "-55")
         Double minLevelDb,
-        @Param(value = "How long the level must stay below the gate before a segment ends", unit = "ms",
-                defaultValue = "300")
+        @Param(value = "Voice activity: the stretch of stream the floor and background are measured over", unit = "ms",
+                defaultValue = "3000")
+        Double noiseWindowMs,
+        @Param(value = "Once open, how far below the opening level a frame may fall and still count as speech",
+                unit = "dB", defaultValue = "1")
+        Double closeBelowOpenDb,
+        @Param(value = "Once open, how far below the utterance's loudest frame a frame may fall and still count as "
+                + "speech (an echo dying away does not)", unit = "dB", defaultValue = "30")
+        Double peakRangeDb,
+        @Param(value = "How long without speech ends a segment", unit = "ms", defaultValue = "200")
         Double hangoverMs,
-        @Param(value = "Audio kept from before the gate opened", unit = "ms", defaultValue = "150")
+        @Param(value = "Audio kept from before the first speech frame", unit = "ms", defaultValue = "200")
         Double prerollMs,
-        @Param(value = "Shortest loud stretch a segment must have (shorter ones are clicks)", unit = "ms",
-                defaultValue = "100")
+        @Param(value = "Shortest speech a segment must hold (shorter ones are clicks)", unit = "ms", defaultValue = "80")
         Double minLoudMs,
         @Param(value = "Longest segment; a longer stretch is cut here", unit = "ms", defaultValue = "8000")
         Double maxSegmentMs,
-        @Param(value = "Time constant with which the noise floor follows a rising level", unit = "ms",
-                defaultValue = "10000")
-        Double floorRiseMs,
         @Param(value = "Queue length of the audio input, in chunks", defaultValue = "256")
         Integer queue) {
 
@@ -50,25 +57,29 @@ public record AudioProcessingParams(
         }
         aperiodicity = ParamRules.within("aperiodicity", aperiodicity, 0.15, 0.01, 1);
         voicedMinDb = ParamRules.within("voicedMinDb", voicedMinDb, -50, -120, 0);
-        openAboveFloorDb = ParamRules.within("openAboveFloorDb", openAboveFloorDb, 12, 0, 80);
-        minLevelDb = ParamRules.within("minLevelDb", minLevelDb, -50, -120, 0);
-        hangoverMs = ParamRules.within("hangoverMs", hangoverMs, 300, 0, 5000);
-        prerollMs = ParamRules.within("prerollMs", prerollMs, 150, 0, 2000);
-        minLoudMs = ParamRules.within("minLoudMs", minLoudMs, 100, 0, 10_000);
+        openAboveFloorDb = ParamRules.within("openAboveFloorDb", openAboveFloorDb, 10, 0, 80);
+        openAboveBackgroundDb = ParamRules.within("openAboveBackgroundDb", openAboveBackgroundDb, 9, 0, 80);
+        minLevelDb = ParamRules.within("minLevelDb", minLevelDb, -55, -120, 0);
+        noiseWindowMs = ParamRules.within("noiseWindowMs", noiseWindowMs, 3000, 100, 60_000);
+        closeBelowOpenDb = ParamRules.within("closeBelowOpenDb", closeBelowOpenDb, 1, 0, 40);
+        peakRangeDb = ParamRules.within("peakRangeDb", peakRangeDb, 30, 6, 120);
+        hangoverMs = ParamRules.within("hangoverMs", hangoverMs, 200, 0, 5000);
+        prerollMs = ParamRules.within("prerollMs", prerollMs, 200, 0, 2000);
+        minLoudMs = ParamRules.within("minLoudMs", minLoudMs, 80, 0, 10_000);
         maxSegmentMs = ParamRules.within("maxSegmentMs", maxSegmentMs, 8000, 100, 60_000);
-        floorRiseMs = ParamRules.within("floorRiseMs", floorRiseMs, 10_000, 10, 600_000);
         queue = ParamRules.within("queue", queue, 256, 1, 65_536);
     }
 
     /** Every parameter at its default. */
     public static AudioProcessingParams defaults() {
         return new AudioProcessingParams(null, null, null, null, null, null, null, null, null, null, null, null,
-                null, null);
+                null, null, null, null, null);
     }
 
     /** The utterance gate's part of the params. */
     public UtteranceGate.Settings gate() {
-        return new UtteranceGate.Settings(openAboveFloorDb, minLevelDb, hangoverMs, prerollMs, minLoudMs,
-                maxSegmentMs, floorRiseMs);
+        return new UtteranceGate.Settings(
+                new VoiceActivityDetector.Settings(openAboveFloorDb, openAboveBackgroundDb, minLevelDb, noiseWindowMs),
+                closeBelowOpenDb, peakRangeDb, hangoverMs, prerollMs, minLoudMs, maxSegmentMs);
     }
 }

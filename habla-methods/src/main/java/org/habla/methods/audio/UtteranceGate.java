@@ -6,61 +6,84 @@ import java.util.List;
 import java.util.Optional;
 
 /**
- * Cuts utterances and tones out of a stream of frames with an energy gate. It tracks the noise
- * floor (following a falling level quickly and a rising one slowly); the gate opens when a frame is
- * {@code openAboveFloorDb} above the floor and at least {@code minLevelDb}, and closes once the
- * level has stayed below for the hangover, so the short pauses inside a phrase do not split it. A
- * segment carries a little audio from before the gate opened (the preroll: soft onsets such as
- * "f" or "h") and the hangover after; one whose loud part is shorter than {@code minLoudMs} is a
+ * Cuts utterances out of a stream with a {@link VoiceActivityDetector}, deciding every
+ * {@value #FRAME_MS} ms whatever blocks the audio comes in. The gate opens on
+ * the first speech frame and closes once no frame has been speech for the hangover, so the short
+ * pauses inside a phrase do not split it; a frame counts as speech while the gate is open if it stays
+ * within {@code closeBelowOpenDb} of the detector's threshold (hysteresis) and within
+ * {@code peakRangeDb} of the loudest frame so far (so a room's echo, dying away, does not hold the
+ * gate open). A segment carries {@code prerollMs} of audio from before the gate opened (soft onsets
+ * such as "f" or "h") and the hangover after; one with less than {@code minLoudMs} of speech is a
  * click and is dropped, one that reaches {@code maxSegmentMs} is cut there.
  */
 public final class UtteranceGate {
 
+    /** The detector's frame: short, so the end of speech is seen within this much. */
+    public static final double FRAME_MS = 10;
+
     /** The gate's settings, in milliseconds and dB. */
-    public record Settings(double openAboveFloorDb, double minLevelDb, double hangoverMs, double prerollMs,
-            double minLoudMs, double maxSegmentMs, double floorRiseMs) {
+    public record Settings(VoiceActivityDetector.Settings detector, double closeBelowOpenDb, double peakRangeDb,
+            double hangoverMs, double prerollMs, double minLoudMs, double maxSegmentMs) {
     }
 
     private final int frameLength;
     private final double frameMs;
     private final Settings settings;
+    private final VoiceActivityDetector detector;
     private final int prerollFrames;
     private final ArrayDeque<double[]> preroll = new ArrayDeque<>();
+    private double[] frame;
+    private int fill;
     private final List<double[]> open = new ArrayList<>();
-    private double floorDb = Double.NaN;
     private boolean isOpen;
+    private double openThresholdDb;
+    private double peakDb;
     private double loudMs;
     private double quietMs;
     private double openMs;
 
-    public UtteranceGate(int rateHz, int frameLength, Settings settings) {
-        this.frameLength = frameLength;
+    public UtteranceGate(int rateHz, Settings settings) {
+        this.frameLength = Math.max(1, (int) Math.round(FRAME_MS * rateHz / 1000));
+        this.frame = new double[frameLength];
         this.frameMs = 1000.0 * frameLength / rateHz;
         this.settings = settings;
+        this.detector = new VoiceActivityDetector(rateHz, frameMs, settings.detector());
         this.prerollFrames = (int) Math.ceil(settings.prerollMs() / frameMs);
     }
 
-    /** The noise floor the gate measures against, in dB (NaN before the first frame). */
+    /** The noise floor the detector measures against, in dB (NaN before the first frame). */
     public double floorDb() {
-        return floorDb;
+        return detector.floorDb();
     }
 
     public boolean isOpen() {
         return isOpen;
     }
 
-    /**
-     * Takes the next frame with its level; returns a finished segment (mono samples) when this
-     * frame closes one.
-     */
-    public Optional<double[]> offer(double[] frame, double db) {
-        if (frame.length != frameLength) {
-            throw new IllegalArgumentException("frame of " + frame.length + " samples, expected " + frameLength);
+    /** Takes the next samples of the stream (any number); returns the segments (mono samples) they finish. */
+    public List<double[]> offer(double[] samples) {
+        List<double[]> done = new ArrayList<>(1);
+        int at = 0;
+        while (at < samples.length) {
+            int take = Math.min(frameLength - fill, samples.length - at);
+            System.arraycopy(samples, at, frame, fill, take);
+            fill += take;
+            at += take;
+            if (fill == frameLength) {
+                double[] full = frame;
+                frame = new double[frameLength];
+                fill = 0;
+                offerFrame(full).ifPresent(done::add);
+            }
         }
-        trackFloor(db);
-        boolean loud = db >= Math.max(settings.minLevelDb(), floorDb + settings.openAboveFloorDb());
+        return done;
+    }
+
+    private Optional<double[]> offerFrame(double[] frame) {
+        double db = detector.bandLevelDb(frame);
+        boolean speech = detector.isSpeech(db);
         if (!isOpen) {
-            if (!loud) {
+            if (!speech) {
                 preroll.addLast(frame);
                 while (preroll.size() > prerollFrames) {
                     preroll.removeFirst();
@@ -70,13 +93,17 @@ public final class UtteranceGate {
             isOpen = true;
             open.addAll(preroll);
             preroll.clear();
+            openThresholdDb = detector.openThresholdDb();
+            peakDb = db;
             loudMs = 0;
             quietMs = 0;
             openMs = 0;
         }
         open.add(frame);
         openMs += frameMs;
-        if (loud) {
+        peakDb = Math.max(peakDb, db);
+        boolean voiced = db >= Math.max(openThresholdDb - settings.closeBelowOpenDb(), peakDb - settings.peakRangeDb());
+        if (voiced) {
             loudMs += frameMs;
             quietMs = 0;
         } else {
@@ -101,18 +128,5 @@ public final class UtteranceGate {
         }
         open.clear();
         return loudMs >= settings.minLoudMs() ? Optional.of(joined) : Optional.empty();
-    }
-
-    private void trackFloor(double db) {
-        if (Double.isNaN(floorDb)) {
-            floorDb = db;
-            return;
-        }
-        if (db < floorDb) {
-            floorDb = db;
-        } else {
-            double rise = 1 - Math.exp(-frameMs / settings.floorRiseMs());
-            floorDb += (db - floorDb) * rise;
-        }
     }
 }

@@ -21,13 +21,19 @@ import org.habla.sample.TextValue;
  * Speech recognition with Sphinx-4, type {@code speech-recognition}: the paper's way for a teacher
  * to talk to the Aibo. Wire input {@code segments} to the utterances of {@code audio-processing}
  * (each chunk one utterance), or input {@code audio} to a microphone stream, which the method then
- * cuts into utterances itself with the same energy gate; any rate and channel count (resampled to
- * the 16 kHz mono Sphinx's model needs). Each recognised phrase of the grammar comes out on
- * {@code words} as text and on {@code result} as a record ({@code phrase}, {@code timeMs} the
- * decoding time, {@code audioMs} the utterance's length, {@code score} Sphinx's log score of the
- * best path — not a confidence). An utterance Sphinx hears nothing of the grammar in gives nothing,
- * and so does one without {@code minVoicedMs} of voice in it (noise, a bang, a whistled note), which
- * is not even decoded: bound to a grammar, Sphinx would name a phrase for almost any sound.
+ * cuts into utterances itself with the same voice-activity detector; any rate and channel count
+ * (resampled to the 16 kHz mono Sphinx's model needs). Either way each utterance is trimmed to its
+ * speech and a fixed margin ({@link UtteranceTrim}), so a recording handed over whole and the same
+ * words cut from a stream are heard alike.
+ *
+ * <p>Each recognised phrase comes out on {@code words} as text and on {@code result} as a record
+ * ({@code phrase}, {@code confidence} in (0, 1], {@code timeMs} the decoding time, {@code audioMs}
+ * the utterance's length, {@code score} Sphinx's log score of the best path). What comes out is
+ * always a whole phrase of the grammar: an utterance whose search ends in Sphinx's out-of-grammar
+ * branch, or ends nowhere, gives nothing, and so does a phrase heard with less than
+ * {@code minConfidence}. An utterance without {@code minVoicedMs} of voice in it (noise, a bang, a
+ * whistled note) is not even decoded. With {@code adaptation} the model is first adapted to one
+ * teacher's voice (an MLLR transform written by {@code habla enrol}).
  *
  * <p>The model loads in the background when the method starts (a few seconds; readiness is
  * "loading model" until then) and each utterance is decoded in the background, one at a time, so the
@@ -37,9 +43,10 @@ import org.habla.sample.TextValue;
 public final class SpeechRecognition extends ProcessingMethod {
 
     private static final int SPHINX_RATE_HZ = 16_000;
-    private static final double GATE_FRAME_MS = 32;
     /** Shorter than this no word fits; such audio is not worth a decoder's turn. */
     private static final int MIN_UTTERANCE_MS = 50;
+    /** Prior of each phone of the free phone loop (Sphinx's out-of-grammar branch and the confidence search). */
+    static final double PHONE_INSERTION = 0.05;
 
     /** An utterance waiting for the decoder, with the source time of its last audio. */
     private record Pending(AudioChunk audio, long sourceMicros) {
@@ -49,7 +56,8 @@ public final class SpeechRecognition extends ProcessingMethod {
     private final Output<TextValue> words = output("words", TextValue.class,
             Shape.text("the phrase of the grammar recognised in one utterance"));
     private final Output<RecordValue> result = output("result", RecordValue.class,
-            Shape.record("the recognised phrase with its decoding time", "phrase", "timeMs", "audioMs", "score"));
+            Shape.record("the recognised phrase with its confidence and decoding time", "phrase", "confidence",
+                    "timeMs", "audioMs", "score"));
     private final ArrayDeque<Pending> pending = new ArrayDeque<>();
     private final VoiceCheck voice;
 
@@ -58,10 +66,9 @@ public final class SpeechRecognition extends ProcessingMethod {
     private long dropped;
     private long recognised;
     private long unvoiced;
+    private long rejected;
     private AudioFormat streamFormat;
     private UtteranceGate gate;
-    private double[] frame = new double[0];
-    private int frameFill;
 
     SpeechRecognition(SpeechRecognitionParams params) {
         this.params = params;
@@ -73,9 +80,7 @@ public final class SpeechRecognition extends ProcessingMethod {
     @Override
     protected void onStart() {
         readiness(false, "loading model");
-        String grammar = params.grammar();
-        background("load the Sphinx-4 model",
-                () -> grammar.isEmpty() ? SphinxDecoder.bundled() : SphinxDecoder.withGrammarFile(Path.of(grammar)),
+        background("load the Sphinx-4 model", () -> SphinxDecoder.load(settings(params), params.adaptationFile()),
                 loaded -> {
                     decoder = loaded;
                     readiness(true, "model loaded");
@@ -91,32 +96,15 @@ public final class SpeechRecognition extends ProcessingMethod {
     private void onAudio(AudioChunk chunk, Sample sample) {
         if (!chunk.format().equals(streamFormat)) {
             streamFormat = chunk.format();
-            int length = Math.max(16, (int) Math.round(GATE_FRAME_MS * streamFormat.sampleRateHz() / 1000));
-            gate = new UtteranceGate(streamFormat.sampleRateHz(), length, params.gate());
-            frame = new double[length];
-            frameFill = 0;
+            gate = new UtteranceGate(streamFormat.sampleRateHz(), params.gate());
         }
-        double[] mono = MonoAudio.mix(chunk);
-        int at = 0;
-        while (at < mono.length) {
-            int take = Math.min(frame.length - frameFill, mono.length - at);
-            System.arraycopy(mono, at, frame, frameFill, take);
-            frameFill += take;
-            at += take;
-            if (frameFill == frame.length) {
-                double[] full = frame;
-                frame = new double[full.length];
-                frameFill = 0;
-                Optional<double[]> utterance = gate.offer(full, MonoAudio.dbfs(MonoAudio.rms(full)));
-                if (utterance.isPresent()) {
-                    double[] mono16 = MonoAudio.resample(utterance.get(), streamFormat.sampleRateHz(), SPHINX_RATE_HZ);
-                    enqueue(mono16, sample.sourceMicros());
-                }
-            }
+        for (double[] utterance : gate.offer(MonoAudio.mix(chunk))) {
+            enqueue(MonoAudio.resample(utterance, streamFormat.sampleRateHz(), SPHINX_RATE_HZ), sample.sourceMicros());
         }
     }
 
-    private void enqueue(double[] mono16k, long sourceMicros) {
+    private void enqueue(double[] whole, long sourceMicros) {
+        double[] mono16k = UtteranceTrim.trim(whole, SPHINX_RATE_HZ);
         if (mono16k.length < SPHINX_RATE_HZ * MIN_UTTERANCE_MS / 1000) {
             return;
         }
@@ -145,7 +133,15 @@ public final class SpeechRecognition extends ProcessingMethod {
         SphinxDecoder d = decoder;
         background("recognise an utterance", () -> decodeOrSkip(d, next.audio()), decoded -> {
             busy = false;
-            decoded.ifPresent(r -> publish(r, next));
+            decoded.ifPresent(r -> {
+                if (r.confidence() >= params.minConfidence()) {
+                    publish(r, next);
+                } else {
+                    rejected++;
+                    log().debug("{}: '{}' heard with confidence {} < minConfidence {}: nothing said", id(), r.phrase(),
+                            r.confidence(), params.minConfidence());
+                }
+            });
             decodeNext();
         });
     }
@@ -170,6 +166,7 @@ public final class SpeechRecognition extends ProcessingMethod {
         emit(words, new TextValue(r.phrase()), utterance.sourceMicros());
         emit(result, RecordValue.builder()
                 .put("phrase", r.phrase())
+                .put("confidence", Math.round(r.confidence() * 1000) / 1000.0)
                 .put("timeMs", r.decodeMs())
                 .put("audioMs", audioMs)
                 .put("score", r.score())
@@ -184,6 +181,17 @@ public final class SpeechRecognition extends ProcessingMethod {
     /** Utterances not decoded because they held no voice. */
     public long unvoicedUtterances() {
         return unvoiced;
+    }
+
+    /** Utterances whose phrase was heard with too little confidence. */
+    public long rejectedUtterances() {
+        return rejected;
+    }
+
+    /** The decoder's settings from the params (the bundled grammar copied to a file when none is named). */
+    static SphinxDecoder.Settings settings(SpeechRecognitionParams p) throws java.io.IOException {
+        Path grammar = p.grammar().isEmpty() ? SphinxDecoder.bundledGrammar() : Path.of(p.grammar());
+        return new SphinxDecoder.Settings(grammar, p.denoise(), p.outOfGrammarProbability(), PHONE_INSERTION);
     }
 
     /** Utterances in which a phrase was recognised. */

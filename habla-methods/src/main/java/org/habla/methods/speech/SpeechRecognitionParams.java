@@ -1,16 +1,32 @@
 package org.habla.methods.speech;
 
+import java.nio.file.Path;
+import java.util.Optional;
 import org.habla.methods.ParamRules;
 import org.habla.methods.audio.AudioProcessingParams;
 import org.habla.methods.audio.UtteranceGate;
+import org.habla.methods.audio.VoiceActivityDetector;
 import org.habla.plugin.Param;
 
-/** The params of the {@code speech-recognition} method: the grammar, the backlog and its own endpointing. */
+/** The params of the {@code speech-recognition} method: grammar, speaker, rejection, backlog and endpointing. */
 public record SpeechRecognitionParams(
         @Param(value = "Path of a JSGF grammar file (.gram) of the phrases to recognise; empty: the bundled "
                 + "commands.gram (go forward, turn left, turn right, go back, stop, good dog, bad dog, well done, no)",
                 defaultValue = "\"\"", file = true)
         String grammar,
+        @Param(value = "Path of a speaker's adaptation file written by 'habla enrol'; empty: the model as it comes",
+                defaultValue = "\"\"", file = true)
+        String adaptation,
+        @Param(value = "The lowest confidence a phrase is said with; below it the utterance gives nothing",
+                defaultValue = "0.1")
+        Double minConfidence,
+        @Param(value = "Prior of Sphinx's out-of-grammar branch (a loop of phones beside the grammar): the higher, "
+                + "the more readily speech outside the grammar gives nothing; 0 (no branch) measured best",
+                defaultValue = "0")
+        Double outOfGrammarProbability,
+        @Param(value = "Noise removal in Sphinx's front end (spectral noise estimate subtracted per mel band)",
+                defaultValue = "true")
+        Boolean denoise,
         @Param(value = "Utterances kept waiting while one is decoded or the model loads; the oldest is dropped "
                 + "beyond this", defaultValue = "4")
         Integer maxPending,
@@ -18,13 +34,12 @@ public record SpeechRecognitionParams(
                 + "utterance", unit = "ms", defaultValue = "80")
         Double minVoicedMs,
         @Param(value = "Endpointing of the audio input: how far above the noise floor speech must be", unit = "dB",
-                defaultValue = "12")
+                defaultValue = "10")
         Double openAboveFloorDb,
-        @Param(value = "Endpointing of the audio input: the quietest level that can be speech", unit = "dBFS",
-                defaultValue = "-50")
+        @Param(value = "Endpointing of the audio input: the quietest speech", unit = "dBFS", defaultValue = "-55")
         Double minLevelDb,
-        @Param(value = "Endpointing of the audio input: the pause that ends an utterance", unit = "ms",
-                defaultValue = "300")
+        @Param(value = "Endpointing of the audio input: how long without speech ends an utterance", unit = "ms",
+                defaultValue = "200")
         Double hangoverMs,
         @Param(value = "Queue length of the audio and segments inputs, in chunks", defaultValue = "256")
         Integer queue) {
@@ -34,23 +49,59 @@ public record SpeechRecognitionParams(
         if (!grammar.isEmpty() && !grammar.endsWith(".gram")) {
             throw new IllegalArgumentException("grammar must name a JSGF file ending in .gram, was '" + grammar + "'");
         }
+        adaptation = adaptation == null ? "" : adaptation.trim();
+        minConfidence = ParamRules.within("minConfidence", minConfidence, 0.1, 0, 1);
+        outOfGrammarProbability = ParamRules.within("outOfGrammarProbability", outOfGrammarProbability, 0, 0, 1);
+        denoise = denoise == null || denoise;
         maxPending = ParamRules.within("maxPending", maxPending, 4, 1, 1000);
         minVoicedMs = ParamRules.within("minVoicedMs", minVoicedMs, 80, 0, 5000);
-        openAboveFloorDb = ParamRules.within("openAboveFloorDb", openAboveFloorDb, 12, 0, 80);
-        minLevelDb = ParamRules.within("minLevelDb", minLevelDb, -50, -120, 0);
-        hangoverMs = ParamRules.within("hangoverMs", hangoverMs, 300, 0, 5000);
+        openAboveFloorDb = ParamRules.within("openAboveFloorDb", openAboveFloorDb, 10, 0, 80);
+        minLevelDb = ParamRules.within("minLevelDb", minLevelDb, -55, -120, 0);
+        hangoverMs = ParamRules.within("hangoverMs", hangoverMs, 200, 0, 5000);
         queue = ParamRules.within("queue", queue, 256, 1, 65_536);
     }
 
     /** Every parameter at its default. */
     public static SpeechRecognitionParams defaults() {
-        return new SpeechRecognitionParams(null, null, null, null, null, null, null);
+        return new SpeechRecognitionParams(null, null, null, null, null, null, null, null, null, null, null);
+    }
+
+    /** These params with another grammar file. */
+    public SpeechRecognitionParams withGrammar(String file) {
+        return new SpeechRecognitionParams(file, adaptation, minConfidence, outOfGrammarProbability, denoise,
+                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, queue);
+    }
+
+    /** These params with a speaker's adaptation file. */
+    public SpeechRecognitionParams withAdaptation(String file) {
+        return new SpeechRecognitionParams(grammar, file, minConfidence, outOfGrammarProbability, denoise,
+                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, queue);
+    }
+
+    /** These params with another confidence threshold. */
+    public SpeechRecognitionParams withMinConfidence(double threshold) {
+        return new SpeechRecognitionParams(grammar, adaptation, threshold, outOfGrammarProbability, denoise,
+                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, queue);
+    }
+
+    /** These params with another backlog. */
+    public SpeechRecognitionParams withMaxPending(int n) {
+        return new SpeechRecognitionParams(grammar, adaptation, minConfidence, outOfGrammarProbability, denoise, n,
+                minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, queue);
+    }
+
+    /** The adaptation file, if one is named. */
+    Optional<Path> adaptationFile() {
+        return adaptation.isEmpty() ? Optional.empty() : Optional.of(Path.of(adaptation));
     }
 
     /** The endpointing gate's settings: these params over the defaults of {@code audio-processing}. */
     UtteranceGate.Settings gate() {
         UtteranceGate.Settings d = AudioProcessingParams.defaults().gate();
-        return new UtteranceGate.Settings(openAboveFloorDb, minLevelDb, hangoverMs, d.prerollMs(), d.minLoudMs(),
-                d.maxSegmentMs(), d.floorRiseMs());
+        VoiceActivityDetector.Settings v = d.detector();
+        return new UtteranceGate.Settings(
+                new VoiceActivityDetector.Settings(openAboveFloorDb, v.openAboveBackgroundDb(), minLevelDb,
+                        v.noiseWindowMs()),
+                d.closeBelowOpenDb(), d.peakRangeDb(), hangoverMs, d.prerollMs(), d.minLoudMs(), d.maxSegmentMs());
     }
 }

@@ -1,58 +1,89 @@
 package org.habla.methods.speech;
 
-import edu.cmu.sphinx.api.AbstractSpeechRecognizer;
-import edu.cmu.sphinx.api.Configuration;
-import edu.cmu.sphinx.api.Context;
 import edu.cmu.sphinx.api.SpeechResult;
+import edu.cmu.sphinx.decoder.adaptation.ClusteredDensityFileData;
+import edu.cmu.sphinx.decoder.adaptation.Stats;
+import edu.cmu.sphinx.decoder.adaptation.Transform;
+import edu.cmu.sphinx.decoder.search.Token;
+import edu.cmu.sphinx.frontend.util.StreamDataSource;
+import edu.cmu.sphinx.jsgf.JSGFGrammar;
+import edu.cmu.sphinx.linguist.acoustic.tiedstate.Loader;
+import edu.cmu.sphinx.linguist.acoustic.tiedstate.Sphinx3Loader;
+import edu.cmu.sphinx.recognizer.Recognizer;
+import edu.cmu.sphinx.result.Result;
+import edu.cmu.sphinx.util.LogMath;
+import edu.cmu.sphinx.util.props.ConfigurationManager;
 import java.io.ByteArrayInputStream;
 import java.io.IOException;
 import java.io.InputStream;
-import java.net.MalformedURLException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import org.habla.sample.AudioChunk;
+import org.habla.sample.AudioFormat;
 
 /**
- * Sphinx-4 set up for HABLA: the US English acoustic model and pronouncing dictionary of
- * sphinx4-data and a JSGF grammar of the phrases to listen for. Making one loads the model (seconds,
- * tens of megabytes), so the {@code speech-recognition} method makes it in the background, once;
- * each utterance is then decoded in well under a second. Not safe for two threads at once.
+ * Sphinx-4 set up for HABLA: the US English acoustic model and pronouncing dictionary of sphinx4-data,
+ * a JSGF grammar of the phrases to listen for, and HABLA's front end ({@code sphinx.config.xml}).
+ * Each utterance is searched twice, over the same features: in the grammar, and as free phones; the
+ * phrase's confidence is how close its fit comes to the free phones' (the mean per-frame likelihood
+ * ratio, as a number in (0, 1]). Making one loads the model (seconds, tens of megabytes), so the
+ * {@code speech-recognition} method makes it in the background, once. Not safe for two threads at once.
  */
-public final class SphinxDecoder extends AbstractSpeechRecognizer {
+public final class SphinxDecoder {
 
     /** The grammar bundled with HABLA, covering the teacher's vocabulary (a class-path resource). */
     public static final String BUNDLED_GRAMMAR = "/org/habla/methods/speech/commands.gram";
 
-    /** Sphinx-4's own configuration of its components, which HABLA uses with quieter logging. */
-    private static final String SPHINX_CONFIG = "/edu/cmu/sphinx/api/default.config.xml";
-
+    private static final String CONFIG = "/org/habla/methods/speech/sphinx.config.xml";
     private static final String ACOUSTIC_MODEL = "resource:/edu/cmu/sphinx/models/en-us/en-us";
     private static final String DICTIONARY = "resource:/edu/cmu/sphinx/models/en-us/cmudict-en-us.dict";
-
     /**
-     * The word Sphinx puts where it heard something outside the grammar; an utterance with one is
-     * not taken for a phrase (noise often decodes as a phrase's first word followed by it).
+     * Noise added to every utterance before Sphinx hears it, in 16-bit steps (RMS; about −70 dBFS): the
+     * log of the mel energies of digital silence is Sphinx's floor value, far from any sound its model
+     * knows, and it upset recognition of words that came with digital silence around them (tune voices,
+     * clean: 85 % right without, 90 % with; in an echoing room 77 % and 89 %). Seeded afresh for each
+     * utterance, so an utterance is heard the same whatever came before it.
      */
-    private static final String UNKNOWN_WORD = "<unk>";
+    static final double DITHER_RMS = 10;
+    private static final long DITHER_SEED = 16_000;
 
-    /** What Sphinx made of one utterance. */
-    public record Decoded(String phrase, double score, long decodeMs) {
+    /** Regression classes of the speaker adaptation: one transform for all sounds, as few utterances support. */
+    static final int ADAPTATION_CLASSES = 1;
+
+    /** How Sphinx is set up: noise removal, the out-of-grammar branch, and the grammar. */
+    public record Settings(Path grammarFile, boolean denoise, double outOfGrammarProbability,
+            double phoneInsertionProbability) {
     }
 
-    private SphinxDecoder(Context context) throws IOException {
-        super(context);
+    /** What Sphinx made of one utterance: a phrase of the grammar and its confidence. */
+    public record Decoded(String phrase, double confidence, double score, long decodeMs) {
+    }
+
+    private final ConfigurationManager cm;
+    private final Recognizer recognizer;
+    private final Recognizer phoneRecognizer;
+    private final StreamDataSource source;
+    private final GrammarPhrases phrases;
+    private final LogMath logMath = LogMath.getLogMath();
+
+    private SphinxDecoder(ConfigurationManager cm) {
+        this.cm = cm;
+        this.recognizer = cm.lookup("recognizer");
+        this.phoneRecognizer = cm.lookup("phoneRecognizer");
+        this.source = cm.lookup("dataSource");
         recognizer.allocate();
+        phoneRecognizer.allocate();
+        JSGFGrammar grammar = cm.lookup("jsgfGrammar");
+        this.phrases = new GrammarPhrases(grammar.getInitialNode());
     }
 
-    /**
-     * Loads the model with the bundled grammar. Sphinx reads grammars from a folder, so the bundled
-     * one is copied to a temporary folder first (it may live inside a jar).
-     */
-    public static SphinxDecoder bundled() throws IOException {
+    /** The bundled grammar as a file (Sphinx reads grammars from a folder; the resource may be in a jar). */
+    public static Path bundledGrammar() throws IOException {
         Path dir = Files.createTempDirectory("habla-grammar");
         Path file = dir.resolve("commands.gram");
         try (InputStream in = SphinxDecoder.class.getResourceAsStream(BUNDLED_GRAMMAR)) {
@@ -63,80 +94,130 @@ public final class SphinxDecoder extends AbstractSpeechRecognizer {
         }
         file.toFile().deleteOnExit();
         dir.toFile().deleteOnExit();
-        return withGrammarFile(file);
+        return file;
     }
 
-    /** Loads the model with the grammar in a {@code .gram} file (its name without the extension names the grammar). */
-    public static SphinxDecoder withGrammarFile(Path gramFile) throws IOException {
-        Path file = gramFile.toAbsolutePath().normalize();
+    /** Loads the model with these settings and, if given, a speaker's adaptation (an MLLR transform file). */
+    public static SphinxDecoder load(Settings settings, Optional<Path> adaptation) throws IOException {
+        Path file = settings.grammarFile().toAbsolutePath().normalize();
+        Map<String, String> values = values(settings);
+        try {
+            SphinxDecoder d = new SphinxDecoder(new ConfigurationManager(writeConfig(values).toUri().toURL()));
+            if (adaptation.isPresent()) {
+                d.adapt(adaptation.get());
+            }
+            d.warmUp();
+            return d;
+        } catch (RuntimeException e) {
+            throw new IOException("Sphinx-4 could not load (grammar " + file + "): " + e.getMessage(), e);
+        }
+    }
+
+    private static Map<String, String> values(Settings settings) throws IOException {
+        Path file = settings.grammarFile().toAbsolutePath().normalize();
         if (!Files.isRegularFile(file)) {
             throw new IOException("grammar file " + file + " does not exist");
         }
         String fileName = file.getFileName().toString();
         String name = fileName.endsWith(".gram") ? fileName.substring(0, fileName.length() - 5) : fileName;
-        try {
-            String dir = file.getParent().toUri().toURL().toString();
-            return load(dir.endsWith("/") ? dir : dir + "/", name);
-        } catch (MalformedURLException e) {
-            throw new IOException("cannot read grammar " + file + ": " + e.getMessage(), e);
-        }
+        String dir = file.getParent().toUri().toURL().toString();
+        return Map.ofEntries(
+                Map.entry("absoluteBeamWidth", "20000"),
+                Map.entry("relativeBeamWidth", "1e-60"),
+                Map.entry("wordInsertionProbability", "0.1"),
+                Map.entry("silenceInsertionProbability", "0.1"),
+                Map.entry("languageWeight", "8.0"),
+                Map.entry("outOfGrammarBranch", String.valueOf(settings.outOfGrammarProbability() > 0)),
+                Map.entry("outOfGrammarProbability", String.valueOf(Math.max(settings.outOfGrammarProbability(), 1e-300))),
+                Map.entry("phoneInsertionProbability", String.valueOf(settings.phoneInsertionProbability())),
+                Map.entry("grammarLocation", dir.endsWith("/") ? dir : dir + "/"),
+                Map.entry("grammarName", name),
+                Map.entry("dictionary", DICTIONARY),
+                Map.entry("acousticModel", ACOUSTIC_MODEL),
+                Map.entry("denoise", settings.denoise() ? "<item>denoise</item>" : ""),
+                Map.entry("cmn", "edu.cmu.sphinx.frontend.feature.BatchCMN"));
     }
 
-    private static SphinxDecoder load(String grammarLocation, String grammarName) throws IOException {
-        Configuration config = new Configuration();
-        config.setAcousticModelPath(ACOUSTIC_MODEL);
-        config.setDictionaryPath(DICTIONARY);
-        config.setGrammarPath(grammarLocation);
-        config.setGrammarName(grammarName);
-        config.setUseGrammar(true);
-        config.setSampleRate(16_000);
+    private static Path writeConfig(Map<String, String> values) throws IOException {
+        String xml;
+        try (InputStream in = SphinxDecoder.class.getResourceAsStream(CONFIG)) {
+            if (in == null) {
+                throw new IOException(CONFIG + " is missing from the class path");
+            }
+            xml = new String(in.readAllBytes(), StandardCharsets.UTF_8);
+        }
+        for (Map.Entry<String, String> e : values.entrySet()) {
+            xml = xml.replace("${" + e.getKey() + "}", e.getValue());
+        }
+        Path file = Files.createTempFile("habla-sphinx", ".config.xml");
+        Files.writeString(file, xml, StandardCharsets.UTF_8);
+        file.toFile().deleteOnExit();
+        return file;
+    }
+
+    /** Applies a speaker's MLLR transform (written by {@link #writeAdaptation}) to the loaded model's means. */
+    private void adapt(Path transformFile) throws IOException {
+        Loader loader = cm.lookup("acousticModelLoader");
         try {
-            // The decoder is run over a few seconds of noise first, so the first real utterance is decoded by
-            // compiled code (without this the teacher's first command comes seconds late). This leaves no trace
-            // on later utterances: the front end keeps no state between them (no endpointer, batch CMN).
-            SphinxDecoder d = new SphinxDecoder(new Context(sphinxConfig(), config));
-            d.warmUp();
-            return d;
-        } catch (RuntimeException e) {
-            throw new IOException("Sphinx-4 could not load (grammar " + grammarLocation + grammarName + ".gram): "
-                    + e.getMessage(), e);
+            Transform t = new Transform((Sphinx3Loader) loader, ADAPTATION_CLASSES);
+            t.load(transformFile.toString());
+            loader.update(t, new ClusteredDensityFileData(loader, ADAPTATION_CLASSES));
+        } catch (Exception e) {
+            throw new IOException("cannot apply the adaptation " + transformFile + ": " + e.getMessage(), e);
         }
     }
 
     /**
-     * Sphinx's component configuration made fit for HABLA, written to a temporary file because Sphinx
-     * reads it by URL: its log level lowered to warnings (at INFO it logs every phone of the model
-     * while loading), and its endpointer (speech classifier and marker) taken out of the front end,
-     * because HABLA hands it whole utterances already cut by an energy gate: Sphinx's endpointer,
-     * made for a live microphone, would cut them again and drop many of them in a noisy room (with
-     * it, 49 of the 72 recorded utterances were recognised over white noise at −44 dBFS; without it, 72).
-     * For the same reason cepstral mean normalisation is done per utterance (batch) instead of live:
-     * the live one carries its estimate from one utterance to the next, so an utterance was heard
-     * differently depending on who spoke before it (67–70 of 72 clean utterances in shuffled orders;
-     * 71 of 72 in every order per utterance).
+     * Estimates a speaker's MLLR transform from utterances of theirs (16 kHz mono 16-bit), each aligned to
+     * the phrase they were asked to say, and writes it to {@code out}. Returns the frames of speech used.
+     * Uses a model of its own (the transform is applied to the means of the model that loads it).
      */
-    private static String sphinxConfig() throws IOException {
-        String xml;
-        try (InputStream in = Context.class.getResourceAsStream(SPHINX_CONFIG)) {
-            if (in == null) {
-                throw new IOException("Sphinx-4's " + SPHINX_CONFIG + " is missing from the class path");
+    public static int writeAdaptation(Settings settings, List<AudioChunk> utterances, List<String> phrases, Path out)
+            throws IOException {
+        if (utterances.size() != phrases.size()) {
+            throw new IllegalArgumentException(utterances.size() + " utterances but " + phrases.size() + " phrases");
+        }
+        ConfigurationManager cm = new ConfigurationManager(writeConfig(values(settings)).toUri().toURL());
+        Recognizer aligner = cm.lookup("alignRecognizer");
+        edu.cmu.sphinx.linguist.language.grammar.AlignerGrammar grammar = cm.lookup("alignerGrammar");
+        StreamDataSource source = cm.lookup("dataSource");
+        Loader loader = cm.lookup("acousticModelLoader");
+        try {
+            // the grammar of each utterance is its phrase; the linguist compiles it again when it changes
+            aligner.allocate();
+            Stats stats = new Stats(loader, new ClusteredDensityFileData(loader, ADAPTATION_CLASSES));
+            int aligned = 0;
+            for (int i = 0; i < utterances.size(); i++) {
+                grammar.setWords(List.of(phrases.get(i).trim().split("\\s+")));
+                source.setInputStream(new ByteArrayInputStream(dithered(utterances.get(i))));
+                Result r = aligner.recognize();
+                while (aligner.recognize() != null) {
+                    // the rest of the stream
+                }
+                // the aligner's grammar is the phrase alone: its best path is the alignment
+                if (r != null && r.getBestToken() != null) {
+                    stats.collect(new SpeechResult(r));
+                    aligned++;
+                }
             }
-            xml = new String(in.readAllBytes(), StandardCharsets.UTF_8);
+            if (aligned == 0) {
+                throw new IOException("none of the " + utterances.size() + " utterances could be aligned to its phrase");
+            }
+            Transform t = stats.createTransform();
+            Path parent = out.toAbsolutePath().getParent();
+            if (parent != null) {
+                Files.createDirectories(parent);
+            }
+            t.store(out.toString(), 0);
+            return stats.getFrames();
+        } catch (IOException e) {
+            throw e;
+        } catch (Exception e) {
+            throw new IOException("speaker adaptation failed: " + e.getMessage(), e);
         }
-        String whole = xml.replaceAll("<item>\\s*speechClassifier\\s*</item>", "")
-                .replaceAll("<item>\\s*speechMarker\\s*</item>", "")
-                .replaceAll("<item>\\s*liveCMN\\s*</item>", "<item>batchCMN</item>");
-        if (whole.contains("<item>speechMarker") || whole.contains("<item>liveCMN") || !whole.contains("batchCMN</item>")) {
-            throw new IOException("Sphinx-4's " + SPHINX_CONFIG + " has an unexpected front end; cannot set it up");
-        }
-        String quiet = whole.replaceFirst("(<property\\s+name=\"logLevel\"\\s+value=)\"[A-Z]+\"", "$1\"WARNING\"");
-        Path file = Files.createTempFile("habla-sphinx", ".config.xml");
-        Files.writeString(file, quiet, StandardCharsets.UTF_8);
-        file.toFile().deleteOnExit();
-        return file.toUri().toURL().toString();
     }
 
-    /** Decodes a few seconds of quiet noise, to have the decoding code compiled. */
+    /** Decodes a few seconds of quiet noise, to have the decoding code compiled before the first utterance. */
     private void warmUp() {
         java.util.Random noise = new java.util.Random(16_000);
         byte[] pcm = new byte[16_000 * 2];
@@ -146,36 +227,95 @@ public final class SphinxDecoder extends AbstractSpeechRecognizer {
                 pcm[i] = (byte) v;
                 pcm[i + 1] = (byte) (v >> 8);
             }
-            decode(AudioChunk.of(org.habla.sample.AudioFormat.MONO_16K, pcm.clone()));
+            decode(AudioChunk.of(AudioFormat.MONO_16K, pcm.clone()));
         }
     }
 
     /**
-     * Decodes one utterance of 16 kHz mono 16-bit audio; empty when Sphinx hears no phrase of the
-     * grammar in it, or something outside the grammar besides.
+     * Decodes one utterance of 16 kHz mono 16-bit audio: a phrase of the grammar with its confidence,
+     * or empty when the search ended outside the grammar (its out-of-grammar branch, or no phrase finished).
      */
     public Optional<Decoded> decode(AudioChunk utterance) {
-        if (utterance.format().sampleRateHz() != 16_000 || utterance.format().channels() != 1
-                || utterance.format().bitsPerSample() != 16) {
+        if (!utterance.format().equals(AudioFormat.MONO_16K)) {
             throw new IllegalArgumentException("Sphinx needs 16 kHz mono 16-bit audio, got " + utterance.format());
         }
         long start = System.nanoTime();
-        context.setSpeechSource(new ByteArrayInputStream(utterance.pcm()));
-        List<String> words = new ArrayList<>();
-        double score = 0;
-        boolean outOfGrammar = false;
-        SpeechResult result;
-        while ((result = getResult()) != null) {
-            String hypothesis = result.getHypothesis();
-            if (hypothesis != null && hypothesis.contains(UNKNOWN_WORD)) {
-                outOfGrammar = true;
-            } else if (hypothesis != null && !hypothesis.isBlank()) {
-                words.add(hypothesis.trim());
-                score += result.getResult().getBestFinalToken() == null ? 0
-                        : result.getResult().getBestFinalToken().getScore();
-            }
+        Result r = search(recognizer, utterance);
+        Token best = r == null ? null : r.getBestFinalToken();
+        if (best == null) {
+            return Optional.empty();
+        }
+        List<String> words = words(best);
+        if (!phrases.accepts(words)) {
+            return Optional.empty();
+        }
+        Result free = search(phoneRecognizer, utterance);
+        Token phones = free == null ? null : free.getBestToken();
+        double[] g = acoustic(best);
+        double confidence = 1;
+        if (phones != null && g[1] > 0) {
+            double[] p = acoustic(phones);
+            double perFrame = logMath.logToLn((float) ((g[0] - p[0]) / g[1]));
+            confidence = Math.min(1, Math.exp(perFrame));
         }
         long ms = (System.nanoTime() - start) / 1_000_000;
-        return words.isEmpty() || outOfGrammar ? Optional.empty() : Optional.of(new Decoded(String.join(" ", words), score, ms));
+        return Optional.of(new Decoded(String.join(" ", words), confidence, best.getScore(), ms));
+    }
+
+    private Result search(Recognizer which, AudioChunk utterance) {
+        source.setInputStream(new ByteArrayInputStream(dithered(utterance)));
+        Result last = null;
+        Result r;
+        while ((r = which.recognize()) != null) {
+            last = r;
+            if (r.isFinal() && r.getBestFinalToken() != null) {
+                break;
+            }
+        }
+        // drain what is left of the stream so the next search starts afresh
+        while (which.recognize() != null) {
+            // nothing: the rest of a stream after the final result
+        }
+        return last;
+    }
+
+    /** The utterance's 16-bit PCM with {@link #DITHER_RMS} of noise added (the same noise every time). */
+    static byte[] dithered(AudioChunk utterance) {
+        byte[] pcm = utterance.pcm().clone();
+        java.util.Random r = new java.util.Random(DITHER_SEED);
+        for (int i = 0; i + 1 < pcm.length; i += 2) {
+            int v = (short) ((pcm[i] & 0xff) | (pcm[i + 1] << 8));
+            int d = (int) Math.max(Short.MIN_VALUE, Math.min(Short.MAX_VALUE, Math.round(v + r.nextGaussian() * DITHER_RMS)));
+            pcm[i] = (byte) d;
+            pcm[i + 1] = (byte) (d >> 8);
+        }
+        return pcm;
+    }
+
+    /** The words of a path, fillers (silence) left out, first word first; {@code <unk>} for the phone loop. */
+    private static List<String> words(Token t) {
+        List<String> out = new ArrayList<>();
+        for (Token at = t; at != null; at = at.getPredecessor()) {
+            if (at.isWord()) {
+                var w = at.getWord();
+                if (!w.isFiller()) {
+                    out.add(0, w.getSpelling());
+                }
+            }
+        }
+        return out;
+    }
+
+    /** The path's summed acoustic score (log base of {@link LogMath}) and its number of frames. */
+    private static double[] acoustic(Token t) {
+        double sum = 0;
+        int frames = 0;
+        for (Token at = t; at != null; at = at.getPredecessor()) {
+            if (at.isEmitting()) {
+                sum += at.getAcousticScore();
+                frames++;
+            }
+        }
+        return new double[] {sum, frames};
     }
 }

@@ -8,7 +8,7 @@ import picocli.CommandLine.Command;
 @Command(name = "sim", mixinStandardHelpOptions = true,
         description = "Run a simulated robot: its own servers on loopback, its world and its teacher, and a "
                 + "ground-truth server. Stops on Ctrl-C or SIGTERM.",
-        subcommands = {SimPioneerCommand.class, SimAiboCommand.class})
+        subcommands = {SimPioneerCommand.class, SimAiboCommand.class, SimRoomCommand.class})
 public final class SimCommand implements Runnable {
 
     @Override

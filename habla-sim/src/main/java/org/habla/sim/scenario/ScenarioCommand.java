@@ -19,7 +19,7 @@ import picocli.CommandLine.Spec;
  * and control program as three processes — with a report of every episode.
  */
 @Command(name = "scenario", mixinStandardHelpOptions = true,
-        description = {"Replay the paper's experiment on a simulated robot: the simulator, the daemon with the robot's "
+        description = {"Replay the paper's experiment on a simulated robot (or the intelligent room, 'room'): the simulator, the daemon with the robot's "
                 + "config and the control program (examples/mdb/mdb.py) run as separate processes over loopback.",
                 "Prints progress and a summary table; writes report.json, report.md and SVG plots to the report folder."})
 public final class ScenarioCommand implements Callable<Integer> {
@@ -27,7 +27,7 @@ public final class ScenarioCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "ROBOT", description = "pioneer or aibo")
+    @Parameters(index = "0", paramLabel = "ROBOT", description = "pioneer, aibo or room")
     private String robot;
 
     @Option(names = "--scenario", paramLabel = "FILE", description = "A scenario file instead of the robot's built-in one.")
@@ -56,6 +56,9 @@ public final class ScenarioCommand implements Callable<Integer> {
     public Integer call() throws Exception {
         PrintWriter err = spec.commandLine().getErr();
         PrintWriter out = spec.commandLine().getOut();
+        if (robot.equals("room")) {
+            return room(out, err);
+        }
         ScenarioFile sc;
         try {
             sc = scenarioFile != null ? ScenarioFile.read(scenarioFile) : ScenarioFile.builtIn(robot);
@@ -94,6 +97,42 @@ public final class ScenarioCommand implements Callable<Integer> {
             return ExitCodes.RUNTIME_FAILURE;
         }
         ScenarioReport.write(dir, robot, logs);
+        out.println("report: " + dir.resolve("report.md"));
+        out.flush();
+        return ExitCodes.OK;
+    }
+
+    /** The room's scenario: broker, simulated room, daemon and control program; its own report. */
+    private int room(PrintWriter out, PrintWriter err) throws Exception {
+        RoomScenarioFile sc;
+        try {
+            sc = scenarioFile != null ? RoomScenarioFile.read(scenarioFile) : RoomScenarioFile.builtIn();
+        } catch (IOException e) {
+            err.println("habla scenario: " + e.getMessage());
+            err.flush();
+            return ExitCodes.USAGE_OR_CONFIG;
+        }
+        Path root = home != null ? home : findHome();
+        double s = speed != null ? speed : sc.speed();
+        if (root == null || !(s >= 1)) {
+            err.println("habla scenario: " + (root == null ? "cannot find the HABLA folder; pass --home"
+                    : "--speed must be 1 or more"));
+            err.flush();
+            return ExitCodes.USAGE_OR_CONFIG;
+        }
+        Path dir = report != null ? report : root.resolve("reports").resolve(robot);
+        RoomScenarioRunner runner = new RoomScenarioRunner(new RoomScenarioRunner.Options(sc,
+                episodes != null ? episodes : sc.episodes(), s, seed, dir, portOffset, root), out);
+        List<RoomPhase> phases;
+        try {
+            phases = runner.run();
+        } catch (IOException e) {
+            err.println("habla scenario: " + e.getMessage());
+            err.println("logs of the broker, the simulator, the daemon and the control program are in " + dir);
+            err.flush();
+            return ExitCodes.RUNTIME_FAILURE;
+        }
+        RoomReport.write(dir, phases, runner.traces());
         out.println("report: " + dir.resolve("report.md"));
         out.flush();
         return ExitCodes.OK;

@@ -1,0 +1,59 @@
+package org.habla.methods.room;
+
+import org.habla.method.Delivery;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.method.SensorActuatorMethod;
+import org.habla.method.Shape;
+import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.plugin.Param;
+import org.habla.sample.NumberValue;
+import org.habla.sample.RecordValue;
+import org.habla.sample.Sample;
+
+/**
+ * The blinds method, type {@code blinds}: how far blinds or a cover are open (input {@code open}: 0 closed,
+ * 1 open) as a cover's command on output {@code command}: {@code {"position": 0..100}} (percent open, the
+ * Zigbee2MQTT and Home Assistant convention; {@code invert} for covers that count closed). Sent when it changes.
+ */
+public final class Blinds extends SensorActuatorMethod {
+
+    private final Params params;
+    private final Output<RecordValue> command = output("command", RecordValue.class,
+            Shape.record("the cover command: position in percent", "position"));
+    private Integer last;
+
+    /** The params of a {@code blinds} method. */
+    public record Params(
+            @Param(value = "the cover counts percent closed instead of open", defaultValue = "false") Boolean invert) {
+
+        public Params {
+            invert = invert != null && invert;
+        }
+    }
+
+    Blinds(Params params) {
+        this.params = params;
+        input("open", NumberValue.class, Delivery.queue(16), this::onOpen);
+    }
+
+    private void onOpen(NumberValue value, Sample sample) {
+        if (!Double.isFinite(value.value())) {
+            return;
+        }
+        int percent = (int) Math.round(Math.max(0, Math.min(1, value.value())) * 100);
+        int position = params.invert() ? 100 - percent : percent;
+        if (last == null || last != position) {
+            last = position;
+            emit(command, RecordValue.builder().put("position", position).build());
+        }
+    }
+
+    /** Makes {@code blinds} methods. */
+    public static final class Provider extends SimpleMethodProvider<Params> {
+        public Provider() {
+            super("blinds", "How far blinds are open, 0..1, as a cover's position command in percent", Params.class,
+                    (layer, p) -> new Blinds(p), Layer.SENSORS_ACTUATORS);
+        }
+    }
+}

@@ -1,0 +1,121 @@
+package org.habla.methods.room;
+
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import org.habla.method.Delivery;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.method.Shape;
+import org.habla.method.VirtualMethod;
+import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.methods.ParamRules;
+import org.habla.plugin.Param;
+import org.habla.sample.NumberValue;
+import org.habla.sample.RecordValue;
+import org.habla.sample.Sample;
+
+/**
+ * The comfort method, type {@code comfort}: how pleasant a room is for a person, from its climate (input
+ * {@code climate}: {@code temperatureC}, {@code humidityPct}), light (input {@code lux}) and noise (input
+ * {@code sound}, dB). Output {@code comfort} is a record of the readings, a {@code score} from 0 (everything
+ * out of range) to 1 (everything within), and the {@code complaints}: {@code cold}, {@code warm}, {@code dry},
+ * {@code humid}, {@code dark}, {@code glaring}, {@code noisy}. Each reading counts only once it has been heard;
+ * every input may be left unwired.
+ */
+public final class Comfort extends VirtualMethod {
+
+    private final Params params;
+    private final Output<RecordValue> comfort = output("comfort", RecordValue.class,
+            Shape.record("the readings, a score 0..1 and what is wrong", "temperatureC", "humidityPct", "lux",
+                    "soundDb", "score", "complaints"));
+    private Double temperatureC;
+    private Double humidityPct;
+    private Double lux;
+    private Double soundDb;
+
+    /** The params of a {@code comfort} method: the comfortable ranges. */
+    public record Params(
+            @Param(value = "coldest comfortable air", unit = "degC", defaultValue = "20") Double minTemperatureC,
+            @Param(value = "warmest comfortable air", unit = "degC", defaultValue = "25") Double maxTemperatureC,
+            @Param(value = "driest comfortable air", unit = "%", defaultValue = "30") Double minHumidityPct,
+            @Param(value = "most humid comfortable air", unit = "%", defaultValue = "60") Double maxHumidityPct,
+            @Param(value = "least light to read or work by", unit = "lx", defaultValue = "200") Double minLux,
+            @Param(value = "most light before it glares", unit = "lx", defaultValue = "2000") Double maxLux,
+            @Param(value = "loudest comfortable sound", unit = "dB", defaultValue = "-20") Double maxSoundDb) {
+
+        public Params {
+            minTemperatureC = ParamRules.within("minTemperatureC", minTemperatureC, 20, -40, 85);
+            maxTemperatureC = ParamRules.within("maxTemperatureC", maxTemperatureC, 25, minTemperatureC, 85);
+            minHumidityPct = ParamRules.within("minHumidityPct", minHumidityPct, 30, 0, 100);
+            maxHumidityPct = ParamRules.within("maxHumidityPct", maxHumidityPct, 60, minHumidityPct, 100);
+            minLux = ParamRules.within("minLux", minLux, 200, 0, 1e6);
+            maxLux = ParamRules.within("maxLux", maxLux, 2000, minLux, 1e6);
+            maxSoundDb = ParamRules.within("maxSoundDb", maxSoundDb, -20, -200, 200);
+        }
+    }
+
+    Comfort(Params params) {
+        this.params = params;
+        optionalInput("climate", RecordValue.class, Delivery.latest(), this::onClimate);
+        optionalInput("lux", NumberValue.class, Delivery.latest(), (v, s) -> {
+            lux = v.value();
+            publish();
+        });
+        optionalInput("sound", NumberValue.class, Delivery.latest(), (v, s) -> {
+            soundDb = v.value();
+            publish();
+        });
+    }
+
+    private void onClimate(RecordValue value, Sample sample) {
+        if (value.has("temperatureC") && value.get("temperatureC").isNumber()) {
+            temperatureC = value.number("temperatureC");
+        }
+        if (value.has("humidityPct") && value.get("humidityPct").isNumber()) {
+            humidityPct = value.number("humidityPct");
+        }
+        publish();
+    }
+
+    private void publish() {
+        ArrayNode complaints = JsonNodeFactory.instance.arrayNode();
+        int heard = 0;
+        heard += check(temperatureC, params.minTemperatureC(), params.maxTemperatureC(), "cold", "warm", complaints);
+        heard += check(humidityPct, params.minHumidityPct(), params.maxHumidityPct(), "dry", "humid", complaints);
+        heard += check(lux, params.minLux(), params.maxLux(), "dark", "glaring", complaints);
+        heard += check(soundDb, Double.NEGATIVE_INFINITY, params.maxSoundDb(), "", "noisy", complaints);
+        RecordValue.Builder b = RecordValue.builder();
+        put(b, "temperatureC", temperatureC);
+        put(b, "humidityPct", humidityPct);
+        put(b, "lux", lux);
+        put(b, "soundDb", soundDb);
+        b.put("score", heard == 0 ? 1 : 1 - complaints.size() / (double) heard);
+        emit(comfort, b.set("complaints", complaints).build());
+    }
+
+    private static int check(Double v, double min, double max, String low, String high, ArrayNode complaints) {
+        if (v == null) {
+            return 0;
+        }
+        if (v < min) {
+            complaints.add(low);
+        } else if (v > max) {
+            complaints.add(high);
+        }
+        return 1;
+    }
+
+    private static void put(RecordValue.Builder b, String name, Double v) {
+        if (v != null) {
+            b.put(name, v);
+        }
+    }
+
+    /** Makes {@code comfort} methods. */
+    public static final class Provider extends SimpleMethodProvider<Params> {
+        public Provider() {
+            super("comfort", "How pleasant a room is: its climate, light and noise against comfortable ranges",
+                    Params.class, (layer, p) -> new Comfort(p), Layer.VIRTUAL);
+        }
+    }
+}

@@ -1,0 +1,61 @@
+package org.habla.methods.room;
+
+import org.habla.method.Delivery;
+import org.habla.method.Layer;
+import org.habla.method.Output;
+import org.habla.method.SensorActuatorMethod;
+import org.habla.method.Shape;
+import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.methods.ParamRules;
+import org.habla.plugin.Param;
+import org.habla.sample.RecordValue;
+import org.habla.sample.Sample;
+import org.habla.sample.TextValue;
+
+/**
+ * The room speaker method, type {@code room-speaker}: something to say in the room (input {@code text}) as the
+ * command of a networked speaker that speaks text itself, on output {@code command}:
+ * {@code {"say": text, "volume": 0..100}}. Text is trimmed, cut to {@code maxLength}, and dropped when empty.
+ */
+public final class RoomSpeaker extends SensorActuatorMethod {
+
+    private final Params params;
+    private final Output<RecordValue> command = output("command", RecordValue.class,
+            Shape.record("what to say and how loud (percent)", "say", "volume"));
+
+    /** The params of a {@code room-speaker} method. */
+    public record Params(
+            @Param(value = "the speaker's volume", unit = "%", defaultValue = "50") Integer volume,
+            @Param(value = "the longest text said; longer text is cut", unit = "char", defaultValue = "200")
+            Integer maxLength) {
+
+        public Params {
+            volume = ParamRules.within("volume", volume, 50, 0, 100);
+            maxLength = ParamRules.within("maxLength", maxLength, 200, 1, 10_000);
+        }
+    }
+
+    RoomSpeaker(Params params) {
+        this.params = params;
+        input("text", TextValue.class, Delivery.queue(16), this::onText);
+    }
+
+    private void onText(TextValue value, Sample sample) {
+        String text = value.text().strip();
+        if (text.isEmpty()) {
+            return;
+        }
+        if (text.length() > params.maxLength()) {
+            text = text.substring(0, params.maxLength());
+        }
+        emit(command, RecordValue.builder().put("say", text).put("volume", params.volume()).build());
+    }
+
+    /** Makes {@code room-speaker} methods. */
+    public static final class Provider extends SimpleMethodProvider<Params> {
+        public Provider() {
+            super("room-speaker", "Text to say in the room as a networked speaker's command", Params.class,
+                    (layer, p) -> new RoomSpeaker(p), Layer.SENSORS_ACTUATORS);
+        }
+    }
+}

@@ -1,0 +1,65 @@
+"""A control program for the room, written from the control contract alone: it reads the occupancy and light
+sockets, turns a lamp on and off through the action socket and watches the light it makes, then writes an action
+the room does not have. One JSON line per finding on stdout.
+
+    python3 room_client.py --occupancy 7201 --light 7202 --action 7205
+"""
+
+import argparse
+import json
+import sys
+import time
+
+from habla_client import ControlError, ControlSocket
+
+
+def say(**finding):
+    print(json.dumps(finding), flush=True)
+
+
+def desk_lux(light, deadline):
+    """The desk's illuminance from the next light sample."""
+    while time.monotonic() < deadline:
+        s = light.next_sample(timeout=max(0.1, deadline - time.monotonic()))
+        if s and "desk" in s["value"]["lux"]:
+            return s["value"]["lux"]["desk"]
+    raise SystemExit("no light sample in time")
+
+
+def wait_for(light, test, seconds):
+    deadline = time.monotonic() + seconds
+    while time.monotonic() < deadline:
+        lux = desk_lux(light, deadline)
+        if test(lux):
+            return lux
+    return None
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--occupancy", type=int, required=True)
+    ap.add_argument("--light", type=int, required=True)
+    ap.add_argument("--action", type=int, required=True)
+    a = ap.parse_args()
+    with ControlSocket("127.0.0.1", a.occupancy) as occ, ControlSocket("127.0.0.1", a.light) as light, \
+            ControlSocket("127.0.0.1", a.action) as action:
+        occ.send({"op": "latest"})
+        first = occ.next_sample(timeout=10)
+        say(occupied=first["value"]["occupied"], zones=first["value"]["zones"], stale=first["stale"])
+        action.request({"op": "write", "value": "all off"})
+        dark = wait_for(light, lambda lux: lux < 100, 10)
+        say(off=dark)
+        action.request({"op": "write", "value": "desk on"})
+        lit = wait_for(light, lambda lux: lux > dark + 300, 10)
+        say(lit=lit)
+        action.request({"op": "write", "value": "desk off"})
+        say(off_again=wait_for(light, lambda lux: lux < dark + 100, 10))
+        try:
+            action.request({"op": "write", "value": "garage on"})
+            say(refused=None)
+        except ControlError as e:
+            say(refused=e.code, message=str(e))
+
+
+if __name__ == "__main__":
+    sys.exit(main())
