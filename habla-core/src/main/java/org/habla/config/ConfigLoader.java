@@ -39,7 +39,7 @@ public final class ConfigLoader {
     static final Set<String> RECONNECT_KEYS = Set.of("initialMs", "maxMs", "connectTimeoutMs", "readTimeoutMs",
             "tcpKeepAliveIdleS", "tcpKeepAliveIntervalS", "tcpKeepAliveCount");
     static final Set<String> METHOD_KEYS =
-            Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host", "fallback");
+            Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host", "fallback", "feedback");
     static final Set<String> EXPOSE_KEYS = Set.of("port", "name", "bind");
     static final Set<String> BRIDGE_KEYS = Set.of("id", "type", "address", "params");
 

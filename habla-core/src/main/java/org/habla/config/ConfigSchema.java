@@ -184,7 +184,11 @@ public final class ConfigSchema {
                         .put("pattern", "^.+:[0-9]{1,5}$"),
                 "fallback", string("What the daemon does while the method's worker is lost: none (its outputs are "
                         + "stale) or local (the daemon runs it meanwhile). Only with host.")
-                        .put("default", "none").set("enum", strings("none", "local"))));
+                        .put("default", "none").set("enum", strings("none", "local")),
+                "feedback", NODES.objectNode().put("type", "array").put("uniqueItems", true)
+                        .put("description", "Inputs of this method whose wires close a wiring cycle on purpose; every"
+                                + " wire on a declared cycle delivers only the latest sample.")
+                        .set("items", string("An input name."))));
         ArrayNode cases = s.putArray("allOf");
         registry.methods().forEach((name, provider) -> {
             ArrayNode typeLayers = NODES.arrayNode();

@@ -76,6 +76,11 @@ final class ConnectionLink implements Link {
     }
 
     @Override
+    public boolean optional() {
+        return connection.optional();
+    }
+
+    @Override
     public java.util.Set<String> commandChannels() {
         return connection.commandChannels();
     }
@@ -263,6 +268,9 @@ final class ConnectionLink implements Link {
         n.put("up", up);
         n.put("liveness", silenceLimitMs > 0 ? "lost after " + silenceLimitMs + " ms of silence"
                 : "quiet: silence is normal; TCP keep-alive");
+        if (connection.optional()) {
+            n.put("optional", true);
+        }
         n.put("connects", connects.get());
         n.put("failures", failures.get());
         if (lastConnectMs >= 0) {

@@ -313,13 +313,22 @@ final class InterfaceLink {
     }
 
     /**
-     * A connection went up or down: the interface is up when all its connections are. The staleness of what
+     * Whether the interface is up: every connection it needs is (a driver's optional connections, such as a menu
+     * server, do not count unless all of its connections are optional).
+     */
+    private boolean requiredUp() {
+        List<Link> required = connections.stream().filter(c -> !c.optional()).toList();
+        return (required.isEmpty() ? connections : required).stream().allMatch(Link::up);
+    }
+
+    /**
+     * A connection went up or down: the interface is up when every connection it needs is. The staleness of what
      * depends on it changes first, then the link record goes out, so the record arrives with the stale flag of
      * the state it tells of.
      */
     private void connectionChanged() {
         states.locked(() -> {
-            boolean all = connections.stream().allMatch(Link::up);
+            boolean all = requiredUp();
             if (all && !up) {
                 // A fresh session tells its devices' availability again.
                 unavailable.clear();
@@ -329,6 +338,9 @@ final class InterfaceLink {
                 sinceMicros = clock.nowMicros();
                 tap.link(config.id(), all, clock.nowMicros());
                 states.refreshStaleness();
+                publishLink();
+            } else if (connections.size() > 1) {
+                // The interface stays up (or down), but the record says which connections are: tell it now.
                 publishLink();
             }
         });
@@ -341,14 +353,18 @@ final class InterfaceLink {
             return;
         }
         StringBuilder detail = new StringBuilder();
+        ObjectNode each = JsonNodeFactory.instance.objectNode();
         for (Link c : connections) {
+            each.put(c.connectionName(), c.up());
             if (!c.up()) {
-                detail.append(detail.length() == 0 ? "" : "; ").append(c.connectionName()).append(" down")
+                detail.append(detail.length() == 0 ? "" : "; ").append(c.connectionName())
+                        .append(c.optional() ? " (optional)" : "").append(" down")
                         .append(c.lastError().isEmpty() ? "" : ": " + c.lastError());
             }
         }
         RecordValue value = RecordValue.builder().put("up", up).put("interface", config.id())
-                .put("detail", detail.length() == 0 ? "all connections up" : detail.toString()).build();
+                .put("detail", detail.length() == 0 ? "all connections up" : detail.toString())
+                .set("connections", each).build();
         readings.get(Driver.LINK_CHANNEL.name()).publish(value, clock.nowMicros(), false,
                 s -> tap.reading(config.id(), Driver.LINK_CHANNEL.name(), s));
     }

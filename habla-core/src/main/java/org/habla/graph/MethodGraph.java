@@ -89,7 +89,7 @@ public final class MethodGraph implements AutoCloseable {
         links.values().forEach(l -> l.watchdog(watchdog));
         for (MethodConfig mc : config.methods()) {
             runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc), clock, backgroundPool,
-                    work, tap));
+                    work, tap, config.cycleInputs(mc.id())));
         }
         for (MethodConfig mc : config.methods()) {
             if (mc.host().isPresent()) {

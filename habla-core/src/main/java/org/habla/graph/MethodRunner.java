@@ -18,6 +18,7 @@ import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.method.ControlNotice;
+import org.habla.method.Delivery;
 import org.habla.method.Input;
 import org.habla.method.Method;
 import org.habla.method.MethodContext;
@@ -71,6 +72,15 @@ final class MethodRunner implements MethodContext {
 
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
             WorkCount work, GraphTap tap) {
+        this(id, type, method, clock, backgroundPool, work, tap, java.util.Set.of());
+    }
+
+    /**
+     * A runner whose inputs named in {@code latestInputs} (the wires of a declared cycle) hold only the newest
+     * sample, whatever delivery the method type asks for.
+     */
+    MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
+            WorkCount work, GraphTap tap, java.util.Set<String> latestInputs) {
         this.work = work;
         this.tap = tap;
         this.id = id;
@@ -79,7 +89,8 @@ final class MethodRunner implements MethodContext {
         this.clock = clock;
         this.backgroundPool = backgroundPool;
         for (Input<?> in : method.inputs()) {
-            InputSlot slot = new InputSlot(in, this::wake, work);
+            InputSlot slot = new InputSlot(in, latestInputs.contains(in.name()) ? Delivery.latest() : in.delivery(),
+                    this::wake, work);
             slots.add(slot);
             slotByInput.put(in, slot);
         }
@@ -450,7 +461,7 @@ final class MethodRunner implements MethodContext {
         ObjectNode inputs = n.putObject("inputs");
         for (InputSlot slot : slots) {
             ObjectNode i = inputs.putObject(slot.input().name());
-            i.put("delivery", slot.input().delivery().mode().name().toLowerCase(java.util.Locale.ROOT));
+            i.put("delivery", slot.delivery().mode().name().toLowerCase(java.util.Locale.ROOT));
             i.put("depth", slot.depth());
             i.put("offered", slot.offered());
             i.put("dropped", slot.dropped());

@@ -82,7 +82,7 @@ final class ControlProtocol {
         h.putObject("limits")
                 .put("maxLineBytes", limits.maxLineBytes())
                 .put("maxBinaryBytes", limits.maxBinaryBytes())
-                .put("queueSamples", limits.clientQueueSamples())
+                .put("clientQueueSamples", limits.clientQueueSamples())
                 .put("idleTimeoutMs", limits.idleTimeoutMs())
                 .put("frameTimeoutMs", limits.frameTimeoutMs());
         return Frame.of(h);

@@ -52,7 +52,14 @@ public final class ControlServer implements AutoCloseable {
     private final List<ControlClient> clients = new CopyOnWriteArrayList<>();
     private final Counters counters = new Counters();
     private final AtomicLong droppedByGone = new AtomicLong();
+    /**
+     * The longest {@link #close} waits for the acceptor to leave its {@code accept}: the operating system releases
+     * the port only then, so a daemon started right after this one closed can have it.
+     */
+    static final long ACCEPTOR_STOP_MILLIS = 2_000;
+
     private volatile ServerSocket listener;
+    private volatile Thread acceptor;
     private volatile ControlPoint.Subscription subscription;
     private volatile boolean closed;
 
@@ -81,12 +88,15 @@ public final class ControlServer implements AutoCloseable {
         this.budget = processBudget.child("limits.socketBlockBudgetBytes", limits.socketBlockBudgetBytes());
     }
 
-    /** Binds the port and starts accepting clients. */
-    public void start() throws IOException {
+    /**
+     * Binds the port without accepting anyone yet, so a daemon can hold all its ports before it serves on any.
+     * A connection that arrives before {@link #start} waits in the backlog (and is reset if the server closes).
+     */
+    public void bind() throws IOException {
         if (listener != null) {
-            throw new IllegalStateException("control socket '" + point.name() + "' is already started");
+            throw new IllegalStateException("control socket '" + point.name() + "' is already bound");
         }
-        String bind = expose.bind() == null || expose.bind().isBlank() ? "127.0.0.1" : expose.bind();
+        String bind = bindAddress();
         ServerSocket server = new ServerSocket();
         try {
             server.setReuseAddress(true);
@@ -97,12 +107,28 @@ public final class ControlServer implements AutoCloseable {
                     + " cannot listen on " + bind + ":" + expose.port() + ": " + e.getMessage(), e);
         }
         listener = server;
+    }
+
+    /** Binds the port if {@link #bind} was not called, and starts accepting clients. */
+    public void start() throws IOException {
+        if (subscription != null) {
+            throw new IllegalStateException("control socket '" + point.name() + "' is already started");
+        }
+        if (listener == null) {
+            bind();
+        }
+        String bind = bindAddress();
         subscription = point.subscribe(new Fanout());
         guard.start();
-        Thread acceptor = new Thread(this::acceptLoop, "control-" + point.name() + "-accept");
-        acceptor.setDaemon(true);
-        acceptor.start();
+        Thread a = new Thread(this::acceptLoop, "control-" + point.name() + "-accept");
+        a.setDaemon(true);
+        acceptor = a;
+        a.start();
         LOG.info("control socket '{}' of method {} listening on {}:{}", point.name(), point.methodId(), bind, port());
+    }
+
+    private String bindAddress() {
+        return expose.bind() == null || expose.bind().isBlank() ? "127.0.0.1" : expose.bind();
     }
 
     /** The bound port (useful when the config asked for port 0). */
@@ -166,8 +192,21 @@ public final class ControlServer implements AutoCloseable {
                 LOG.debug("closing control socket '{}': {}", point.name(), e.toString());
             }
         }
+        awaitAcceptorGone();
         for (ControlClient c : clients) {
             c.close();
+        }
+    }
+
+    private void awaitAcceptorGone() {
+        Thread a = acceptor;
+        if (a == null || a == Thread.currentThread()) {
+            return;
+        }
+        try {
+            a.join(ACCEPTOR_STOP_MILLIS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
     }
 

@@ -33,7 +33,11 @@ public final class StatusServer implements AutoCloseable {
     private final StatusConfig config;
     private final Supplier<ObjectNode> snapshot;
     private final ConnectionGuard guard;
+    /** The longest {@link #close} waits for the acceptor to leave {@code accept}, which is when the port is released. */
+    private static final long ACCEPTOR_STOP_MILLIS = 2_000;
+
     private volatile ServerSocket listener;
+    private volatile Thread acceptor;
     private volatile boolean closed;
 
     public StatusServer(StatusConfig config, Supplier<ObjectNode> snapshot) {
@@ -47,19 +51,33 @@ public final class StatusServer implements AutoCloseable {
                 limits);
     }
 
-    /** Binds and starts answering; does nothing when the config's port is 0 (the endpoint is off). */
+    /**
+     * Binds the config's port without answering anyone yet (so a daemon holds all its ports before it serves on
+     * any); does nothing when the port is 0 (the endpoint is off).
+     */
+    public void bind() throws IOException {
+        bind(config.port());
+    }
+
+    /** Binds (unless {@link #bind} did) and starts answering; does nothing when the config's port is 0. */
     public void start() throws IOException {
-        start(config.port());
+        if (listener == null) {
+            bind(config.port());
+        }
+        accept();
     }
 
     /** Binds to an ephemeral port whatever the config says (tests, several daemons on one machine). */
     public void startOnAnyPort() throws IOException {
-        start(-1);
+        bind(-1);
+        accept();
     }
 
-    private void start(int port) throws IOException {
+    private void bind(int port) throws IOException {
+        if (listener != null) {
+            throw new IllegalStateException("the status endpoint is already bound");
+        }
         if (port == 0) {
-            LOG.info("status endpoint is off (port 0)");
             return;
         }
         String bind = config.bind() == null || config.bind().isBlank() ? "127.0.0.1" : config.bind();
@@ -73,10 +91,20 @@ public final class StatusServer implements AutoCloseable {
             throw new IOException("status endpoint cannot listen on " + bind + ":" + port + ": " + e.getMessage(), e);
         }
         listener = server;
+    }
+
+    private void accept() {
+        ServerSocket server = listener;
+        if (server == null) {
+            LOG.info("status endpoint is off (port 0)");
+            return;
+        }
+        String bind = config.bind() == null || config.bind().isBlank() ? "127.0.0.1" : config.bind();
         guard.start();
-        Thread acceptor = new Thread(this::acceptLoop, "status-accept");
-        acceptor.setDaemon(true);
-        acceptor.start();
+        Thread a = new Thread(this::acceptLoop, "status-accept");
+        a.setDaemon(true);
+        acceptor = a;
+        a.start();
         LOG.info("status endpoint listening on {}:{}", bind, server.getLocalPort());
     }
 
@@ -109,6 +137,14 @@ public final class StatusServer implements AutoCloseable {
                 s.close();
             } catch (IOException e) {
                 LOG.debug("closing the status endpoint: {}", e.toString());
+            }
+        }
+        Thread a = acceptor;
+        if (a != null && a != Thread.currentThread()) {
+            try {
+                a.join(ACCEPTOR_STOP_MILLIS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
             }
         }
     }

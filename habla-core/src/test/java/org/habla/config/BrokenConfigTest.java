@@ -88,6 +88,11 @@ class BrokenConfigTest {
         control-without-expose            | $.methods[0].inputs.action      | 'control' needs a control socket: give the method an 'expose'
         source-not-a-string               | $.methods[0].inputs.ranges      | must be a string, not a number (5)
         method-not-an-object              | $.methods[0]                    | must be an object, not a string ("sonar")
+        wiring-cycle                      | $.methods[0].inputs.in          | 'b.out' closes a wiring cycle (a -> b -> a): a sample could go round it for ever. Rewire it, or declare it with "feedback": ["in"] on method 'a'
+        wiring-cycle-of-one-method        | $.methods[0].inputs.in          | 'echo.out' closes a wiring cycle (echo -> echo)
+        feedback-on-no-cycle              | $.methods[1].feedback[0]        | 'in' ('sonar.ranges') is on no wiring cycle: nothing to declare
+        feedback-not-an-input             | $.methods[0].feedback[0]        | 'inn' is not a wired input of 'a' (wired: in)
+        feedback-from-a-channel           | $.methods[0].feedback[0]        | 'ranges' reads '@robot.sonar': only a wire from a method's output can close a cycle
         """)
     void brokenConfigIsRejectedWithOneErrorAtItsPath(String file, String path, String message) throws URISyntaxException {
         Path config = Path.of(getClass().getResource("/configs/broken/" + file + ".json").toURI());

@@ -161,6 +161,21 @@ class ConfigLoaderTest {
     }
 
     @Test
+    void aDeclaredCycleLoadsAndEveryWireOnItIsACycleInput() throws Exception {
+        HablaConfig config = loader.parse("""
+                {"system": "t", "methods": [
+                  {"id": "a", "type": "relay", "layer": "processing", "inputs": {"in": "b.out"}, "feedback": ["in"]},
+                  {"id": "b", "type": "relay", "layer": "processing", "inputs": {"in": "a.out"}},
+                  {"id": "c", "type": "relay", "layer": "processing", "inputs": {"in": "b.out"}}]}
+                """);
+
+        assertThat(config.method("a").orElseThrow().feedback()).containsExactly("in");
+        assertThat(config.cycleInputs("a")).containsExactly("in");
+        assertThat(config.cycleInputs("b")).containsExactly("in");
+        assertThat(config.cycleInputs("c")).isEmpty();
+    }
+
+    @Test
     void linkChannelOfEveryInterfaceCanFeedASensorMethod() throws Exception {
         String json = """
                 {"system": "s", "interfaces": [{"id": "r", "driver": "robot-sim", "address": "h:1"}],

@@ -240,6 +240,22 @@ class MethodGraphTest {
         assertThat(seen.poll(200, TimeUnit.MILLISECONDS)).isNull();
     }
 
+    @Test
+    void theWiresOfADeclaredCycleHoldOnlyTheLatestSampleWhateverTheTypeAsks() {
+        MethodConfig a = new MethodConfig("a", "forward-processing", Layer.PROCESSING, Map.of("in", out("b", "out")),
+                Map.of(), new NoParams(), Optional.empty(), Optional.empty(), org.habla.config.Fallback.NONE,
+                java.util.Set.of("in"));
+        MethodGraph g = MethodGraph.build(config(-1, 0, a,
+                method("b", "forward-processing", Layer.PROCESSING, Map.of("in", out("a", "out")), Map.of(), null),
+                method("off", "forward-processing", Layer.PROCESSING, Map.of("in", out("a", "out")), Map.of(), null)),
+                TestMethods.registry(), EngineClock.system());
+        toClose.add(g);
+
+        assertThat(methodStatus(g, "a").path("inputs").path("in").path("delivery").asText()).isEqualTo("latest");
+        assertThat(methodStatus(g, "b").path("inputs").path("in").path("delivery").asText()).isEqualTo("latest");
+        assertThat(methodStatus(g, "off").path("inputs").path("in").path("delivery").asText()).isEqualTo("queue");
+    }
+
     private static JsonNode methodStatus(MethodGraph g, String id) {
         ObjectNode st = g.status();
         for (JsonNode m : st.path("methods")) {

@@ -82,7 +82,7 @@ class ControlServerTest {
                     .isEqualTo("[{\"name\":\"action\",\"kind\":\"text\"},{\"name\":\"target\",\"kind\":\"vector\"}]");
             assertThat(hello.path("stale").asBoolean(true)).isFalse();
             assertThat(hello.path("limits").toString())
-                    .isEqualTo("{\"maxLineBytes\":4096,\"maxBinaryBytes\":65536,\"queueSamples\":8,"
+                    .isEqualTo("{\"maxLineBytes\":4096,\"maxBinaryBytes\":65536,\"clientQueueSamples\":8,"
                             + "\"idleTimeoutMs\":300000,\"frameTimeoutMs\":10000}");
         }
         ControlServer readOnly = serve(new FakeControlPoint("reader", false, false), SMALL);

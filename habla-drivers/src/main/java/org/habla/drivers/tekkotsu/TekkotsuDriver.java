@@ -23,7 +23,7 @@ import org.habla.driver.Liveness;
  * microphone   10070  audio
  * speaker      10071  speaker (command)
  * camera       10011  camera (raw camera over TCP)
- * controller   10020  -   (switches the other servers on)
+ * controller   10020  -   (switches the other servers on; optional: the interface is up without it)
  * </pre>
  */
 final class TekkotsuDriver implements Driver {
@@ -79,8 +79,9 @@ final class TekkotsuDriver implements Driver {
         if (p.controller()) {
             List<String> commands = ControllerSession.startCommands(p.startServers(),
                     p.camera() ? Optional.of(p.cameraSkip()) : Optional.empty());
+            // Optional: it only switches the other servers on, and a robot whose servers run without it still streams.
             conn.add(new Connection("controller", p.controllerPort(), Set.of(), Liveness.quiet(),
-                    () -> new ControllerSession(commands)));
+                    () -> new ControllerSession(commands)).asOptional());
         }
         this.channels = List.copyOf(ch);
         this.connections = List.copyOf(conn);

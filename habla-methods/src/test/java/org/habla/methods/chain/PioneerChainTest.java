@@ -50,9 +50,10 @@ class PioneerChainTest {
               {"id": "action", "type": "action", "layer": "virtual", "inputs": {"action": "control"},
                "params": {"forwardMps": 0.5, "durationMs": 30000}, "expose": {"port": %d, "name": "action"}},
               {"id": "safety", "type": "movement-safety", "layer": "processing",
-               "inputs": {"motion": "action.motion", "nearest": "nearest.nearest", "limits": "wheels.limits"}},
+               "inputs": {"motion": "action.motion", "nearest": "nearest.nearest", "limits": "wheels.limits"},
+               "feedback": ["limits"]},
               {"id": "compose", "type": "motion-composition", "layer": "processing",
-               "inputs": {"motion": "safety.motion", "limits": "wheels.limits"}},
+               "inputs": {"motion": "safety.motion", "limits": "wheels.limits"}, "feedback": ["limits"]},
               {"id": "wheels", "type": "wheels", "layer": "sensors_actuators",
                "inputs": {"motion": "compose.motion"}, "commands": {"motion": "@robot.motion"}}]}
             """;

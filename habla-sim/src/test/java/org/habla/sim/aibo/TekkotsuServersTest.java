@@ -291,6 +291,28 @@ class TekkotsuServersTest {
     }
 
     @Test
+    void startingAServerAsksTheGuiToLoadItsViewerAsTekkotsuDoesByteForByte() throws Exception {
+        servers = new TekkotsuServers(TekkotsuPorts.ANY_FREE, time, body, mic, said, at -> view());
+        open.add(servers);
+        TekkotsuPorts p = servers.ports();
+        try (Socket s = new Socket("127.0.0.1", p.controller())) {
+            s.setSoTimeout(5_000);
+            s.getOutputStream().write(("!select \"Walk Remote Control\"\n!select \"Head Remote Control\"\n"
+                    + "!select \"Raw Cam Server\"\n!select \"#Walk Remote Control\"\n!select \"#Raw Cam Server\"\n")
+                    .getBytes(StandardCharsets.US_ASCII));
+            String said = readUntil(s.getInputStream(), "close\nRawVisionGUI\n");
+
+            // Controller::loadGUI: load, class, instance, port, then each argument quoted and followed by a space.
+            assertThat(said).contains("load\norg.tekkotsu.mon.WalkGUI\nWalkGUI\n" + p.walk() + "\n\n")
+                    .contains("load\norg.tekkotsu.mon.HeadPointGUI\nHeadPointGUI\n" + p.head() + "\n\n")
+                    .contains("load\norg.tekkotsu.mon.VisionGUI\nRawVisionGUI\n" + p.rawCam() + "\n\"raw\" \""
+                            + p.rawCam() + "\" \"tcp\" \n")
+                    .contains("close\nWalkGUI\n")
+                    .endsWith("close\nRawVisionGUI\n");
+        }
+    }
+
+    @Test
     void garbageAndVanishingClientsLeaveTheRobotServing() throws Exception {
         start("");
         assertThat(DriverLink.await(LIMIT, () -> sink.on("ir").size() >= 2)).isTrue();
