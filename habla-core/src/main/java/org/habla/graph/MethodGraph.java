@@ -119,6 +119,11 @@ public final class MethodGraph implements AutoCloseable {
         return new MethodGraph(config, registry, clock, GraphTap.NONE, null);
     }
 
+    /** Hands an audit log's entry to the graph's tap (a recording). */
+    public void audit(org.habla.security.AuditEntry entry) {
+        tap.audit(entry);
+    }
+
     /** Builds the graph with a tap that sees everything crossing its edges (for recording). */
     public static MethodGraph build(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap) {
         return new MethodGraph(config, registry, clock, tap, null);

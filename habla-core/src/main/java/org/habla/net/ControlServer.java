@@ -16,6 +16,7 @@ import org.habla.config.Limits;
 import org.habla.method.ControlNotice;
 import org.habla.method.Output;
 import org.habla.sample.Sample;
+import org.habla.security.PortSecurity;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -49,6 +50,7 @@ public final class ControlServer implements AutoCloseable {
     private final ControlLease lease;
     private final ConnectionGuard guard;
     private final BlockBudget budget;
+    private final PortSecurity security;
     private final List<ControlClient> clients = new CopyOnWriteArrayList<>();
     private final Counters counters = new Counters();
     private final AtomicLong droppedByGone = new AtomicLong();
@@ -78,11 +80,21 @@ public final class ControlServer implements AutoCloseable {
 
     /** A server whose port's block budget is part of {@code processBudget}, shared by every port of the daemon. */
     public ControlServer(ControlPoint point, Expose expose, Limits limits, BlockBudget processBudget) {
+        this(point, expose, limits, processBudget, PortSecurity.open(point.name()));
+    }
+
+    /**
+     * A server whose port's block budget is part of {@code processBudget}, guarded by {@code security}: who may
+     * use it, where its commands are audited, whether it speaks TLS.
+     */
+    public ControlServer(ControlPoint point, Expose expose, Limits limits, BlockBudget processBudget,
+            PortSecurity security) {
+        this.security = Objects.requireNonNull(security, "security");
         this.point = Objects.requireNonNull(point, "point");
         this.expose = Objects.requireNonNull(expose, "expose");
         this.limits = Objects.requireNonNull(limits, "limits");
         this.lease = point.lease().orElse(null);
-        this.protocol = new ControlProtocol(point, limits, lease);
+        this.protocol = new ControlProtocol(point, limits, lease, security);
         this.guard = new ConnectionGuard("control socket '" + point.name() + "'", limits.maxClientsPerPort(),
                 "limits.maxClientsPerPort", limits);
         this.budget = processBudget.child("limits.socketBlockBudgetBytes", limits.socketBlockBudgetBytes());
@@ -164,6 +176,8 @@ public final class ControlServer implements AutoCloseable {
                 .put("dropped", dropped)
                 .put("errors", counters.errors.get());
         guard.putStats(stats);
+        security.access().putStats(stats);
+        stats.put("tls", security.tls() != null);
         stats.put("blockBytes", budget.reserved());
         if (lease != null) {
             stats.set("control", lease.status());
