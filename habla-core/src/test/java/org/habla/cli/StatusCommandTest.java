@@ -18,6 +18,9 @@ class StatusCommandTest {
                     {"connection": "action#3", "address": "127.0.0.1:53422"}, "since": "2025-01-01T10:00:00Z",
                     "silentMs": 120}},
                   {"socket": "say", "port": 7013, "clients": 0, "control": {"holder": null}},
+                  {"socket": "drive", "port": 7014, "clients": 1, "auth": "required", "authFailures": 2, "control":
+                    {"holder": {"client": "mdb", "connection": "drive#1", "address": "10.0.0.9:5000"},
+                    "since": "2025-01-01T10:00:00Z", "silentMs": 5}},
                   {"socket": "distance_angle", "port": 7002, "clients": 1}]}
                 """);
         StringWriter text = new StringWriter();
@@ -26,6 +29,8 @@ class StatusCommandTest {
         assertThat(text.toString()).contains("COMMANDED BY");
         assertThat(line(lines, "action")).endsWith("action#3 127.0.0.1:53422 since 2025-01-01T10:00:00Z (silent 120 ms)");
         assertThat(line(lines, "say")).endsWith("nobody");
+        assertThat(line(lines, "drive")).endsWith("mdb drive#1 10.0.0.9:5000 since 2025-01-01T10:00:00Z (silent 5 ms)");
+        assertThat(text.toString()).contains("authentication required on drive; 2 failed attempts");
         assertThat(line(lines, "distance_angle")).endsWith("-");
     }
 
