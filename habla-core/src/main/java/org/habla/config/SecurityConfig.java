@@ -30,6 +30,17 @@ public record SecurityConfig(Path credentialsFile, Credentials credentials, Path
         return credentials != null && (authOnLoopback || !isLoopback(bind));
     }
 
+    /** How the daemon reaches its workers: the credentials file's worker secret, TLS when {@code workerTrust}. */
+    public org.habla.security.WorkerLink workerLink() {
+        var secret = credentials == null ? null : credentials.workerSecret().orElse(null);
+        try {
+            var tls = workerTrust == null ? null : org.habla.security.Tls.client(workerTrust);
+            return new org.habla.security.WorkerLink(secret, tls);
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
     /** Whether the config has a TLS certificate for sockets. */
     public boolean hasTls() {
         return tlsCertificate != null;

@@ -91,10 +91,13 @@ public final class MethodGraph implements AutoCloseable {
             runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc), clock, backgroundPool,
                     work, tap, config.cycleInputs(mc.id())));
         }
+        var workerLink = config.methods().stream().anyMatch(m -> m.host().isPresent())
+                ? config.security().workerLink() : org.habla.security.WorkerLink.PLAIN;
         for (MethodConfig mc : config.methods()) {
             if (mc.host().isPresent()) {
                 MethodRunner runner = runners.get(mc.id());
-                RemotePlacement p = new RemotePlacement(mc, runner, config.limits(), Reconnect.DEFAULTS, linkStates);
+                RemotePlacement p = new RemotePlacement(mc, runner, config.limits(), Reconnect.DEFAULTS, linkStates,
+                        workerLink);
                 runner.placeOn(p);
                 placements.put(mc.id(), p);
             }

@@ -325,6 +325,83 @@ class WorkerPlacementTest {
 
     // ------------------------------------------------------------------ set-up
 
+    // ------------------------------------------------------------------ the shared secret
+
+    private static final String SECRET = "the-lab-worker-secret-0123";
+
+    @Test
+    void anUntrustedDaemonCannotPlaceAMethodAndATrustedOneCan() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0, org.habla.security.WorkerSecret.of(SECRET));
+        String host = "127.0.0.1:" + worker.port();
+        MethodGraph untrusted = graph(secured("not-the-lab-secret-0123", numbers(host, Fallback.NONE)));
+        await(() -> placement(untrusted).path("lastError").asText().contains("does not trust this daemon"),
+                "the worker refuses the daemon with the wrong secret");
+        assertThat(placement(untrusted).path("up").asBoolean()).isFalse();
+        assertThat(worker.authFailures()).isPositive();
+        untrusted.close();
+
+        MethodGraph trusted = graph(secured(SECRET, numbers(host, Fallback.NONE)));
+        BlockingQueue<Sample> seen = listen(point(trusted, "out"));
+        await(() -> placement(trusted).path("up").asBoolean(), "the trusted daemon's placement comes up");
+        write(trusted, new NumberValue(2));
+        Sample s = seen.poll(15, TimeUnit.SECONDS);
+        assertThat(s).isNotNull();
+        assertThat(s.payload()).isEqualTo(new NumberValue(6));
+    }
+
+    @Test
+    void aWorkerWithASecretRefusesAPlaceLineThatCameWithoutTheProof() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0, org.habla.security.WorkerSecret.of(SECRET));
+        try (Socket s = new Socket("127.0.0.1", worker.port())) {
+            s.setSoTimeout(15_000);
+            BufferedReader in = lines(s);
+            JsonNode hello = JSON.readTree(in.readLine());
+            assertThat(hello.path("auth").asText()).isEqualTo("required");
+            assertThat(hello.path("challenge").asText()).hasSizeGreaterThan(40);
+            send(s, "{\"type\":\"place\",\"method\":\"p\",\"methodType\":\"scale\",\"layer\":\"processing\","
+                    + "\"params\":{\"factor\":3},\"channels\":{},\"commandChannels\":{}}\n");
+            JsonNode answer = JSON.readTree(in.readLine());
+            assertThat(answer.path("code").asText()).isEqualTo("auth_failed");
+            assertThat(in.readLine()).as("the worker closes without placing anything").isNull();
+        }
+        assertThat(worker.authFailures()).isEqualTo(1);
+    }
+
+    @Test
+    void aDaemonWithASecretDoesNotTrustAWorkerThatCannotProveIt() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0);
+        MethodGraph g = graph(secured(SECRET, numbers("127.0.0.1:" + worker.port(), Fallback.NONE)));
+        await(() -> placement(g).path("lastError").asText().contains("does not ask for the shared secret"),
+                "the daemon refuses a worker that asks for no secret");
+        assertThat(placement(g).path("up").asBoolean()).isFalse();
+    }
+
+    @Test
+    void theWorkerCommandRefusesToListenBeyondLoopbackWithoutASecret() {
+        java.io.StringWriter err = new java.io.StringWriter();
+        int code = new picocli.CommandLine(new WorkerCommand()).setErr(new java.io.PrintWriter(err))
+                .execute("--bind", "0.0.0.0", "--port", "0");
+        assertThat(code).isEqualTo(org.habla.cli.ExitCodes.USAGE_OR_CONFIG);
+        assertThat(err.toString()).contains("--bind 0.0.0.0 is beyond loopback", "--secret-file");
+    }
+
+    private static HablaConfig secured(String workerSecret, MethodConfig... methods) {
+        var credentials = org.habla.security.Credentials.of(Map.of(), workerSecret);
+        return new HablaConfig("worker-test", Limits.DEFAULTS, new Safety(0), new StatusConfig("127.0.0.1", 0),
+                List.of(), List.of(methods), List.of(), new org.habla.config.SecurityConfig(null, credentials, null,
+                        false, false, null, null, null));
+    }
+
+    private WorkerServer worker(PluginRegistry registry, int port, org.habla.security.WorkerSecret secret)
+            throws Exception {
+        EngineClock clock = EngineClock.system();
+        WorkerServer w = new WorkerServer(registry, "127.0.0.1", port, clock, Limits.DEFAULTS, secret, null);
+        toClose.add(clock::close);
+        toClose.add(w);
+        w.start();
+        return w;
+    }
+
     private WorkerServer worker(PluginRegistry registry, int port) throws Exception {
         EngineClock clock = EngineClock.system();
         WorkerServer w = new WorkerServer(registry, "127.0.0.1", port, clock, Limits.DEFAULTS);

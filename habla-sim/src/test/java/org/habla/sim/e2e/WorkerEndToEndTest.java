@@ -27,6 +27,8 @@ import org.junit.jupiter.api.Timeout;
  * whose {@code speech} method says {@code "host"}, and a Python control client. A spoken command must
  * still reach the command socket, recognised by the worker. The second test puts the worker in a network
  * namespace of its own with its own address (a veth pair), so the daemon reaches it as another computer.
+ * Both workers hold a secret, as they must beyond loopback: the daemon proves it and places its method; a
+ * daemon with a wrong proof is refused and places nothing.
  */
 @Timeout(300)
 class WorkerEndToEndTest {
@@ -62,9 +64,14 @@ class WorkerEndToEndTest {
     private static void spokenCommandThroughAWorker(Path dir, List<String> wrapper, String address) throws Exception {
         int workerPort = DaemonProcess.freePorts(1)[0];
         String host = address + ":" + workerPort;
+        Path secretFile = ownerOnly(dir.resolve("worker.secret"), SECRET + "\n");
+        Path credentials = ownerOnly(dir.resolve("lab.credentials.json"), "{\"workerSecret\": \"" + SECRET + "\"}");
         try (DaemonProcess worker = DaemonProcess.startWrapped(wrapper, dir.resolve("worker.log"), "worker",
-                "--port", "" + workerPort, "--bind", address);
-             SimulatedDeployment rig = new SimulatedDeployment("aibo", "aibo-arena", 1, dir, c -> placeSpeech(c, host))) {
+                "--port", "" + workerPort, "--bind", address, "--secret-file", secretFile.toString());
+             SimulatedDeployment rig = new SimulatedDeployment("aibo", "aibo-arena", 1, dir, c -> {
+                 placeSpeech(c, host);
+                 c.putObject("security").put("credentials", credentials.toAbsolutePath().toString());
+             })) {
             assertThat(DaemonProcess.awaitPort(address, workerPort, 60_000)).as("worker up; log: %s", worker.output())
                     .isTrue();
             rig.startSimulator();
@@ -90,7 +97,29 @@ class WorkerEndToEndTest {
                     .isPositive();
             assertThat(speech.path("placement").path("received").asLong()).as("words came back").isPositive();
             assertThat(worker.output()).contains("running method speech");
+
+            try (Socket untrusted = new Socket(address, workerPort)) {
+                untrusted.setSoTimeout(15_000);
+                BufferedReader in = new BufferedReader(new InputStreamReader(untrusted.getInputStream(),
+                        StandardCharsets.UTF_8));
+                assertThat(JSON.readTree(in.readLine()).path("auth").asText()).isEqualTo("required");
+                untrusted.getOutputStream().write(("{\"type\":\"auth\",\"challenge\":\"bm9uY2U=\","
+                        + "\"proof\":\"bm90LXRoZS1wcm9vZg==\"}\n").getBytes(StandardCharsets.UTF_8));
+                assertThat(JSON.readTree(in.readLine()).path("code").asText()).isEqualTo("auth_failed");
+                assertThat(in.readLine()).as("an untrusted daemon places nothing").isNull();
+            }
+            assertThat(worker.output()).contains("did not prove the shared secret");
         }
+    }
+
+    private static final String SECRET = "a-lab-worker-secret-for-the-test";
+
+    private static Path ownerOnly(Path file, String text) throws IOException {
+        Files.deleteIfExists(file);
+        Files.createFile(file, java.nio.file.attribute.PosixFilePermissions.asFileAttribute(
+                java.nio.file.attribute.PosixFilePermissions.fromString("rw-------")));
+        Files.writeString(file, text);
+        return file;
     }
 
     private static void placeSpeech(ObjectNode config, String host) {
