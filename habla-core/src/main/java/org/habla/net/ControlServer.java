@@ -54,6 +54,12 @@ public final class ControlServer implements AutoCloseable {
     private final List<ControlClient> clients = new CopyOnWriteArrayList<>();
     private final Counters counters = new Counters();
     private final AtomicLong droppedByGone = new AtomicLong();
+    /** TLS handshakes in progress, at most {@code limits.maxPendingPerPort}. */
+    private final java.util.concurrent.Semaphore handshakes;
+    private final AtomicLong guardRefused = new AtomicLong();
+    private final AtomicLong plainClients = new AtomicLong();
+    private final AtomicLong tlsFailures = new AtomicLong();
+    private final byte[] plainClientError;
     /**
      * The longest {@link #close} waits for the acceptor to leave its {@code accept}: the operating system releases
      * the port only then, so a daemon started right after this one closed can have it.
@@ -98,6 +104,10 @@ public final class ControlServer implements AutoCloseable {
         this.guard = new ConnectionGuard("control socket '" + point.name() + "'", limits.maxClientsPerPort(),
                 "limits.maxClientsPerPort", limits);
         this.budget = processBudget.child("limits.socketBlockBudgetBytes", limits.socketBlockBudgetBytes());
+        this.handshakes = new java.util.concurrent.Semaphore(limits.maxPendingPerPort());
+        this.plainClientError = (ControlProtocol.error("tls_required", "socket '" + point.name() + "' speaks TLS "
+                + "only: connect with TLS (openssl s_client -connect HOST:PORT, Python's ssl module); see "
+                + "docs/security.md", null).header().toString() + "\n").getBytes(java.nio.charset.StandardCharsets.UTF_8);
     }
 
     /**
@@ -170,7 +180,7 @@ public final class ControlServer implements AutoCloseable {
                 .put("port", listener == null ? expose.port() : port())
                 .put("clients", clients.size())
                 .put("connections", counters.connections.get())
-                .put("refused", guard.refusedTotal())
+                .put("refused", guard.refusedTotal() + guardRefused.get())
                 .put("linesIn", counters.linesIn.get())
                 .put("linesOut", counters.linesOut.get())
                 .put("dropped", dropped)
@@ -178,6 +188,9 @@ public final class ControlServer implements AutoCloseable {
         guard.putStats(stats);
         security.access().putStats(stats);
         stats.put("tls", security.tls() != null);
+        if (security.tls() != null) {
+            stats.put("plainClientsRefused", plainClients.get()).put("tlsFailures", tlsFailures.get());
+        }
         stats.put("blockBytes", budget.reserved());
         if (lease != null) {
             stats.set("control", lease.status());
@@ -236,14 +249,53 @@ public final class ControlServer implements AutoCloseable {
                 }
                 return;
             }
+            long number = ++n;
+            if (security.tls() != null) {
+                upgradeThenAdmit(socket, number);
+                continue;
+            }
             try {
-                admit(socket, ++n);
+                admit(socket, number);
             } catch (IOException | RuntimeException e) {
                 LOG.warn("control socket '{}': could not admit {}: {}", point.name(),
                         socket.getRemoteSocketAddress(), e.toString());
                 closeQuietly(socket);
             }
         }
+    }
+
+    /**
+     * On a TLS socket, the handshake runs on a thread of the connection's own, at most
+     * {@code limits.maxPendingPerPort} at once (a connection beyond that is closed at once); a plain client gets
+     * a plain error line ({@code tls_required}) instead of a silence.
+     */
+    private void upgradeThenAdmit(Socket socket, long n) {
+        if (!handshakes.tryAcquire()) {
+            guardRefused.incrementAndGet();
+            closeQuietly(socket);
+            return;
+        }
+        Thread.ofVirtual().name("control-" + point.name() + "-" + n + "-tls").start(() -> {
+            try {
+                Socket secured = security.tls().upgrade(socket, plainClientError);
+                if (closed) {
+                    closeQuietly(secured);
+                    return;
+                }
+                admit(secured, n);
+            } catch (org.habla.security.Tls.PlainClient e) {
+                plainClients.incrementAndGet();
+                LOG.info("control socket '{}': refused a connection from {}: {}", point.name(),
+                        socket.getRemoteSocketAddress(), e.getMessage());
+            } catch (IOException | RuntimeException e) {
+                tlsFailures.incrementAndGet();
+                LOG.info("control socket '{}': TLS handshake with {} failed: {}", point.name(),
+                        socket.getRemoteSocketAddress(), e.toString());
+                closeQuietly(socket);
+            } finally {
+                handshakes.release();
+            }
+        });
     }
 
     private void admit(Socket socket, long n) throws IOException {
