@@ -385,6 +385,42 @@ class WorkerPlacementTest {
         assertThat(err.toString()).contains("--bind 0.0.0.0 is beyond loopback", "--secret-file");
     }
 
+    @Test
+    void aDaemonTrustingTheWorkersCertificatePlacesOverTlsAndAPlainDaemonIsToldWhy(@org.junit.jupiter.api.io.TempDir
+            java.nio.file.Path dir) throws Exception {
+        java.nio.file.Path cert = dir.resolve("worker.crt");
+        java.nio.file.Path key = dir.resolve("worker.key");
+        Process p = new ProcessBuilder("openssl", "req", "-x509", "-newkey", "ec", "-pkeyopt",
+                "ec_paramgen_curve:prime256v1", "-nodes", "-keyout", key.toString(), "-out", cert.toString(), "-days",
+                "2", "-subj", "/CN=localhost", "-addext", "subjectAltName=IP:127.0.0.1").redirectErrorStream(true)
+                .start();
+        String made = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertThat(p.waitFor(60, TimeUnit.SECONDS) && p.exitValue() == 0).as("openssl: %s", made).isTrue();
+        EngineClock clock = EngineClock.system();
+        WorkerServer worker = new WorkerServer(WorkerTestMethods.all(), "127.0.0.1", 0, clock, Limits.DEFAULTS,
+                org.habla.security.WorkerSecret.of(SECRET), org.habla.security.Tls.server(cert, key));
+        toClose.add(clock::close);
+        toClose.add(worker);
+        worker.start();
+        String host = "127.0.0.1:" + worker.port();
+
+        MethodGraph plain = graph(secured(SECRET, numbers(host, Fallback.NONE)));
+        await(() -> placement(plain).path("lastError").asText().contains("tls_required"),
+                "a daemon that speaks plain TCP to a TLS worker is told so");
+        plain.close();
+
+        var credentials = org.habla.security.Credentials.of(Map.of(), SECRET);
+        MethodGraph overTls = graph(new HablaConfig("worker-test", Limits.DEFAULTS, new Safety(0),
+                new StatusConfig("127.0.0.1", 0), List.of(), List.of(numbers(host, Fallback.NONE)), List.of(),
+                new org.habla.config.SecurityConfig(null, credentials, null, false, false, null, null, cert)));
+        BlockingQueue<Sample> seen = listen(point(overTls, "out"));
+        await(() -> placement(overTls).path("up").asBoolean(), "the placement comes up over TLS");
+        write(overTls, new NumberValue(5));
+        Sample s = seen.poll(15, TimeUnit.SECONDS);
+        assertThat(s).isNotNull();
+        assertThat(s.payload()).isEqualTo(new NumberValue(15));
+    }
+
     private static HablaConfig secured(String workerSecret, MethodConfig... methods) {
         var credentials = org.habla.security.Credentials.of(Map.of(), workerSecret);
         return new HablaConfig("worker-test", Limits.DEFAULTS, new Safety(0), new StatusConfig("127.0.0.1", 0),
