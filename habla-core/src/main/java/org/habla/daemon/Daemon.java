@@ -164,7 +164,8 @@ public final class Daemon implements AutoCloseable {
                 for (BridgeConfig bc : config.bridges()) {
                     Bridge bridge = Bridges.create(registry, bc);
                     d.bridges.put(bc.id(), bridge);
-                    bridge.start(config.system(), d.graph.controlPoints(), Bridges.role(registry, bc));
+                    bridge.start(config.system(), d.graph.controlPoints(),
+                            Bridges.role(registry, bc).auditedIn(d.guards.audit()));
                 }
             }
             d.graph.start();

@@ -7,6 +7,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import org.habla.config.ConfigException;
 import org.habla.config.ConfigLoader;
@@ -62,7 +63,9 @@ class MqttBridgeTest {
             throws Exception {
         int[] ports = DaemonProcess.freePorts(3);
         try (Mosquitto broker = Mosquitto.start(tmp)) {
-            Daemon daemon = Daemon.start(new ConfigLoader(REGISTRY).parse(config(broker, ports, "\"say\"")), REGISTRY,
+            Path auditLog = tmp.resolve("audit.log");
+            Daemon daemon = Daemon.start(new ConfigLoader(REGISTRY).parse(config(broker, ports, "\"say\"")
+                    .replaceFirst("\\{", "{\"security\": {\"auditLog\": \"" + auditLog + "\"},")), REGISTRY,
                     EngineClock.system());
             try {
                 // The bridge says it is online (retained) once connected.
@@ -105,6 +108,14 @@ class MqttBridgeTest {
                 }
                 JsonNode bridge = daemon.status().path("bridges").get(0);
                 assertThat(bridge.path("actions").asLong()).isEqualTo(1);
+                // The action taken is in the audit log (the bridge never listens for the other's topic).
+                long until = System.nanoTime() + 10_000_000_000L;
+                while (Files.readAllLines(auditLog).isEmpty() && System.nanoTime() < until) {
+                    Thread.sleep(10);
+                }
+                assertThat(Files.readAllLines(auditLog)).satisfiesExactly(
+                        l -> assertThat(l).contains("\"client\":\"mqtt-bridge\"", "\"socket\":\"say\"",
+                                "\"value\":\"hello room\"", "\"accepted\":true"));
                 try (ControlLines secret = new ControlLines(ports[2])) {
                     secret.send("{\"op\":\"latest\",\"id\":7}");
                     JsonNode answer = secret.next(n -> n.has("id") || n.path("type").asText().equals("sample"),
