@@ -62,24 +62,36 @@ final class PortGuards implements AutoCloseable {
     }
 
     private void warnOfOpenPorts(HablaConfig config) {
+        insecurePorts(config).forEach(w -> LOG.warn("INSECURE: {}", w));
+    }
+
+    /**
+     * One sentence per port an {@code insecure} config leaves open beyond loopback: each is logged as a warning
+     * at every start.
+     */
+    static java.util.List<String> insecurePorts(HablaConfig config) {
+        SecurityConfig security = config.security();
+        java.util.List<String> open = new java.util.ArrayList<>();
         if (!security.insecure()) {
-            return;
+            return open;
         }
         config.methods().forEach(m -> m.expose().ifPresent(x -> {
             if (!SecurityConfig.isLoopback(x.bind()) && !security.authenticates(x.bind())) {
-                LOG.warn("INSECURE: socket '{}' listens on {}:{} without authentication (security.insecure is true):"
-                        + " anyone on that network can read it and drive the robot", x.name(), x.bind(), x.port());
+                open.add("socket '" + x.name() + "' listens on " + x.bind() + ":" + x.port() + " without "
+                        + "authentication (security.insecure is true): anyone on that network can read it and drive "
+                        + "the robot");
             }
         }));
         var st = config.status();
         if (st.port() > 0 && !SecurityConfig.isLoopback(st.bind()) && !security.authenticates(st.bind())) {
-            LOG.warn("INSECURE: the status endpoint listens on {}:{} without authentication (security.insecure is "
-                    + "true)", st.bind(), st.port());
+            open.add("the status endpoint listens on " + st.bind() + ":" + st.port() + " without authentication "
+                    + "(security.insecure is true)");
         }
         if (st.monitorPort() > 0 && !SecurityConfig.isLoopback(st.bind())) {
-            LOG.warn("INSECURE: the monitor listens on {}:{} and has no authentication (security.insecure is true)",
-                    st.bind(), st.monitorPort());
+            open.add("the monitor listens on " + st.bind() + ":" + st.monitorPort() + " and has no authentication "
+                    + "(security.insecure is true)");
         }
+        return open;
     }
 
     @Override
