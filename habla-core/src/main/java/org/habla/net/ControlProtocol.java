@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.time.Instant;
 import java.util.List;
 import java.util.Map;
 import org.habla.config.Limits;
@@ -88,7 +89,8 @@ final class ControlProtocol {
 
     /** Who a new connection is before it says: anonymous with every role on an open port, nobody otherwise. */
     PortAccess.Admitted initialAccess() {
-        return security.access().required() ? null : (PortAccess.Admitted) security.access().authenticate(NODES.objectNode());
+        return security.access().required() ? null
+                : (PortAccess.Admitted) security.access().authenticate(NODES.objectNode());
     }
 
     /**
@@ -252,7 +254,7 @@ final class ControlProtocol {
                     ? NODES.objectNode().put("bytes", request.header().path("bytes").asLong())
                     : request.header().get("value");
         }
-        security.audit().add(new AuditEntry(java.time.Instant.now(), id.client(), id.address(), point.name(), op,
+        security.audit().add(new AuditEntry(Instant.now(), id.client(), id.address(), point.name(), op,
                 input, value, why == null, why));
     }
 
@@ -273,7 +275,7 @@ final class ControlProtocol {
             }
             case PortAccess.Refused r -> {
                 ClientId who = replies.id();
-                security.audit().add(new AuditEntry(java.time.Instant.now(), r.client(), who.address(), point.name(),
+                security.audit().add(new AuditEntry(Instant.now(), r.client(), who.address(), point.name(),
                         "auth", null, null, false, r.code() + ": " + r.message()));
                 replies.refuse(error(r.code(), r.message(), id), r.code().equals("auth_failed"));
             }
