@@ -5,7 +5,8 @@ import java.util.Set;
 /**
  * Whether something carried by a bridge may write actions to an exposed method, by socket name. A bridge reads
  * every socket it publishes, but writes only where its command role allows it: exactly the sockets its config
- * lists for actions (who may publish actions is the broker's to say). Every action it takes or refuses goes to the
+ * lists for actions, which a credentials file, when the config has one, must grant it too (who may publish
+ * actions on the broker is the broker's to say). Every action it takes or refuses goes to the
  * daemon's audit log through {@link #audit}.
  */
 @FunctionalInterface

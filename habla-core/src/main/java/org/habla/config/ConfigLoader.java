@@ -168,6 +168,9 @@ public final class ConfigLoader {
         SecurityReader securityReader = new SecurityReader(errors, baseDir);
         SecurityConfig security = securityReader.read(root.object("security"), sockets);
         securityReader.checkPolicy(security, status, methods);
+        if (security.credentials() != null) {
+            checkBridgeRoles(root.array("bridges"), bridges, security, errors);
+        }
 
         if (!errors.isEmpty() || system.isEmpty()
                 || !interfaces.stream().allMatch(InterfaceEntry::complete)
@@ -177,6 +180,33 @@ public final class ConfigLoader {
         return Optional.of(new HablaConfig(system.get(), limits, safety, status,
                 interfaces.stream().map(InterfaceEntry::toConfig).toList(),
                 methods.stream().map(MethodEntry::toConfig).toList(), bridges, security));
+    }
+
+    /** With a credentials file, a bridge may take actions only for the sockets the file gives it. */
+    private void checkBridgeRoles(List<JsonNode> nodes, List<BridgeConfig> bridges, SecurityConfig security,
+            ConfigErrors errors) {
+        for (BridgeConfig b : bridges) {
+            int index = -1;
+            for (int i = 0; i < nodes.size(); i++) {
+                if (b.id().equals(nodes.get(i).path("id").asText())) {
+                    index = i;
+                }
+            }
+            Set<String> actions = new java.util.TreeSet<>(actions(b));
+            actions.removeAll(security.credentials().bridgeCommands(b.id()));
+            if (!actions.isEmpty() && index >= 0) {
+                errors.add(JsonPath.ROOT.field("bridges").index(index), "bridge '" + b.id() + "' takes actions for "
+                        + actions + ", which the credentials file does not give it: add \"bridges\": {\"" + b.id()
+                        + "\": {\"" + actions.iterator().next() + "\": \"command\"}} to "
+                        + security.credentialsFile().getFileName());
+            }
+        }
+    }
+
+    @SuppressWarnings("unchecked")
+    private <P extends Record> Set<String> actions(BridgeConfig b) {
+        var provider = (org.habla.plugin.BridgeProvider<P>) registry.bridge(b.type()).orElseThrow();
+        return provider.actionSockets((P) b.params());
     }
 
     private Limits limits(CheckedObject o, ConfigErrors errors) {

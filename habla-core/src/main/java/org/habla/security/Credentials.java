@@ -27,17 +27,19 @@ public final class Credentials {
 
     private final Map<String, Client> clients = new LinkedHashMap<>();
     private final byte[] workerSecret;
+    private final Map<String, java.util.Set<String>> bridgeCommands;
 
-    Credentials(List<Client> clients, byte[] workerSecret) {
+    Credentials(List<Client> clients, byte[] workerSecret, Map<String, java.util.Set<String>> bridgeCommands) {
         clients.forEach(c -> this.clients.put(c.name(), c));
         this.workerSecret = workerSecret == null ? null : workerSecret.clone();
+        this.bridgeCommands = Map.copyOf(bridgeCommands);
     }
 
     /** Credentials with these clients ({@code name -> token, roles}) and worker secret (may be null); for tests. */
     public static Credentials of(Map<String, Map.Entry<String, Map<String, Role>>> clients, String workerSecret) {
         return new Credentials(clients.entrySet().stream()
                 .map(e -> new Client(e.getKey(), digest(e.getValue().getKey()), Map.copyOf(e.getValue().getValue())))
-                .toList(), workerSecret == null ? null : workerSecret.getBytes(UTF_8));
+                .toList(), workerSecret == null ? null : workerSecret.getBytes(UTF_8), Map.of());
     }
 
     /** The client {@code name} if {@code token} is its token. */
@@ -51,6 +53,11 @@ public final class Credentials {
     /** The secret the daemon and its workers prove to each other, if the file has one. */
     public Optional<WorkerSecret> workerSecret() {
         return workerSecret == null ? Optional.empty() : Optional.of(new WorkerSecret(workerSecret));
+    }
+
+    /** The sockets the bridge {@code id} may write actions to (none when the file does not name it). */
+    public java.util.Set<String> bridgeCommands(String id) {
+        return bridgeCommands.getOrDefault(id, java.util.Set.of());
     }
 
     public List<String> clientNames() {

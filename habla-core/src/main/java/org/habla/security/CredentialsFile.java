@@ -35,9 +35,13 @@ import java.util.regex.Pattern;
  *       {"name": "mdb",    "token": "…at least 16 characters…", "roles": {"action": "command", "*": "read"}},
  *       {"name": "viewer", "token": "…",                        "roles": {"*": "read", "@status": "read"}}
  *     ],
- *     "workerSecret": "…at least 16 characters…"
+ *     "workerSecret": "…at least 16 characters…",
+ *     "bridges": {"room": {"say": "command"}}
  *   }
  * </pre>
+ *
+ * {@code bridges} gives each bridge of the config (by id) the sockets it may write actions to; with a credentials
+ * file, a bridge may take actions only for sockets named here.
  *
  * A role key is a control socket's name, {@code "*"} for every socket not named, or {@code "@status"} for the
  * status endpoint (which takes {@code "read"} only).
@@ -53,7 +57,7 @@ public final class CredentialsFile {
     /** How a client's name is spelled. */
     public static final Pattern NAME = Pattern.compile("[A-Za-z0-9][A-Za-z0-9_.@-]{0,63}");
 
-    private static final Set<String> ROOT_KEYS = Set.of("clients", "workerSecret");
+    private static final Set<String> ROOT_KEYS = Set.of("clients", "workerSecret", "bridges");
     private static final Set<String> CLIENT_KEYS = Set.of("name", "token", "roles");
     private static final ObjectMapper JSON = JsonMapper.builder()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION)
@@ -113,10 +117,18 @@ public final class CredentialsFile {
             String s = secret(ws, "$.workerSecret", problems);
             workerSecret = s == null ? null : s.getBytes(UTF_8);
         }
+        Map<String, Set<String>> bridges = new LinkedHashMap<>();
+        JsonNode b = root.get("bridges");
+        if (b != null && !b.isObject()) {
+            problems.add("$.bridges: must be an object: bridge id -> {socket: \"command\"}");
+        } else if (b != null) {
+            b.properties().forEach(e -> bridges.put(e.getKey(), bridgeRoles(e.getValue(), "$.bridges." + e.getKey(),
+                    sockets, problems)));
+        }
         if (!problems.isEmpty()) {
             throw new Invalid(problems);
         }
-        return new Credentials(clients, workerSecret);
+        return new Credentials(clients, workerSecret, bridges);
     }
 
     /**
@@ -228,6 +240,25 @@ public final class CredentialsFile {
             return null;
         }
         return new Credentials.Client(name, Credentials.digest(token), roles);
+    }
+
+    private static Set<String> bridgeRoles(JsonNode n, String path, Set<String> sockets, List<String> problems) {
+        Set<String> commands = new java.util.TreeSet<>();
+        if (!n.isObject()) {
+            problems.add(path + ": must be an object: socket -> \"command\"");
+            return commands;
+        }
+        n.properties().forEach(e -> {
+            if (!sockets.contains(e.getKey())) {
+                problems.add(path + "." + e.getKey() + ": the config exposes no socket '" + e.getKey() + "'");
+            } else if (!e.getValue().isTextual() || !e.getValue().asText().equals("command")) {
+                problems.add(path + "." + e.getKey() + ": must be \"command\" (a bridge reads what its config "
+                        + "publishes), was " + e.getValue());
+            } else {
+                commands.add(e.getKey());
+            }
+        });
+        return commands;
     }
 
     /** A token or secret's text; the problem never quotes it. */

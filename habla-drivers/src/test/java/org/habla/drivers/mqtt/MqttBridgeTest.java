@@ -36,6 +36,10 @@ class MqttBridgeTest {
      * out/said; socket "secret" has a control input too but is not in the bridge's actions.
      */
     private static String config(Mosquitto broker, int[] ports, String actions) {
+        return config(broker.address(), ports, actions);
+    }
+
+    private static String config(String broker, int[] ports, String actions) {
         return """
             {"system": "bridge-test", "status": {"port": 0},
              "interfaces": [{"id": "dev", "driver": "mqtt", "address": "%1$s",
@@ -55,7 +59,7 @@ class MqttBridgeTest {
                 "expose": {"port": %4$d, "name": "secret"}}],
              "bridges": [{"id": "home", "type": "mqtt", "address": "%1$s",
                "params": {"publish": ["level", "say", "secret"], "actions": [%5$s]}}]}
-            """.formatted(broker.address(), ports[0], ports[1], ports[2], actions);
+            """.formatted(broker, ports[0], ports[1], ports[2], actions);
     }
 
     @Test
@@ -180,5 +184,26 @@ class MqttBridgeTest {
                 assertThat(e.getMessage()).contains("$.bridges[0].params").contains("[lamp]");
             }
         }
+    }
+
+    @Test
+    void withACredentialsFileABridgeTakesActionsOnlyForTheSocketsTheFileGivesIt(@TempDir Path tmp) throws Exception {
+        Path credentials = Files.createFile(tmp.resolve("lab.credentials.json"),
+                java.nio.file.attribute.PosixFilePermissions.asFileAttribute(
+                        java.nio.file.attribute.PosixFilePermissions.fromString("rw-------")));
+        String json = config("127.0.0.1:1883", new int[] {7101, 7102, 7103}, "\"say\"")
+                .replaceFirst("\\{", "{\"security\": {\"credentials\": \"lab.credentials.json\"},");
+        Files.writeString(credentials, "{\"bridges\": {}}");
+        try {
+            new ConfigLoader(REGISTRY).parse(json, tmp);
+            throw new AssertionError("the config was accepted");
+        } catch (ConfigException e) {
+            assertThat(e.errors()).singleElement().satisfies(err -> {
+                assertThat(err.path()).isEqualTo("$.bridges[0]");
+                assertThat(err.message()).contains("bridge 'home' takes actions for [say]");
+            });
+        }
+        Files.writeString(credentials, "{\"bridges\": {\"home\": {\"say\": \"command\"}}}");
+        assertThat(new ConfigLoader(REGISTRY).parse(json, tmp).bridges()).hasSize(1);
     }
 }
