@@ -34,6 +34,35 @@ class StatusCommandTest {
         assertThat(line(lines, "distance_angle")).endsWith("-");
     }
 
+    @Test
+    void theCommandAuthenticatesWhereTheEndpointRequiresIt(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        var credentials = org.habla.security.Credentials.of(java.util.Map.of("monitor", java.util.Map.entry(
+                "monitor-token-0123456789", java.util.Map.of("@status", org.habla.security.Role.READ))), null);
+        try (var server = new org.habla.status.StatusServer(new org.habla.config.StatusConfig("127.0.0.1", 7099),
+                org.habla.config.Limits.DEFAULTS, () -> new ObjectMapper().createObjectNode().put("system", "guarded"),
+                org.habla.security.PortAccess.authenticated("@status", credentials))) {
+            server.startOnAnyPort();
+            String port = "" + server.port();
+            CommandRun without = CommandRun.of(new StatusCommand(), "--port", port, "--json", "--client", "");
+            assertThat(without.exitCode()).isEqualTo(ExitCodes.RUNTIME_FAILURE);
+            assertThat(without.err()).contains("requires authentication: give --client NAME and --token-file FILE");
+
+            java.nio.file.Path token = java.nio.file.Files.writeString(dir.resolve("monitor.token"),
+                    "monitor-token-0123456789\n");
+            CommandRun with = CommandRun.of(new StatusCommand(), "--port", port, "--json", "--client", "monitor",
+                    "--token-file", token.toString());
+            assertThat(with.exitCode()).as(with.err()).isEqualTo(ExitCodes.OK);
+            assertThat(with.out()).contains("\"system\" : \"guarded\"");
+
+            java.nio.file.Files.writeString(token, "not-the-token-at-all\n");
+            CommandRun wrong = CommandRun.of(new StatusCommand(), "--port", port, "--json", "--client", "monitor",
+                    "--token-file", token.toString());
+            assertThat(wrong.exitCode()).isEqualTo(ExitCodes.RUNTIME_FAILURE);
+            assertThat(wrong.err()).contains("refused: auth_failed");
+        }
+    }
+
     private static String line(String[] lines, String socket) {
         for (String l : lines) {
             if (l.startsWith(socket + " ")) {
