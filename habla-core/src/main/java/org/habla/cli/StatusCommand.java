@@ -37,6 +37,10 @@ public final class StatusCommand implements Callable<Integer> {
             description = "The client name to authenticate as, where the endpoint requires it (or HABLA_CLIENT).")
     private String client;
 
+    @Option(names = "--tls-trust", paramLabel = "PEM",
+            description = "The endpoint speaks TLS: trust this certificate (the lab's, see docs/security.md).")
+    private java.nio.file.Path tlsTrust;
+
     @Option(names = "--token-file", paramLabel = "FILE",
             description = "A file whose first line is the client's token (else the HABLA_TOKEN environment variable).")
     private java.nio.file.Path tokenFile;
@@ -46,9 +50,11 @@ public final class StatusCommand implements Callable<Integer> {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         JsonNode status;
-        try (Socket s = new Socket()) {
-            s.connect(new InetSocketAddress(host, port), 2_000);
-            s.setSoTimeout(5_000);
+        try (Socket plain = new Socket()) {
+            plain.connect(new InetSocketAddress(host, port), 2_000);
+            plain.setSoTimeout(5_000);
+            Socket s = tlsTrust == null ? plain
+                    : org.habla.security.Tls.client(tlsTrust).connect(plain, host, port, 5_000);
             BufferedReader in = new BufferedReader(new InputStreamReader(s.getInputStream(), StandardCharsets.UTF_8));
             String line = in.readLine();
             JsonNode first = line == null ? null : new ObjectMapper().readTree(line);

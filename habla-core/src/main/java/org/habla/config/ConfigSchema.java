@@ -54,7 +54,8 @@ public final class ConfigSchema {
                 "bind", string("The address to listen on.").put("default", StatusConfig.DEFAULTS.bind()),
                 "port", integer(0, 65_535, StatusConfig.DEFAULTS.port(), "The TCP port; 0 turns the endpoint off."),
                 "monitorPort", integer(0, 65_535, StatusConfig.DEFAULTS.monitorPort(),
-                        "The live monitor's port: a web page and the Foxglove WebSocket protocol; 0: no monitor."))));
+                        "The live monitor's port: a web page and the Foxglove WebSocket protocol; 0: no monitor."),
+                "tls", bool(false, "The status endpoint speaks TLS with the certificate of security.tls."))));
         p.set("interfaces", NODES.objectNode().put("description", "The robot's interface servers.")
                 .put("type", "array").set("items", ref("interface")));
         p.set("methods", NODES.objectNode().put("description", "The methods of the graph.")

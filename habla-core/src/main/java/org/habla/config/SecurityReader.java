@@ -108,6 +108,10 @@ final class SecurityReader {
                 && !security.insecure()) {
             errors.add(JsonPath.ROOT.field("status").field("bind"), beyondLoopback("the status endpoint", status.bind()));
         }
+        if (status.tls() && !security.hasTls()) {
+            errors.add(JsonPath.ROOT.field("status").field("tls"), "a TLS status endpoint needs security.tls with a "
+                    + "certificate and its key (see docs/security.md)");
+        }
         if (status.monitorPort() > 0 && !SecurityConfig.isLoopback(status.bind()) && !security.insecure()) {
             errors.add(JsonPath.ROOT.field("status").field("monitorPort"), "the monitor has no authentication, so it "
                     + "may not listen on " + status.bind() + " (beyond loopback) unless security.insecure is true");

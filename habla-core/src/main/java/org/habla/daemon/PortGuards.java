@@ -57,12 +57,36 @@ final class PortGuards implements AutoCloseable {
                 : PortAccess.open(Principal.STATUS);
     }
 
+    /** The TLS of the status endpoint, or null for plain TCP. */
+    Tls statusTls(org.habla.config.StatusConfig status) {
+        return status.tls() ? tls : null;
+    }
+
     AuditLog audit() {
         return audit;
     }
 
     private void warnOfOpenPorts(HablaConfig config) {
         insecurePorts(config).forEach(w -> LOG.warn("INSECURE: {}", w));
+        tokensInClear(config).forEach(w -> LOG.warn("{}", w));
+    }
+
+    /** One sentence per port beyond loopback that authenticates over plain TCP: its tokens cross the network in clear. */
+    static java.util.List<String> tokensInClear(HablaConfig config) {
+        SecurityConfig security = config.security();
+        java.util.List<String> clear = new java.util.ArrayList<>();
+        config.methods().forEach(m -> m.expose().ifPresent(x -> {
+            if (!SecurityConfig.isLoopback(x.bind()) && security.authenticates(x.bind()) && !x.tls()) {
+                clear.add("socket '" + x.name() + "' on " + x.bind() + ":" + x.port() + " authenticates over plain "
+                        + "TCP: its clients' tokens cross the network in clear (\"tls\": true encrypts them)");
+            }
+        }));
+        var st = config.status();
+        if (st.port() > 0 && !SecurityConfig.isLoopback(st.bind()) && security.authenticates(st.bind()) && !st.tls()) {
+            clear.add("the status endpoint on " + st.bind() + ":" + st.port() + " authenticates over plain TCP: its "
+                    + "clients' tokens cross the network in clear (\"tls\": true in status encrypts them)");
+        }
+        return clear;
     }
 
     /**

@@ -47,6 +47,7 @@ public final class StatusServer implements AutoCloseable {
     private final ConnectionGuard guard;
     private final Limits limits;
     private final PortAccess access;
+    private final org.habla.security.Tls tls;
     /** The longest {@link #close} waits for the acceptor to leave {@code accept}, which is when the port is released. */
     private static final long ACCEPTOR_STOP_MILLIS = 2_000;
 
@@ -64,6 +65,13 @@ public final class StatusServer implements AutoCloseable {
 
     /** An endpoint that answers only the clients {@code access} admits. */
     public StatusServer(StatusConfig config, Limits limits, Supplier<ObjectNode> snapshot, PortAccess access) {
+        this(config, limits, snapshot, access, null);
+    }
+
+    /** An endpoint that answers only the clients {@code access} admits, over TLS unless {@code tls} is null. */
+    public StatusServer(StatusConfig config, Limits limits, Supplier<ObjectNode> snapshot, PortAccess access,
+            org.habla.security.Tls tls) {
+        this.tls = tls;
         this.limits = Objects.requireNonNull(limits, "limits");
         this.access = Objects.requireNonNull(access, "access");
         this.config = Objects.requireNonNull(config, "config");
@@ -194,7 +202,7 @@ public final class StatusServer implements AutoCloseable {
 
     /** One client's answer: the snapshot line, taken within the frame deadline or abandoned. */
     private final class Answer implements ConnectionGuard.Guarded {
-        private final Socket socket;
+        private volatile Socket socket;
         private final long connected = System.nanoTime();
         private volatile boolean written;
 
@@ -203,7 +211,19 @@ public final class StatusServer implements AutoCloseable {
         }
 
         void run() {
-            try (socket) {
+            if (tls != null) {
+                try {
+                    socket = tls.upgrade(socket, (JSON.createObjectNode().put("type", "error")
+                            .put("code", "tls_required").put("message", "the status endpoint speaks TLS only: "
+                                    + "habla status --tls-trust CERT, or openssl s_client; see docs/security.md")
+                            + "\n").getBytes(java.nio.charset.StandardCharsets.UTF_8));
+                } catch (IOException e) {
+                    LOG.debug("status client: {}", e.getMessage());
+                    guard.left(this);
+                    return;
+                }
+            }
+            try (Socket socket = this.socket) {
                 if (access.required() && !authenticated()) {
                     return;
                 }

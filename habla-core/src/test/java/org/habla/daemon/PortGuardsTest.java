@@ -27,4 +27,18 @@ class PortGuardsTest {
                 w -> assertThat(w).startsWith("the status endpoint listens on 0.0.0.0:7099"),
                 w -> assertThat(w).startsWith("the monitor listens on 0.0.0.0:7300"));
     }
+
+    @Test
+    void aPortThatAuthenticatesOverPlainTcpBeyondLoopbackIsWarnedOf(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        java.nio.file.Files.writeString(java.nio.file.Files.createFile(dir.resolve("c.json"),
+                java.nio.file.attribute.PosixFilePermissions.asFileAttribute(
+                        java.nio.file.attribute.PosixFilePermissions.fromString("rw-------"))), "{\"clients\": []}");
+        HablaConfig secured = new ConfigLoader(TestPlugins.registry())
+                .parse(CONFIG.formatted("\"security\": {\"credentials\": \"c.json\", \"insecure\": true},"), dir);
+        assertThat(PortGuards.tokensInClear(secured)).satisfiesExactly(
+                w -> assertThat(w).startsWith("socket 'action' on 0.0.0.0:7004 authenticates over plain TCP"),
+                w -> assertThat(w).startsWith("the status endpoint on 0.0.0.0:7099 authenticates over plain TCP"));
+        assertThat(PortGuards.insecurePorts(secured)).singleElement().asString().startsWith("the monitor");
+    }
 }

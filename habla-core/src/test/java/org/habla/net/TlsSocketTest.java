@@ -113,4 +113,27 @@ class TlsSocketTest {
         }
         assertThat(server.stats().path("plainClientsRefused").asLong()).isEqualTo(2);
     }
+
+    @Test
+    void theStatusEndpointOverTlsAnswersHablaStatusWithTheLabCertificateAndTellsAPlainClient() throws Exception {
+        Credentials credentials = Credentials.of(Map.of("mdb", Map.entry(TOKEN, Map.of("@status", Role.READ))), null);
+        try (var status = new org.habla.status.StatusServer(new org.habla.config.StatusConfig("127.0.0.1", 7099),
+                Limits.DEFAULTS, () -> com.fasterxml.jackson.databind.node.JsonNodeFactory.instance.objectNode()
+                        .put("system", "over-tls"), PortAccess.authenticated("@status", credentials),
+                Tls.server(certificate, key))) {
+            status.startOnAnyPort();
+            Path token = Files.writeString(dir.resolve("mdb.token"), TOKEN + "\n");
+            java.io.StringWriter out = new java.io.StringWriter();
+            java.io.StringWriter err = new java.io.StringWriter();
+            int code = new picocli.CommandLine(new org.habla.cli.StatusCommand())
+                    .setOut(new java.io.PrintWriter(out)).setErr(new java.io.PrintWriter(err))
+                    .execute("--port", "" + status.port(), "--json", "--client", "mdb", "--token-file",
+                            token.toString(), "--tls-trust", certificate.toString());
+            assertThat(code).as(err.toString()).isZero();
+            assertThat(out.toString()).contains("\"system\" : \"over-tls\"");
+            try (TestClient plain = new TestClient(status.port())) {
+                assertThat(plain.next().header().path("code").asText()).isEqualTo("tls_required");
+            }
+        }
+    }
 }
