@@ -1,13 +1,8 @@
 package org.habla.methods.speech;
 
-import edu.cmu.sphinx.api.SpeechResult;
-import edu.cmu.sphinx.decoder.adaptation.ClusteredDensityFileData;
-import edu.cmu.sphinx.decoder.adaptation.Stats;
-import edu.cmu.sphinx.decoder.adaptation.Transform;
 import edu.cmu.sphinx.decoder.search.Token;
 import edu.cmu.sphinx.frontend.util.StreamDataSource;
 import edu.cmu.sphinx.jsgf.JSGFGrammar;
-import edu.cmu.sphinx.linguist.acoustic.tiedstate.Loader;
 import edu.cmu.sphinx.linguist.acoustic.tiedstate.Sphinx3Loader;
 import edu.cmu.sphinx.recognizer.Recognizer;
 import edu.cmu.sphinx.result.Result;
@@ -52,16 +47,16 @@ public final class SphinxDecoder {
     static final double DITHER_RMS = 10;
     private static final long DITHER_SEED = 16_000;
 
-    /** Regression classes of the speaker adaptation: one transform for all sounds, as few utterances support. */
-    static final int ADAPTATION_CLASSES = 1;
-
-    /** How Sphinx is set up: noise removal, the out-of-grammar branch, and the grammar. */
+    /**
+     * How Sphinx is set up: the grammar, noise removal, the out-of-grammar branch, and the prior of each
+     * garbage word ({@link GarbageWords}; 0: none).
+     */
     public record Settings(Path grammarFile, boolean denoise, double outOfGrammarProbability,
-            double phoneInsertionProbability) {
+            double phoneInsertionProbability, double garbagePrior) {
     }
 
     /** What Sphinx made of one utterance: a phrase of the grammar and its confidence. */
-    public record Decoded(String phrase, double confidence, double score, long decodeMs) {
+    public record Decoded(String phrase, double confidence, double score, long decodeMs, long audioMs) {
     }
 
     private final ConfigurationManager cm;
@@ -120,8 +115,30 @@ public final class SphinxDecoder {
         }
         String fileName = file.getFileName().toString();
         String name = fileName.endsWith(".gram") ? fileName.substring(0, fileName.length() - 5) : fileName;
+        String addenda = "";
+        if (settings.garbagePrior() > 0) {
+            // the grammar, and the grammars beside it it may import, copied with the garbage words added
+            Path copy = Files.createTempDirectory("habla-grammar");
+            copy.toFile().deleteOnExit();
+            try (var siblings = Files.list(file.getParent())) {
+                for (Path g : siblings.filter(p -> p.toString().endsWith(".gram")).toList()) {
+                    Files.copy(g, copy.resolve(g.getFileName()));
+                    copy.resolve(g.getFileName()).toFile().deleteOnExit();
+                }
+            }
+            String jsgf = Files.readString(file, StandardCharsets.UTF_8);
+            Map<String, List<String>> garbage = GarbageWords.of(GarbageWords.grammarWords(jsgf), dictionary());
+            Files.writeString(copy.resolve(fileName), GarbageWords.augment(jsgf, garbage.keySet(),
+                    settings.garbagePrior()), StandardCharsets.UTF_8);
+            Path addendum = copy.resolve("garbage.dict");
+            Files.writeString(addendum, GarbageWords.addendum(garbage), StandardCharsets.UTF_8);
+            addendum.toFile().deleteOnExit();
+            addenda = "<property name=\"addenda\" value=\"" + addendum.toUri().toURL() + "\"/>";
+            file = copy.resolve(fileName);
+        }
         String dir = file.getParent().toUri().toURL().toString();
         return Map.ofEntries(
+                Map.entry("addenda", addenda),
                 Map.entry("absoluteBeamWidth", "20000"),
                 Map.entry("relativeBeamWidth", "1e-60"),
                 Map.entry("wordInsertionProbability", "0.1"),
@@ -136,6 +153,22 @@ public final class SphinxDecoder {
                 Map.entry("acousticModel", ACOUSTIC_MODEL),
                 Map.entry("denoise", settings.denoise() ? "<item>denoise</item>" : ""),
                 Map.entry("cmn", "edu.cmu.sphinx.frontend.feature.BatchCMN"));
+    }
+
+    private static Map<String, List<List<String>>> dictionary;
+
+    /** The pronouncing dictionary of the model, read once. */
+    private static synchronized Map<String, List<List<String>>> dictionary() throws IOException {
+        if (dictionary == null) {
+            String resource = DICTIONARY.substring("resource:".length());
+            try (InputStream in = SphinxDecoder.class.getResourceAsStream(resource)) {
+                if (in == null) {
+                    throw new IOException("the pronouncing dictionary " + resource + " is missing from the class path");
+                }
+                dictionary = GarbageWords.readDictionary(in);
+            }
+        }
+        return dictionary;
     }
 
     private static Path writeConfig(Map<String, String> values) throws IOException {
@@ -157,12 +190,10 @@ public final class SphinxDecoder {
 
     /** Applies a speaker's MLLR transform (written by {@link #writeAdaptation}) to the loaded model's means. */
     private void adapt(Path transformFile) throws IOException {
-        Loader loader = cm.lookup("acousticModelLoader");
+        Sphinx3Loader loader = cm.lookup("acousticModelLoader");
         try {
-            Transform t = new Transform((Sphinx3Loader) loader, ADAPTATION_CLASSES);
-            t.load(transformFile.toString());
-            loader.update(t, new ClusteredDensityFileData(loader, ADAPTATION_CLASSES));
-        } catch (Exception e) {
+            Mllr.read(transformFile).apply(loader);
+        } catch (IOException e) {
             throw new IOException("cannot apply the adaptation " + transformFile + ": " + e.getMessage(), e);
         }
     }
@@ -174,6 +205,11 @@ public final class SphinxDecoder {
      */
     public static int writeAdaptation(Settings settings, List<AudioChunk> utterances, List<String> phrases, Path out)
             throws IOException {
+        return writeAdaptation(settings, utterances, phrases, out, Mllr.PRIOR_FRAMES);
+    }
+
+    static int writeAdaptation(Settings settings, List<AudioChunk> utterances, List<String> phrases, Path out,
+            double priorFrames) throws IOException {
         if (utterances.size() != phrases.size()) {
             throw new IllegalArgumentException(utterances.size() + " utterances but " + phrases.size() + " phrases");
         }
@@ -181,11 +217,11 @@ public final class SphinxDecoder {
         Recognizer aligner = cm.lookup("alignRecognizer");
         edu.cmu.sphinx.linguist.language.grammar.AlignerGrammar grammar = cm.lookup("alignerGrammar");
         StreamDataSource source = cm.lookup("dataSource");
-        Loader loader = cm.lookup("acousticModelLoader");
+        Sphinx3Loader loader = cm.lookup("acousticModelLoader");
         try {
             // the grammar of each utterance is its phrase; the linguist compiles it again when it changes
             aligner.allocate();
-            Stats stats = new Stats(loader, new ClusteredDensityFileData(loader, ADAPTATION_CLASSES));
+            Mllr.Stats stats = new Mllr.Stats(loader);
             int aligned = 0;
             for (int i = 0; i < utterances.size(); i++) {
                 grammar.setWords(List.of(phrases.get(i).trim().split("\\s+")));
@@ -195,21 +231,21 @@ public final class SphinxDecoder {
                     // the rest of the stream
                 }
                 // the aligner's grammar is the phrase alone: its best path is the alignment
-                if (r != null && r.getBestToken() != null) {
-                    stats.collect(new SpeechResult(r));
+                Token end = r == null ? null : r.getBestFinalToken() != null ? r.getBestFinalToken() : r.getBestToken();
+                if (end != null) {
+                    stats.collect(end);
                     aligned++;
                 }
             }
             if (aligned == 0) {
                 throw new IOException("none of the " + utterances.size() + " utterances could be aligned to its phrase");
             }
-            Transform t = stats.createTransform();
             Path parent = out.toAbsolutePath().getParent();
             if (parent != null) {
                 Files.createDirectories(parent);
             }
-            t.store(out.toString(), 0);
-            return stats.getFrames();
+            stats.estimate(priorFrames).write(out);
+            return stats.frames();
         } catch (IOException e) {
             throw e;
         } catch (Exception e) {
@@ -246,7 +282,7 @@ public final class SphinxDecoder {
             return Optional.empty();
         }
         List<String> words = words(best);
-        if (!phrases.accepts(words)) {
+        if (words.stream().anyMatch(GarbageWords::isGarbage) || !phrases.accepts(words)) {
             return Optional.empty();
         }
         Result free = search(phoneRecognizer, utterance);
@@ -259,7 +295,8 @@ public final class SphinxDecoder {
             confidence = Math.min(1, Math.exp(perFrame));
         }
         long ms = (System.nanoTime() - start) / 1_000_000;
-        return Optional.of(new Decoded(String.join(" ", words), confidence, best.getScore(), ms));
+        return Optional.of(new Decoded(String.join(" ", words), confidence, best.getScore(), ms,
+                utterance.frameCount() * 1000L / utterance.format().sampleRateHz()));
     }
 
     private Result search(Recognizer which, AudioChunk utterance) {

@@ -108,7 +108,7 @@ public final class SpeechBench {
         HablaConfig c = new ConfigLoader(registry).load(config);
         SpeechRecognitionParams base = (SpeechRecognitionParams) c.method("speech").orElseThrow().params();
         Record audioParams = c.method("audio").orElseThrow().params();
-        SpeechChain plain = SpeechChain.of(audioParams, base);
+        SpeechChain plain = SpeechChain.of(audioParams, base, SpeechChain.direct(c.method("speech").orElseThrow()));
         StreamScore[][] scores = new StreamScore[EvalSet.CONDITIONS.size()][2];
         for (StreamScore[] row : scores) {
             row[0] = new StreamScore();
@@ -134,7 +134,8 @@ public final class SpeechBench {
             Enrolment.Outcome o = enrolment.write(base, said, file, true);
             System.out.printf("  %s: enrolment phrases right %d/%d as it comes, %d/%d adapted%n", v.name(), o.rightBefore(),
                     o.phrases(), o.rightAfter(), o.phrases());
-            SpeechChain adapted = SpeechChain.of(audioParams, base.withAdaptation(file.toString()));
+            SpeechChain adapted = SpeechChain.of(audioParams, base.withAdaptation(file.toString()),
+                    SpeechChain.direct(c.method("speech").orElseThrow()));
             List<EvalSet.Item> rest = new ArrayList<>();
             for (int k = 0; k < EvalSet.CONDITIONS.size(); k++) {
                 String condition = EvalSet.CONDITIONS.get(k);

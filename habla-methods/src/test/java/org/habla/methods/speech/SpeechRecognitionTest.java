@@ -206,6 +206,43 @@ class SpeechRecognitionTest {
     }
 
     @Test
+    void aPhraseIsSaidAtTheEarlyEndpointWithoutWaitingForTheHangover() throws Exception {
+        Utterances.Utterance u = Utterances.all().get(9);
+        int[] early = streamUntilSaid(withBundledGrammar(), u);
+        int[] late = streamUntilSaid(loaded(SpeechRecognitionParams.defaults().withEndpointMs(200)), u);
+        System.out.printf("speech-recognition: '%s' said %d ms into the stream at the early endpoint, %d ms after the "
+                + "hangover%n", u.phrase(), early[0], late[0]);
+        assertThat(early[1]).as("phrases said at the early endpoint").isEqualTo(1);
+        assertThat(late[1]).as("phrases said after the hangover").isEqualTo(1);
+        // the early endpoint (100 ms of pause) comes a hangover's difference (200 ms) before the end of the utterance
+        assertThat(late[0] - early[0]).isGreaterThanOrEqualTo(60);
+    }
+
+    /**
+     * Streams faint noise, the utterance, and faint noise in 10 ms chunks into the method's audio input;
+     * returns the stream time (ms) at which its phrase was said and how many phrases were said in all.
+     */
+    private static int[] streamUntilSaid(MethodHarness h, Utterances.Utterance u) {
+        h.clear();
+        Random r = new Random(5);
+        double[] speech = u.audio().channel(0);
+        int lead = 8_000;
+        double[] x = noise(r, lead + speech.length + 16_000);
+        for (int i = 0; i < speech.length; i++) {
+            x[lead + i] += speech[i];
+        }
+        int saidAt = -1;
+        for (int at = 0; at < x.length; at += 160) {
+            h.push("audio", MonoAudio.chunk(java.util.Arrays.copyOfRange(x, at, Math.min(x.length, at + 160)), 16_000));
+            if (saidAt < 0 && !h.values("words").isEmpty()) {
+                assertThat(h.values("words")).containsExactly(new TextValue(u.phrase()));
+                saidAt = (at + 160) / 16;
+            }
+        }
+        return new int[] {saidAt, h.values("words").size()};
+    }
+
+    @Test
     void utterancesArrivingWhileTheModelLoadsWaitUpToMaxPending() throws Exception {
         MethodHarness h = MethodHarness.started("speech",
                 new SpeechRecognition(SpeechRecognitionParams.defaults().withMaxPending(2)));
