@@ -25,9 +25,10 @@ import java.util.regex.Pattern;
  * "no", "stock" against "stop"), one word per pronunciation. Words that sound exactly like a word of the
  * grammar are left out: they are the grammar's word as far as any recogniser can tell.
  *
- * <p>{@link #augment} adds them to a JSGF grammar as one more public rule, a sequence of one or more of
- * them, each with the prior {@code weight}, so a phrase wins only where it fits the sound better than
- * the near misses around it.
+ * <p>{@link #augment} adds them to a JSGF grammar as one more public rule, one of them (with silence
+ * around), each with the prior {@code weight}, so a phrase wins only where it fits the sound better than
+ * the near misses around it. One word, not a sequence: a loop of hundreds of words makes Sphinx's flat
+ * search expand every word's context against every other's, several times slower.
  */
 final class GarbageWords {
 
@@ -145,7 +146,7 @@ final class GarbageWords {
         }
         double rest = Math.max(0, 1 - weight * garbage.size());
         StringBuilder rule = new StringBuilder("\n\n// added by HABLA: near misses of the grammar, which give nothing\n");
-        rule.append("public <").append(RULE).append("> = <").append(RULE).append("Word>+;\n");
+        rule.append("public <").append(RULE).append("> = <").append(RULE).append("Word>;\n");
         rule.append("<").append(RULE).append("Word> =");
         String w = String.format(Locale.ROOT, "/%.6g/", weight);
         boolean first = true;

@@ -50,13 +50,6 @@ public final class SpeechRecognition extends ProcessingMethod {
 
     /** The pause after speech at which the utterance so far is decoded, in case it is over (audio input). */
     static final double SPECULATE_AFTER_MS = 30;
-    /**
-     * How far an utterance's loudest frame must stand above the noise floor for its phrase to be said at
-     * the early endpoint: in more noise the pauses inside a phrase (its stop consonants) sink into the
-     * noise and look like its end, so such an utterance waits for the hangover (tune voices, pink noise
-     * at SNR 10 dB: 71 % right with the hangover, 46 % with the early endpoint at 100 ms).
-     */
-    static final double EARLY_MIN_PEAK_ABOVE_FLOOR_DB = 30;
 
     /**
      * An utterance waiting for the decoder, with the source time of its last audio; a speculative one
@@ -180,7 +173,7 @@ public final class SpeechRecognition extends ProcessingMethod {
             s = null;
         }
         if (s == null && gate.quietMs() >= SPECULATE_AFTER_MS
-                && gate.peakAboveFloorDb() >= EARLY_MIN_PEAK_ABOVE_FLOOR_DB) {
+                && gate.peakAboveFloorDb() >= params.endpointAboveFloorDb()) {
             s = new Speculation(gate.segmentNumber(), gate.loudMs());
             speculation = s;
             double[] soFar = MonoAudio.resample(gate.soFar(), streamFormat.sampleRateHz(), SPHINX_RATE_HZ);

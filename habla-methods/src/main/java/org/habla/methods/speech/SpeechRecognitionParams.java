@@ -49,6 +49,10 @@ public record SpeechRecognitionParams(
                 + "pause is this long, unless speech resumed; at hangoverMs or above, only whole utterances are "
                 + "decoded", unit = "ms", defaultValue = "100")
         Double endpointMs,
+        @Param(value = "Early endpoint of the audio input only for utterances whose loudest part stands this far above "
+                + "the noise floor: in more noise, pauses inside a phrase look like its end", unit = "dB",
+                defaultValue = "30")
+        Double endpointAboveFloorDb,
         @Param(value = "Queue length of the audio and segments inputs, in chunks", defaultValue = "256")
         Integer queue) {
 
@@ -68,42 +72,43 @@ public record SpeechRecognitionParams(
         minLevelDb = ParamRules.within("minLevelDb", minLevelDb, -55, -120, 0);
         hangoverMs = ParamRules.within("hangoverMs", hangoverMs, 200, 0, 5000);
         endpointMs = ParamRules.within("endpointMs", endpointMs, 100, 0, 5000);
+        endpointAboveFloorDb = ParamRules.within("endpointAboveFloorDb", endpointAboveFloorDb, 30, 0, 200);
         queue = ParamRules.within("queue", queue, 256, 1, 65_536);
     }
 
     /** Every parameter at its default. */
     public static SpeechRecognitionParams defaults() {
-        return new SpeechRecognitionParams(null, null, null, null, null, null, null, null, null, null, null, null, null);
+        return new SpeechRecognitionParams(null, null, null, null, null, null, null, null, null, null, null, null, null, null);
     }
 
     /** These params with another grammar file. */
     public SpeechRecognitionParams withGrammar(String file) {
         return new SpeechRecognitionParams(file, adaptation, minConfidence, outOfGrammarProbability, garbagePrior, denoise,
-                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, queue);
+                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with a speaker's adaptation file. */
     public SpeechRecognitionParams withAdaptation(String file) {
         return new SpeechRecognitionParams(grammar, file, minConfidence, outOfGrammarProbability, garbagePrior, denoise,
-                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, queue);
+                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with another confidence threshold. */
     public SpeechRecognitionParams withMinConfidence(double threshold) {
         return new SpeechRecognitionParams(grammar, adaptation, threshold, outOfGrammarProbability, garbagePrior, denoise,
-                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, queue);
+                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with another backlog. */
     public SpeechRecognitionParams withMaxPending(int n) {
         return new SpeechRecognitionParams(grammar, adaptation, minConfidence, outOfGrammarProbability, garbagePrior, denoise, n,
-                minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, queue);
+                minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with another early endpoint (at hangoverMs or above: none). */
     public SpeechRecognitionParams withEndpointMs(double ms) {
         return new SpeechRecognitionParams(grammar, adaptation, minConfidence, outOfGrammarProbability, garbagePrior, denoise,
-                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, ms, queue);
+                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, ms, endpointAboveFloorDb, queue);
     }
 
     /** The adaptation file, if one is named. */

@@ -18,6 +18,12 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Future;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.AudioFormat;
 
@@ -60,17 +66,28 @@ public final class SphinxDecoder {
     }
 
     private final ConfigurationManager cm;
+    private final ConfigurationManager phoneCm;
     private final Recognizer recognizer;
     private final Recognizer phoneRecognizer;
     private final StreamDataSource source;
+    private final StreamDataSource phoneSource;
     private final GrammarPhrases phrases;
     private final LogMath logMath = LogMath.getLogMath();
+    /**
+     * The free-phone search runs here while the grammar search runs on the caller's thread: one thread,
+     * ended when idle for {@link #PHONE_THREAD_IDLE_S} s, so a decoder no longer used leaves none behind.
+     */
+    private final ExecutorService phoneThread = phoneThread();
 
-    private SphinxDecoder(ConfigurationManager cm) {
+    private SphinxDecoder(ConfigurationManager cm, ConfigurationManager phoneCm) throws IOException {
         this.cm = cm;
+        this.phoneCm = phoneCm;
         this.recognizer = cm.lookup("recognizer");
-        this.phoneRecognizer = cm.lookup("phoneRecognizer");
+        // the free-phone linguist reads the model when it is made: load it first
+        phoneCm.<edu.cmu.sphinx.linguist.acoustic.AcousticModel>lookup("acousticModel").allocate();
+        this.phoneRecognizer = phoneCm.lookup("phoneRecognizer");
         this.source = cm.lookup("dataSource");
+        this.phoneSource = phoneCm.lookup("dataSource");
         recognizer.allocate();
         phoneRecognizer.allocate();
         JSGFGrammar grammar = cm.lookup("jsgfGrammar");
@@ -96,8 +113,11 @@ public final class SphinxDecoder {
     public static SphinxDecoder load(Settings settings, Optional<Path> adaptation) throws IOException {
         Path file = settings.grammarFile().toAbsolutePath().normalize();
         Map<String, String> values = values(settings);
+        Map<String, String> phoneValues = new java.util.HashMap<>(values);
+        phoneValues.put("useCDUnits", "false");
         try {
-            SphinxDecoder d = new SphinxDecoder(new ConfigurationManager(writeConfig(values).toUri().toURL()));
+            SphinxDecoder d = new SphinxDecoder(new ConfigurationManager(writeConfig(values).toUri().toURL()),
+                    new ConfigurationManager(writeConfig(phoneValues).toUri().toURL()));
             if (adaptation.isPresent()) {
                 d.adapt(adaptation.get());
             }
@@ -139,6 +159,7 @@ public final class SphinxDecoder {
         String dir = file.getParent().toUri().toURL().toString();
         return Map.ofEntries(
                 Map.entry("addenda", addenda),
+                Map.entry("useCDUnits", "true"),
                 Map.entry("absoluteBeamWidth", "20000"),
                 Map.entry("relativeBeamWidth", "1e-60"),
                 Map.entry("wordInsertionProbability", "0.1"),
@@ -190,9 +211,10 @@ public final class SphinxDecoder {
 
     /** Applies a speaker's MLLR transform (written by {@link #writeAdaptation}) to the loaded model's means. */
     private void adapt(Path transformFile) throws IOException {
-        Sphinx3Loader loader = cm.lookup("acousticModelLoader");
         try {
-            Mllr.read(transformFile).apply(loader);
+            Mllr transform = Mllr.read(transformFile);
+            transform.apply(cm.lookup("acousticModelLoader"));
+            transform.apply(phoneCm.lookup("acousticModelLoader"));
         } catch (IOException e) {
             throw new IOException("cannot apply the adaptation " + transformFile + ": " + e.getMessage(), e);
         }
@@ -276,7 +298,14 @@ public final class SphinxDecoder {
             throw new IllegalArgumentException("Sphinx needs 16 kHz mono 16-bit audio, got " + utterance.format());
         }
         long start = System.nanoTime();
-        Result r = search(recognizer, utterance);
+        Future<Result> free = phoneThread.submit(() -> search(phoneRecognizer, phoneSource, utterance));
+        Result r;
+        Result freeResult;
+        try {
+            r = search(recognizer, source, utterance);
+        } finally {
+            freeResult = await(free);
+        }
         Token best = r == null ? null : r.getBestFinalToken();
         if (best == null) {
             return Optional.empty();
@@ -285,8 +314,7 @@ public final class SphinxDecoder {
         if (words.stream().anyMatch(GarbageWords::isGarbage) || !phrases.accepts(words)) {
             return Optional.empty();
         }
-        Result free = search(phoneRecognizer, utterance);
-        Token phones = free == null ? null : free.getBestToken();
+        Token phones = freeResult == null ? null : freeResult.getBestToken();
         double[] g = acoustic(best);
         double confidence = 1;
         if (phones != null && g[1] > 0) {
@@ -299,7 +327,41 @@ public final class SphinxDecoder {
                 utterance.frameCount() * 1000L / utterance.format().sampleRateHz()));
     }
 
-    private Result search(Recognizer which, AudioChunk utterance) {
+    /** The free-phone search's result, once it is done (it always ends: its stream is in memory). */
+    private static Result await(Future<Result> search) {
+        boolean interrupted = false;
+        try {
+            while (true) {
+                try {
+                    return search.get();
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                } catch (ExecutionException e) {
+                    throw e.getCause() instanceof RuntimeException re ? re
+                            : new IllegalStateException("the free-phone search failed", e.getCause());
+                }
+            }
+        } finally {
+            if (interrupted) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    static final long PHONE_THREAD_IDLE_S = 10;
+
+    private static ExecutorService phoneThread() {
+        ThreadPoolExecutor pool = new ThreadPoolExecutor(1, 1, PHONE_THREAD_IDLE_S, TimeUnit.SECONDS,
+                new LinkedBlockingQueue<>(), r -> {
+                    Thread t = new Thread(r, "habla-sphinx-phones");
+                    t.setDaemon(true);
+                    return t;
+                });
+        pool.allowCoreThreadTimeOut(true);
+        return pool;
+    }
+
+    private static Result search(Recognizer which, StreamDataSource source, AudioChunk utterance) {
         source.setInputStream(new ByteArrayInputStream(dithered(utterance)));
         Result last = null;
         Result r;

@@ -65,7 +65,7 @@ class GarbageWordsTest {
     void theGrammarGetsOnePublicRuleOfGarbageWordsWithTheirPrior() {
         String augmented = GarbageWords.augment(GRAMMAR, Set.of("garbage_so", "garbage_stock"), 0.01);
         assertThat(augmented).startsWith(GRAMMAR)
-                .contains("public <hablaGarbage> = <hablaGarbageWord>+;")
+                .contains("public <hablaGarbage> = <hablaGarbageWord>;")
                 .contains("/0.0100000/ garbage_so")
                 .contains("/0.0100000/ garbage_stock")
                 .contains("/0.980000/ <VOID>");

@@ -91,6 +91,10 @@ public final class SpeechBench {
         System.out.printf("%-9s %4d/%-4d %6.1f %%   %4d/%-4d %6.1f %%   %-12d%n", "all", total.inGrammarRight,
                 total.inGrammar, total.accuracy(), total.outOfGrammarRejected, total.outOfGrammar, total.rejection(),
                 total.notInGrammar);
+        System.out.printf("out of grammar: the grammar's own words alone or out of order (\"go\", \"go left\") %d/%d "
+                + "gave nothing, other words and phrases %d/%d; load average %s%n", total.grammarWordItemsRejected,
+                total.grammarWordItems, total.outOfGrammarRejected - total.grammarWordItemsRejected,
+                total.outOfGrammar - total.grammarWordItems, loadAverage());
         adaptation(config, heldOut.subList(0, Math.min(enrolVoices, heldOut.size())));
         latency(config, heldOut.subList(0, Math.min(latencyVoices, heldOut.size())));
         System.exit(0);
@@ -167,11 +171,13 @@ public final class SpeechBench {
                    "params": {"kind": "audio", "delivery": "queue", "capacity": 256}, "expose": {"port": %d, "name": "mic"}},
                   {"id": "audio", "type": "audio-processing", "layer": "processing", "inputs": {"audio": "mic.out"},
                    "params": %s},
-                  {"id": "speech", "type": "speech-recognition", "layer": "processing", "inputs": {"segments": "audio.segments"},
+                  {"id": "speech", "type": "speech-recognition", "layer": "processing", "inputs": {%s},
                    "params": %s},
                   {"id": "words", "type": "pass-through", "layer": "virtual", "inputs": {"in": "speech.words"},
                    "params": {"kind": "text", "delivery": "queue"}, "expose": {"port": %d, "name": "words"}}]}
-                """.formatted(ports[0], ParamsJson.write(audio.params()), ParamsJson.write(speech.params()), ports[1]);
+                """.formatted(ports[0], ParamsJson.write(audio.params()),
+                SpeechChain.direct(speech) ? "\"audio\": \"mic.out\"" : "\"segments\": \"audio.segments\"",
+                ParamsJson.write(speech.params()), ports[1]);
         Daemon d = Daemon.start(new ConfigLoader(registry).parse(json, config.toAbsolutePath().getParent()), registry,
                 EngineClock.system());
         Histogram h = new Histogram(60_000_000L, 3);
@@ -241,8 +247,21 @@ public final class SpeechBench {
         System.out.printf("%nLatency through a daemon (sockets on loopback, %.0f s of held-out clean and noise20 speech "
                 + "played in real time in %d ms chunks): end of speech -> phrase on the socket, %d phrases right of %d%n",
                 audioS, CHUNK_MS, right, items);
-        System.out.printf("p50 %.0f ms   p90 %.0f ms   p99 %.0f ms   max %.0f ms%n", h.getValueAtPercentile(50) / 1e3,
-                h.getValueAtPercentile(90) / 1e3, h.getValueAtPercentile(99) / 1e3, h.getMaxValue() / 1e3);
+        System.out.printf("p50 %.0f ms   p90 %.0f ms   p99 %.0f ms   max %.0f ms   (speech-recognition fed by %s; "
+                + "load average %s)%n", h.getValueAtPercentile(50) / 1e3, h.getValueAtPercentile(90) / 1e3,
+                h.getValueAtPercentile(99) / 1e3, h.getMaxValue() / 1e3,
+                SpeechChain.direct(speech) ? "the microphone's stream, its own endpointing" : "audio-processing's segments",
+                loadAverage());
+    }
+
+    /** The machine's load averages (1, 5, 15 min), as /proc/loadavg gives them. */
+    static String loadAverage() {
+        try {
+            String[] f = Files.readString(Path.of("/proc/loadavg")).trim().split("\\s+");
+            return f[0] + " " + f[1] + " " + f[2];
+        } catch (IOException e) {
+            return "unknown";
+        }
     }
 
     private static void drainReplies(Socket s) {

@@ -25,7 +25,7 @@ import org.habla.sample.Sample;
 public final class SpeechChain {
 
     /** What the chain said, and when: the stream time (s) of the audio that ended the utterance. */
-    public record Heard(String phrase, double confidence, double atS) {
+    public record Heard(String phrase, double confidence, double atS, double decodeMs) {
     }
 
     private static final long BASE_MICROS = 1_000_000_000L;
@@ -116,6 +116,10 @@ public final class SpeechChain {
     public List<Heard> run(AudioChunk stream, int chunkMs) {
         MethodHarness audio = MethodHarness.started("audio", create(audioProvider, audioParams)).runBackgroundAtOnce();
         speech.clear();
+        if (direct) {
+            // a new stream: the recogniser's endpointing starts afresh, as when a microphone's format changes
+            speech.push("audio", AudioChunk.wrap(new org.habla.sample.AudioFormat(8_000, 1, 16), new byte[2]));
+        }
         int frame = stream.format().frameBytes();
         int chunkFrames = stream.format().sampleRateHz() * chunkMs / 1000;
         byte[] pcm = stream.pcm();
@@ -137,7 +141,8 @@ public final class SpeechChain {
         List<Heard> heard = new ArrayList<>();
         for (Sample s : speech.samples("result")) {
             RecordValue r = (RecordValue) s.payload();
-            heard.add(new Heard(r.text("phrase"), r.has("confidence") ? r.number("confidence") : Double.NaN, (s.sourceMicros() - BASE_MICROS) / 1e6));
+            heard.add(new Heard(r.text("phrase"), r.has("confidence") ? r.number("confidence") : Double.NaN,
+                    (s.sourceMicros() - BASE_MICROS) / 1e6, r.has("timeMs") ? r.number("timeMs") : Double.NaN));
         }
         return heard;
     }
