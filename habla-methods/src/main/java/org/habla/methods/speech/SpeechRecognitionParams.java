@@ -26,7 +26,7 @@ public record SpeechRecognitionParams(
         Double outOfGrammarProbability,
         @Param(value = "Prior of each garbage word: near misses of the grammar's words from the pronouncing "
                 + "dictionary, and its words alone, searched beside the phrases; when one wins, nothing is said. "
-                + "0: no garbage words", defaultValue = "0")
+                + "0: no garbage words", defaultValue = "0.001")
         Double garbagePrior,
         @Param(value = "Noise removal in Sphinx's front end (spectral noise estimate subtracted per mel band)",
                 defaultValue = "true")
@@ -64,7 +64,7 @@ public record SpeechRecognitionParams(
         adaptation = adaptation == null ? "" : adaptation.trim();
         minConfidence = ParamRules.within("minConfidence", minConfidence, 0.1, 0, 1);
         outOfGrammarProbability = ParamRules.within("outOfGrammarProbability", outOfGrammarProbability, 0, 0, 1);
-        garbagePrior = ParamRules.within("garbagePrior", garbagePrior, 0, 0, 1);
+        garbagePrior = ParamRules.within("garbagePrior", garbagePrior, 0.001, 0, 1);
         denoise = denoise == null || denoise;
         maxPending = ParamRules.within("maxPending", maxPending, 4, 1, 1000);
         minVoicedMs = ParamRules.within("minVoicedMs", minVoicedMs, 80, 0, 5000);

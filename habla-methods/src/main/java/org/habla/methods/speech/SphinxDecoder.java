@@ -65,6 +65,18 @@ public final class SphinxDecoder {
     public record Decoded(String phrase, double confidence, double score, long decodeMs, long audioMs) {
     }
 
+    /**
+     * Sphinx-4's loggers named after its classes (outside its configurations' own, which the config sets
+     * to WARNING): held here so the level stays set, WARNING so decoding does not fill the log with
+     * INFO lines such as each utterance's cepstral mean.
+     */
+    private static final java.util.logging.Logger SPHINX_LOG = quiet(java.util.logging.Logger.getLogger("edu.cmu.sphinx"));
+
+    private static java.util.logging.Logger quiet(java.util.logging.Logger log) {
+        log.setLevel(java.util.logging.Level.WARNING);
+        return log;
+    }
+
     private final ConfigurationManager cm;
     private final ConfigurationManager phoneCm;
     private final Recognizer recognizer;

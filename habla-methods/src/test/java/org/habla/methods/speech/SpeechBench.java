@@ -95,8 +95,12 @@ public final class SpeechBench {
                 + "gave nothing, other words and phrases %d/%d; load average %s%n", total.grammarWordItemsRejected,
                 total.grammarWordItems, total.outOfGrammarRejected - total.grammarWordItemsRejected,
                 total.outOfGrammar - total.grammarWordItems, loadAverage());
-        adaptation(config, heldOut.subList(0, Math.min(enrolVoices, heldOut.size())));
-        latency(config, heldOut.subList(0, Math.min(latencyVoices, heldOut.size())));
+        if (enrolVoices > 0) {
+            adaptation(config, heldOut.subList(0, Math.min(enrolVoices, heldOut.size())));
+        }
+        if (latencyVoices > 0) {
+            latency(config, heldOut.subList(0, Math.min(latencyVoices, heldOut.size())));
+        }
         System.exit(0);
     }
 
