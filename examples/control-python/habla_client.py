@@ -15,7 +15,12 @@ line describing the method; then it streams one JSON object per line. A line may
 
 import json
 import socket
+import threading
 import time
+
+# How often keep_alive() pings a quiet socket at most; the daemon closes a client that sends nothing and is
+# sent nothing for limits.idleTimeoutMs (the hello's limits.idleTimeoutMs, 5 minutes by default).
+KEEP_ALIVE_S = 60.0
 
 
 class ControlError(Exception):
@@ -62,10 +67,15 @@ def _invalid(code, message, raw):
 class ControlSocket:
     """One connection to one method's control socket."""
 
-    def __init__(self, host, port, timeout=5.0, max_line=1 << 20):
+    def __init__(self, host, port, timeout=5.0, max_line=1 << 20, announce=True):
+        """Connects and reads the hello. With announce (the default) it sends one ping at once: a connection
+        that has sent no request is only "pending" for the daemon, which closes it after limits.idleTimeoutMs
+        and lets newcomers push it out when the port is crowded (docs/protocol.md)."""
         self._sock = socket.create_connection((host, port), timeout=timeout)
         self._buf = b""
         self._max_line = max_line
+        self._send_lock = threading.Lock()
+        self._last_sent = time.monotonic()
         self.events = []  # stale / dropped / error / invalid lines seen while waiting for samples
         try:
             self.hello = self.read_line(timeout)
@@ -75,6 +85,8 @@ class ControlSocket:
                 raise ControlError(self.hello)
             if self.hello.get("type") != "hello":
                 raise ConnectionError("expected a hello line, got %r" % (self.hello,))
+            if announce:
+                self.send({"op": "ping"})
         except BaseException:
             self.close()
             raise
@@ -137,8 +149,20 @@ class ControlSocket:
             self.events.append(line)
 
     def send(self, obj):
-        """Sends one request line."""
-        self._sock.sendall((json.dumps(obj) + "\n").encode("utf-8"))
+        """Sends one request line (safe to call from several threads)."""
+        data = (json.dumps(obj) + "\n").encode("utf-8")
+        with self._send_lock:
+            self._sock.sendall(data)
+            self._last_sent = time.monotonic()
+
+    def keep_alive(self):
+        """Sends a ping if nothing was sent for a while, so that the daemon does not close a client of a quiet
+        socket as idle. Call it now and then (e.g. whenever a read times out); it sends at most one line per
+        KEEP_ALIVE_S, or per a third of the hello's idleTimeoutMs if that is shorter."""
+        idle_ms = (self.hello.get("limits") or {}).get("idleTimeoutMs") or 0
+        every = KEEP_ALIVE_S if not idle_ms else min(KEEP_ALIVE_S, idle_ms / 3000.0)
+        if time.monotonic() - self._last_sent >= every:
+            self.send({"op": "ping"})
 
     def write(self, value, input_name=None, request_id=None):
         """Writes a value to the method's control input (the only one, unless input_name names it)."""

@@ -3,6 +3,7 @@
 import json
 import socket
 import threading
+import time
 import unittest
 
 from habla_client import ControlError, ControlSocket
@@ -18,6 +19,7 @@ class ScriptedDaemon:
         self.chunks = chunks
         self.answer = answer  # function(request dict) -> bytes to send back, or None
         self.received = []
+        self.pings = 0
         self.conn = None
         self.server = socket.socket()
         self.server.bind(("127.0.0.1", 0))
@@ -48,6 +50,9 @@ class ScriptedDaemon:
                     while b"\n" in buf:
                         line, buf = buf.split(b"\n", 1)
                         request = json.loads(line)
+                        if request == {"op": "ping"}:
+                            self.pings += 1  # the client announces itself (and keeps alive) with pings
+                            continue
                         self.received.append(request)
                         if self.answer:
                             conn.sendall(self.answer(request))
@@ -86,6 +91,18 @@ class ControlSocketTest(unittest.TestCase):
         s = self.connect(ScriptedDaemon(line(HELLO)))
         self.assertEqual("habla-control/1", s.hello["protocol"])
         self.assertEqual("ranges", s.hello["socket"])
+
+    def test_the_client_announces_itself_with_one_ping_and_keeps_a_quiet_socket_alive(self):
+        hello = dict(HELLO, limits={"idleTimeoutMs": 30})  # a third of it: ping after 10 ms of silence
+        daemon = ScriptedDaemon(line(hello))
+        s = self.connect(daemon)
+        s.keep_alive()  # sent a moment ago: nothing to do yet, unless 10 ms have passed
+        deadline = time.monotonic() + 5
+        while daemon.pings < 2 and time.monotonic() < deadline:
+            s.keep_alive()
+            daemon.thread.join(0.02)
+        self.assertGreaterEqual(daemon.pings, 2)
+        self.assertEqual([], daemon.received)
 
     def test_json_that_is_not_an_object_is_reported_and_reading_goes_on(self):
         s = self.connect(ScriptedDaemon(line(HELLO), b"[1, 2]\n", b'"forward"\n', b"5\n", b"null\n",

@@ -94,7 +94,7 @@ class _Server:
                 "layer": "virtual", "direction": "both" if self.writable else "out",
                 "outputs": [{"name": "out", "kind": self.kind, "unit": "", "fields": [], "doc": ""}],
                 "inputs": [{"name": "in", "kind": "text"}] if self.writable else [],
-                "stale": False, "limits": {"maxLineBytes": MAX_LINE, "maxBinaryBytes": 0, "queueSamples": 64}}
+                "stale": False, "limits": {"maxLineBytes": MAX_LINE, "maxBinaryBytes": 0, "clientQueueSamples": 64}}
 
     def _accept(self):
         while not self.closed:

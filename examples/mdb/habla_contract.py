@@ -193,6 +193,7 @@ class ContractLink:
                 try:
                     line = sock.read_line(timeout=1.0)
                 except socket.timeout:
+                    sock.keep_alive()  # a quiet socket (command, reward) must not be closed as idle
                     continue
                 if line is None:
                     break

@@ -7,7 +7,9 @@ import java.nio.file.Path;
 import java.util.Optional;
 import java.util.concurrent.Callable;
 import org.habla.config.ConfigException;
+import org.habla.daemon.PortsUnavailableException;
 import org.habla.plugin.PluginRegistry;
+import org.habla.recording.RecordingDamagedException;
 import org.habla.recording.RecordingException;
 import org.habla.replay.ReplayResult;
 import org.habla.replay.Replayer;
@@ -56,6 +58,10 @@ public final class ReplayCommand implements Callable<Integer> {
     @Option(names = "--no-control", description = "Do not replay the recorded control writes; only live clients write.")
     private boolean noControl;
 
+    @Option(names = "--salvage", description = "Replay a recording damaged before its end up to the damage "
+            + "(without it such a recording is refused, naming the byte offset).")
+    private boolean salvage;
+
     @Option(names = "--strict", description = "Exit 1 if any exposed output or command differs from the recording.")
     private boolean strict;
 
@@ -81,7 +87,10 @@ public final class ReplayCommand implements Callable<Integer> {
         }
         Replayer replayer;
         try {
-            replayer = Replayer.open(file, Optional.ofNullable(override), registry);
+            replayer = Replayer.open(file, Optional.ofNullable(override), registry, salvage);
+        } catch (RecordingDamagedException e) {
+            return fail(err, file + ": " + e.getMessage() + ". Nothing was replayed; --salvage replays the part"
+                    + " before byte " + e.cut().offset(), ExitCodes.USAGE_OR_CONFIG);
         } catch (ConfigException e) {
             ConfigReport.errors(err, override != null ? override : file, e.errors(), "the replay does not start");
             return ExitCodes.USAGE_OR_CONFIG;
@@ -100,6 +109,9 @@ public final class ReplayCommand implements Callable<Integer> {
             });
         } catch (FileAlreadyExistsException e) {
             return fail(err, recordTo + " already exists; a recording is never overwritten", ExitCodes.USAGE_OR_CONFIG);
+        } catch (PortsUnavailableException e) {
+            ConfigReport.errors(err, override != null ? override : file, e.errors(), "the replay does not start");
+            return ExitCodes.USAGE_OR_CONFIG;
         } catch (IOException | RecordingException e) {
             return fail(err, e.getMessage(), ExitCodes.RUNTIME_FAILURE);
         }
@@ -111,8 +123,7 @@ public final class ReplayCommand implements Callable<Integer> {
             allMatch &= s.matches();
         }
         if (r.cut().isPresent()) {
-            out.println("the recording ends in a torn record at byte " + r.cut().get().offset() + " ("
-                    + r.cut().get().reason() + "): everything before it was replayed");
+            out.println(r.cut().get().describe() + ": everything before it was replayed");
         } else if (!r.complete()) {
             out.println("the recording has no end record: the recording daemon did not stop cleanly");
         }

@@ -14,6 +14,7 @@ import org.habla.config.ConfigLoader;
 import org.habla.config.HablaConfig;
 import org.habla.daemon.Daemon;
 import org.habla.daemon.PlacementRefusedException;
+import org.habla.daemon.PortsUnavailableException;
 import org.habla.graph.EngineClock;
 import org.habla.graph.MethodGraph;
 import org.habla.recording.Recorder;
@@ -80,10 +81,17 @@ public final class RunCommand implements Callable<Integer> {
         Recorder recorder = null;
         Daemon daemon;
         try {
+            Daemon.checkPorts(cfg);
             if (record != null) {
                 recorder = Recorder.create(record, header(cfg, registry, clock), clock);
             }
             daemon = recorder == null ? Daemon.start(cfg, registry, clock) : Daemon.start(cfg, registry, clock, recorder);
+        } catch (PortsUnavailableException e) {
+            if (recorder != null) {
+                recorder.close();
+            }
+            ConfigReport.errors(err, config, e.errors(), "the daemon does not start");
+            return ExitCodes.USAGE_OR_CONFIG;
         } catch (PlacementRefusedException e) {
             e.refusals().forEach(r -> err.println("habla run: " + r));
             err.println("habla run: the daemon does not start");

@@ -107,12 +107,32 @@ public final class StatusCommand implements Callable<Integer> {
         }
         if (st.has("sockets")) {
             out.println();
-            out.printf(Locale.ROOT, "%-18s %6s %8s %10s %8s%n", "SOCKET", "PORT", "CLIENTS", "LINES OUT", "DROPS");
+            out.printf(Locale.ROOT, "%-18s %6s %8s %10s %8s %8s %8s  %s%n", "SOCKET", "PORT", "CLIENTS", "LINES OUT",
+                    "DROPS", "EVICTED", "TIMEOUTS", "COMMANDED BY");
             for (JsonNode s : st.path("sockets")) {
-                out.printf(Locale.ROOT, "%-18s %6d %8d %10d %8d%n", s.path("socket").asText(), s.path("port").asInt(),
-                        s.path("clients").asInt(), s.path("linesOut").asLong(), s.path("dropped").asLong());
+                out.printf(Locale.ROOT, "%-18s %6d %8d %10d %8d %8d %8d  %s%n", s.path("socket").asText(),
+                        s.path("port").asInt(), s.path("clients").asInt(), s.path("linesOut").asLong(),
+                        s.path("dropped").asLong(), s.path("evicted").asLong(),
+                        s.path("idleTimeouts").asLong() + s.path("frameTimeouts").asLong(), commander(s.path("control")));
+            }
+            if (st.has("blocks")) {
+                out.printf(Locale.ROOT, "blocks in flight: %d of %d bytes%n", st.path("blocks").path("bytesInFlight")
+                        .asLong(), st.path("blocks").path("budgetBytes").asLong());
             }
         }
         out.println("(* = not ready yet)");
+    }
+
+    /** Who commands an actuating socket, for the table: "-" where values move nothing, "nobody" when free. */
+    static String commander(JsonNode control) {
+        if (control.isMissingNode()) {
+            return "-";
+        }
+        JsonNode h = control.path("holder");
+        if (h.isNull() || h.isMissingNode()) {
+            return "nobody";
+        }
+        return String.format(Locale.ROOT, "%s %s since %s (silent %d ms)", h.path("connection").asText(),
+                h.path("address").asText(), control.path("since").asText(), control.path("silentMs").asLong());
     }
 }

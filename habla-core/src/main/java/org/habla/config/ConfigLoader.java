@@ -31,13 +31,15 @@ public final class ConfigLoader {
     static final Set<String> ROOT_KEYS =
             Set.of("$schema", "description", "system", "limits", "safety", "status", "interfaces", "methods", "bridges");
     static final Set<String> LIMITS_KEYS =
-            Set.of("maxLineBytes", "maxBinaryBytes", "maxClientsPerPort", "clientQueueSamples");
+            Set.of("maxLineBytes", "maxBinaryBytes", "maxClientsPerPort", "clientQueueSamples", "maxPendingPerPort", "idleTimeoutMs",
+                    "frameTimeoutMs", "evictableIdleMs", "socketBlockBudgetBytes", "processBlockBudgetBytes");
     static final Set<String> SAFETY_KEYS = Set.of("watchdogMs");
     static final Set<String> STATUS_KEYS = Set.of("bind", "port", "monitorPort");
     static final Set<String> INTERFACE_KEYS = Set.of("id", "driver", "address", "params", "reconnect");
-    static final Set<String> RECONNECT_KEYS = Set.of("initialMs", "maxMs", "connectTimeoutMs", "readTimeoutMs");
+    static final Set<String> RECONNECT_KEYS = Set.of("initialMs", "maxMs", "connectTimeoutMs", "readTimeoutMs",
+            "tcpKeepAliveIdleS", "tcpKeepAliveIntervalS", "tcpKeepAliveCount");
     static final Set<String> METHOD_KEYS =
-            Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host", "fallback");
+            Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host", "fallback", "feedback");
     static final Set<String> EXPOSE_KEYS = Set.of("port", "name", "bind");
     static final Set<String> BRIDGE_KEYS = Set.of("id", "type", "address", "params");
 
@@ -59,10 +61,18 @@ public final class ConfigLoader {
     static final int MAX_BINARY_BYTES = 256 * 1024 * 1024;
     /** The most clients one port may be allowed. */
     static final int MAX_CLIENTS_PER_PORT = 1_024;
+    /** The most connections without a request one port may be allowed. */
+    static final int MAX_PENDING_PER_PORT = 65_536;
     /** The longest queue for one client. */
     static final int MAX_CLIENT_QUEUE_SAMPLES = 65_536;
     /** The longest time setting (watchdog, back-off, time-outs): one hour. */
     static final long MAX_MS = 3_600_000;
+    /** The longest TCP keep-alive idle time or probe interval a config may ask for [s]. */
+    static final long MAX_TCP_KEEPALIVE_S = 3_600;
+    /** The most unanswered TCP keep-alive probes a config may allow. */
+    static final long MAX_TCP_KEEPALIVE_COUNT = 100;
+    /** The largest memory a port's or the process's blocks in flight may be allowed: 4 GiB. */
+    static final long MAX_BLOCK_BUDGET_BYTES = 4L * 1024 * 1024 * 1024;
 
     private static final ObjectMapper JSON = JsonMapper.builder()
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION)
@@ -132,7 +142,7 @@ public final class ConfigLoader {
         root.optionalString("$schema");
         root.optionalString("description");
         Optional<String> system = root.requiredString("system");
-        Limits limits = root.object("limits").map(this::limits).orElse(Limits.DEFAULTS);
+        Limits limits = root.object("limits").map(o -> limits(o, errors)).orElse(Limits.DEFAULTS);
         Safety safety = root.object("safety").map(this::safety).orElse(Safety.DEFAULTS);
         StatusConfig status = root.object("status").map(this::status).orElse(StatusConfig.DEFAULTS);
 
@@ -163,14 +173,33 @@ public final class ConfigLoader {
                 methods.stream().map(MethodEntry::toConfig).toList(), bridges));
     }
 
-    private Limits limits(CheckedObject o) {
+    private Limits limits(CheckedObject o, ConfigErrors errors) {
         o.allowOnly(LIMITS_KEYS);
         Limits d = Limits.DEFAULTS;
-        return new Limits(
+        int maxBinaryBytes = (int) o.integer("maxBinaryBytes", d.maxBinaryBytes(), 1, MAX_BINARY_BYTES);
+        // Budgets left out grow with a larger maxBinaryBytes, so that raising it alone stays valid.
+        long socketBudget = o.integer("socketBlockBudgetBytes", Math.max(d.socketBlockBudgetBytes(), maxBinaryBytes),
+                1, MAX_BLOCK_BUDGET_BYTES);
+        Limits l = new Limits(
                 (int) o.integer("maxLineBytes", d.maxLineBytes(), 1, MAX_LINE_BYTES),
-                (int) o.integer("maxBinaryBytes", d.maxBinaryBytes(), 1, MAX_BINARY_BYTES),
+                maxBinaryBytes,
                 (int) o.integer("maxClientsPerPort", d.maxClientsPerPort(), 1, MAX_CLIENTS_PER_PORT),
-                (int) o.integer("clientQueueSamples", d.clientQueueSamples(), 1, MAX_CLIENT_QUEUE_SAMPLES));
+                (int) o.integer("clientQueueSamples", d.clientQueueSamples(), 1, MAX_CLIENT_QUEUE_SAMPLES),
+                (int) o.integer("maxPendingPerPort", d.maxPendingPerPort(), 1, MAX_PENDING_PER_PORT),
+                o.integer("idleTimeoutMs", d.idleTimeoutMs(), 0, MAX_MS),
+                o.integer("frameTimeoutMs", d.frameTimeoutMs(), 1, MAX_MS),
+                o.integer("evictableIdleMs", d.evictableIdleMs(), 0, MAX_MS),
+                socketBudget,
+                o.integer("processBlockBudgetBytes", Math.max(d.processBlockBudgetBytes(), socketBudget),
+                        1, MAX_BLOCK_BUDGET_BYTES));
+        if (l.socketBlockBudgetBytes() < l.maxBinaryBytes()) {
+            errors.add(o.path().field("socketBlockBudgetBytes"), "must not be less than maxBinaryBytes ("
+                    + l.maxBinaryBytes() + "), or the largest block could never be taken; was " + l.socketBlockBudgetBytes());
+        } else if (l.processBlockBudgetBytes() < l.socketBlockBudgetBytes()) {
+            errors.add(o.path().field("processBlockBudgetBytes"), "must not be less than socketBlockBudgetBytes ("
+                    + l.socketBlockBudgetBytes() + "), was " + l.processBlockBudgetBytes());
+        }
+        return l;
     }
 
     private Safety safety(CheckedObject o) {

@@ -96,9 +96,25 @@ public final class ConfigSchema {
                 "maxBinaryBytes", integer(1, ConfigLoader.MAX_BINARY_BYTES, d.maxBinaryBytes(),
                         "The largest \"bytes\" block accepted after a line [bytes]"),
                 "maxClientsPerPort", integer(1, ConfigLoader.MAX_CLIENTS_PER_PORT, d.maxClientsPerPort(),
-                        "Control clients at once on one method's port"),
+                        "Clients (connections that have sent a request) at once on one port"),
+                "maxPendingPerPort", integer(1, ConfigLoader.MAX_PENDING_PER_PORT, d.maxPendingPerPort(),
+                        "Connections at once on one port that have sent no request yet; the one waiting longest "
+                                + "gives way to a newcomer"),
                 "clientQueueSamples", integer(1, ConfigLoader.MAX_CLIENT_QUEUE_SAMPLES, d.clientQueueSamples(),
-                        "Samples waiting for one slow client before the oldest are dropped")));
+                        "Samples waiting for one slow client before the oldest are dropped"),
+                "idleTimeoutMs", integer(0, ConfigLoader.MAX_MS, d.idleTimeoutMs(),
+                        "Close a connection that has sent no frame and taken no byte for this long; 0: never [ms]"),
+                "frameTimeoutMs", integer(1, ConfigLoader.MAX_MS, d.frameTimeoutMs(),
+                        "A frame a peer has begun to send must arrive whole within this time; the status "
+                                + "endpoint's answer must be taken within it [ms]"),
+                "evictableIdleMs", integer(0, ConfigLoader.MAX_MS, d.evictableIdleMs(),
+                        "On a full port, a client idle this long may be evicted to admit a newcomer [ms]"),
+                "socketBlockBudgetBytes", integer(1, ConfigLoader.MAX_BLOCK_BUDGET_BYTES, d.socketBlockBudgetBytes(),
+                        "Memory for \"bytes\" blocks in flight on one port, all its connections together; "
+                                + "not below maxBinaryBytes (when left out: at least maxBinaryBytes) [bytes]"),
+                "processBlockBudgetBytes", integer(1, ConfigLoader.MAX_BLOCK_BUDGET_BYTES, d.processBlockBudgetBytes(),
+                        "Memory for blocks in flight on every port of the process together; not below "
+                                + "socketBlockBudgetBytes [bytes]")));
     }
 
     private static ObjectNode iface(PluginRegistry registry) {
@@ -110,13 +126,21 @@ public final class ConfigSchema {
                 "driver", string("The driver type.").set("enum", strings(registry.drivers().keySet())),
                 "address", string("host or host:port of the robot's main server.").put("minLength", 1),
                 "params", object("The driver's own params (see the driver type).").put("additionalProperties", true),
-                "reconnect", object("How the link is re-established after it drops.").set("properties", props(
-                        "initialMs", integer(1, ConfigLoader.MAX_MS, d.initialMs(), "The first wait after a failure [ms]"),
+                "reconnect", object("How the link notices a lost peer and is re-established.").set("properties", props(
+                        "initialMs", integer(1, ConfigLoader.MAX_MS, d.initialMs(),
+                                "The first wait after a failure, and the wait after a refused connect [ms]"),
                         "maxMs", integer(1, ConfigLoader.MAX_MS, d.maxMs(), "The longest wait; not below initialMs [ms]"),
                         "connectTimeoutMs", integer(1, ConfigLoader.MAX_MS, d.connectTimeoutMs(),
                                 "How long one connect and handshake may take [ms]"),
-                        "readTimeoutMs", integer(1, ConfigLoader.MAX_MS, d.readTimeoutMs(),
-                                "Silence after which the link is declared lost [ms]")))));
+                        "readTimeoutMs", integer(0, ConfigLoader.MAX_MS, d.readTimeoutMs(),
+                                "Silence after which a connection whose peer keeps sending is declared lost, "
+                                + "replacing the driver's limit; 0 keeps the driver's; quiet connections ignore it [ms]"),
+                        "tcpKeepAliveIdleS", integer(1, ConfigLoader.MAX_TCP_KEEPALIVE_S, d.tcpKeepAlive().idleS(),
+                                "Idle time before the first TCP keep-alive probe [s]"),
+                        "tcpKeepAliveIntervalS", integer(1, ConfigLoader.MAX_TCP_KEEPALIVE_S,
+                                d.tcpKeepAlive().intervalS(), "Time between TCP keep-alive probes [s]"),
+                        "tcpKeepAliveCount", integer(1, ConfigLoader.MAX_TCP_KEEPALIVE_COUNT, d.tcpKeepAlive().count(),
+                                "Unanswered TCP keep-alive probes after which the connection fails")))));
         ArrayNode cases = s.putArray("allOf");
         registry.drivers().keySet().forEach(name -> cases.add(when("driver", name,
                 props("params", ref("params.driver." + name)))));
@@ -160,7 +184,11 @@ public final class ConfigSchema {
                         .put("pattern", "^.+:[0-9]{1,5}$"),
                 "fallback", string("What the daemon does while the method's worker is lost: none (its outputs are "
                         + "stale) or local (the daemon runs it meanwhile). Only with host.")
-                        .put("default", "none").set("enum", strings("none", "local"))));
+                        .put("default", "none").set("enum", strings("none", "local")),
+                "feedback", NODES.objectNode().put("type", "array").put("uniqueItems", true)
+                        .put("description", "Inputs of this method whose wires close a wiring cycle on purpose; every"
+                                + " wire on a declared cycle delivers only the latest sample.")
+                        .set("items", string("An input name."))));
         ArrayNode cases = s.putArray("allOf");
         registry.methods().forEach((name, provider) -> {
             ArrayNode typeLayers = NODES.arrayNode();

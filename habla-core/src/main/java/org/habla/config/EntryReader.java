@@ -3,6 +3,7 @@ package org.habla.config;
 import com.fasterxml.jackson.databind.JsonNode;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
+import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
@@ -77,7 +78,7 @@ final class EntryReader {
         Optional<CheckedObject> read = CheckedObject.of(node, path, errors);
         if (read.isEmpty()) {
             return new MethodEntry(path, null, null, null, Set.of(), Map.of(), Map.of(), null, false, Optional.empty(),
-                    Optional.empty(), Fallback.NONE, null);
+                    Optional.empty(), Fallback.NONE, null, Map.of());
         }
         CheckedObject o = read.get();
         o.allowOnly(ConfigLoader.METHOD_KEYS);
@@ -144,7 +145,25 @@ final class EntryReader {
             o.node().get("inputs").fieldNames().forEachRemaining(inputKeys::add);
         }
         return new MethodEntry(path, id, provider == null ? null : provider.name(), layer, inputKeys, inputs,
-                commands, params, o.has("expose"), expose, host, fallback, made);
+                commands, params, o.has("expose"), expose, host, fallback, made, feedback(o));
+    }
+
+    /** The {@code feedback} array: input names, each with the path it is declared at. */
+    private Map<String, JsonPath> feedback(CheckedObject o) {
+        Map<String, JsonPath> out = new LinkedHashMap<>();
+        List<JsonNode> names = o.array("feedback");
+        for (int i = 0; i < names.size(); i++) {
+            JsonPath at = o.path().field("feedback").index(i);
+            JsonNode n = names.get(i);
+            if (!n.isTextual()) {
+                errors.add(at, "must be a string (an input name), not " + CheckedObject.describe(n));
+            } else if (out.containsKey(n.textValue())) {
+                errors.add(at, "'" + n.textValue() + "' is listed twice: already at " + out.get(n.textValue()));
+            } else {
+                out.put(n.textValue(), at);
+            }
+        }
+        return out;
     }
 
     private String id(CheckedObject o) {
@@ -165,9 +184,14 @@ final class EntryReader {
         if (max < initial) {
             errors.add(o.path().field("maxMs"), "must not be less than initialMs (" + initial + "), was " + max);
         }
+        Reconnect.TcpKeepAlive k = d.tcpKeepAlive();
         return new Reconnect(initial, Math.max(initial, max),
                 o.integer("connectTimeoutMs", d.connectTimeoutMs(), 1, ConfigLoader.MAX_MS),
-                o.integer("readTimeoutMs", d.readTimeoutMs(), 1, ConfigLoader.MAX_MS));
+                o.integer("readTimeoutMs", d.readTimeoutMs(), 0, ConfigLoader.MAX_MS),
+                new Reconnect.TcpKeepAlive(
+                        (int) o.integer("tcpKeepAliveIdleS", k.idleS(), 1, ConfigLoader.MAX_TCP_KEEPALIVE_S),
+                        (int) o.integer("tcpKeepAliveIntervalS", k.intervalS(), 1, ConfigLoader.MAX_TCP_KEEPALIVE_S),
+                        (int) o.integer("tcpKeepAliveCount", k.count(), 1, ConfigLoader.MAX_TCP_KEEPALIVE_COUNT)));
     }
 
     private Optional<Expose> expose(CheckedObject o, String methodId) {

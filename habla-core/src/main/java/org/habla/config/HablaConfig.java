@@ -2,6 +2,7 @@ package org.habla.config;
 
 import java.util.List;
 import java.util.Optional;
+import java.util.Set;
 
 /**
  * A whole, valid config: the system's name, its interfaces, its methods, its bridges and the daemon's settings.
@@ -24,6 +25,14 @@ public record HablaConfig(String system, Limits limits, Safety safety, StatusCon
 
     public Optional<MethodConfig> method(String id) {
         return methods.stream().filter(m -> m.id().equals(id)).findFirst();
+    }
+
+    /**
+     * The inputs of method {@code id} whose wires lie on a declared cycle: the engine delivers them as
+     * {@code latest} whatever the method type asks for.
+     */
+    public Set<String> cycleInputs(String id) {
+        return WiringCycles.of(methods).cycleInputs(id);
     }
 
     public Optional<InterfaceConfig> iface(String id) {

@@ -2,6 +2,7 @@ package org.habla.config;
 
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import org.habla.method.Layer;
 
 /**
@@ -16,15 +17,24 @@ import org.habla.method.Layer;
  * @param expose   the method's control socket, if it has one (virtual layer only)
  * @param host     the worker that runs it ({@code "host:port"}), if not the daemon itself
  * @param fallback what happens while that worker is lost ({@link Fallback#NONE} for a method without host)
+ * @param feedback the inputs the config declares to close a wiring cycle ({@link WiringCycles})
  */
 public record MethodConfig(String id, String type, Layer layer, Map<String, Source> inputs,
         Map<String, ChannelRef> commands, Record params, Optional<Expose> expose, Optional<String> host,
-        Fallback fallback) {
+        Fallback fallback, Set<String> feedback) {
 
     public MethodConfig {
         inputs = Map.copyOf(inputs);
         commands = Map.copyOf(commands);
         java.util.Objects.requireNonNull(fallback, "fallback");
+        feedback = Set.copyOf(feedback);
+    }
+
+    /** A method that closes no wiring cycle. */
+    public MethodConfig(String id, String type, Layer layer, Map<String, Source> inputs,
+            Map<String, ChannelRef> commands, Record params, Optional<Expose> expose, Optional<String> host,
+            Fallback fallback) {
+        this(id, type, layer, inputs, commands, params, expose, host, fallback, Set.of());
     }
 
     /** A method with no fallback: its outputs stay stale while a worker it is placed on is lost. */

@@ -23,10 +23,12 @@ import org.habla.method.Method;
  * @param host     the worker {@code host:port}, if given and readable
  * @param fallback what to do while the worker is lost
  * @param made     the method made by its provider to read its ports, or null
+ * @param feedback the inputs declared to close a wiring cycle, each with the path of its declaration
  */
 record MethodEntry(JsonPath path, String id, String type, Layer layer, Set<String> inputKeys,
         Map<String, Source> inputs, Map<String, ChannelRef> commands, Record params, boolean exposeGiven,
-        Optional<Expose> expose, Optional<String> host, Fallback fallback, Method made) {
+        Optional<Expose> expose, Optional<String> host, Fallback fallback, Method made,
+        Map<String, JsonPath> feedback) {
 
     /** Whether every part was read, so the entry can become a {@link MethodConfig}. */
     boolean complete() {
@@ -34,6 +36,6 @@ record MethodEntry(JsonPath path, String id, String type, Layer layer, Set<Strin
     }
 
     MethodConfig toConfig() {
-        return new MethodConfig(id, type, layer, inputs, commands, params, expose, host, fallback);
+        return new MethodConfig(id, type, layer, inputs, commands, params, expose, host, fallback, feedback.keySet());
     }
 }

@@ -1,9 +1,11 @@
 package org.habla.config;
 
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.stream.Collectors;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.method.Input;
@@ -40,6 +42,64 @@ final class WiringCheck {
             requiredInputs(m);
             expose(m);
         }
+        cycles(entries);
+    }
+
+    /**
+     * Every wiring cycle must be declared: a {@code feedback} input names a wire that lies on a cycle, and the
+     * wires left when the declared ones are taken out must close none. Each undeclared cycle is reported once,
+     * at the input whose wire closes it.
+     */
+    private void cycles(List<MethodEntry> entries) {
+        Map<String, Map<String, Source>> inputs = new LinkedHashMap<>();
+        entries.stream().filter(m -> m.id() != null).forEach(m -> inputs.putIfAbsent(m.id(), m.inputs()));
+        WiringCycles cycles = WiringCycles.of(inputs);
+        Set<WiringCycles.Wire> declared = new HashSet<>();
+        for (MethodEntry m : entries) {
+            if (m.id() == null || methods.get(m.id()) != m) {
+                continue;
+            }
+            m.feedback().forEach((input, at) -> {
+                Source source = m.inputs().get(input);
+                if (source == null) {
+                    if (!m.inputKeys().contains(input)) {
+                        errors.add(at, "'" + input + "' is not a wired input of '" + m.id() + "' (wired: "
+                                + names(m.inputKeys()) + ")");
+                    }
+                    return;
+                }
+                Optional<WiringCycles.Wire> wire = cycles.wireInto(m.id(), input);
+                if (wire.isEmpty()) {
+                    if (!(source instanceof Source.MethodOutput)) {
+                        errors.add(at, "'" + input + "' reads '" + source.text()
+                                + "': only a wire from a method's output can close a cycle");
+                    }
+                } else if (!cycles.onCycle(wire.get())) {
+                    errors.add(at, "'" + input + "' ('" + source.text() + "') is on no wiring cycle: nothing to declare");
+                } else {
+                    declared.add(wire.get());
+                }
+            });
+        }
+        for (int i = 0; i <= inputs.size(); i++) {
+            Optional<List<WiringCycles.Wire>> cycle = cycles.undeclaredCycle(declared::contains);
+            if (cycle.isEmpty()) {
+                return;
+            }
+            WiringCycles.Wire closing = cycle.get().get(cycle.get().size() - 1);
+            MethodEntry m = methods.get(closing.toMethod());
+            errors.add(m.path().field("inputs").field(closing.input()), "'" + closing.fromMethod() + "."
+                    + closing.output() + "' closes a wiring cycle (" + route(cycle.get()) + "): a sample could go round"
+                    + " it for ever. Rewire it, or declare it with \"feedback\": [\"" + closing.input()
+                    + "\"] on method '" + m.id() + "' (a declared cycle runs on latest inputs only)");
+            declared.add(closing);
+        }
+    }
+
+    private static String route(List<WiringCycles.Wire> cycle) {
+        StringBuilder b = new StringBuilder(cycle.get(0).fromMethod());
+        cycle.forEach(w -> b.append(" -> ").append(w.toMethod()));
+        return b.toString();
     }
 
     private void input(MethodEntry m, String name, Source source) {

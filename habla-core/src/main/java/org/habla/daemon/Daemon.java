@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.function.Consumer;
 import org.habla.bridge.Bridge;
 import org.habla.config.BridgeConfig;
+import org.habla.config.ConfigError;
 import org.habla.config.HablaConfig;
 import org.habla.config.MethodConfig;
 import org.habla.config.Source;
@@ -16,6 +17,7 @@ import org.habla.driver.ChannelDescriptor;
 import org.habla.graph.EngineClock;
 import org.habla.graph.GraphTap;
 import org.habla.graph.MethodGraph;
+import org.habla.net.BlockBudget;
 import org.habla.graph.OutputInfo;
 import org.habla.monitor.LiveGraph;
 import org.habla.monitor.Monitor;
@@ -43,6 +45,8 @@ public final class Daemon implements AutoCloseable {
     private final MethodGraph graph;
     private final EngineClock clock;
     private final Map<String, ControlServer> servers = new LinkedHashMap<>();
+    /** Memory for blocks clients are sending, on every control socket together. */
+    private final BlockBudget blockBudget;
     private final Map<String, Bridge> bridges = new LinkedHashMap<>();
     private StatusServer statusServer;
     private Monitor monitor;
@@ -52,6 +56,7 @@ public final class Daemon implements AutoCloseable {
         this.config = config;
         this.graph = graph;
         this.clock = clock;
+        this.blockBudget = BlockBudget.of("limits.processBlockBudgetBytes", config.limits().processBlockBudgetBytes());
     }
 
     /**
@@ -90,17 +95,66 @@ public final class Daemon implements AutoCloseable {
     }
 
     /**
-     * Starts the control sockets, the config's bridges (when {@code withBridges}), the status endpoint and the
-     * monitor around a built graph, then the graph.
+     * Checks that every port the config names can be listened on, without listening on any.
+     *
+     * @throws PortsUnavailableException naming each port that cannot be had, at its JSON path
+     */
+    public static void checkPorts(HablaConfig config) throws PortsUnavailableException {
+        List<ConfigError> taken = PortCheck.unavailable(config);
+        if (!taken.isEmpty()) {
+            throw new PortsUnavailableException(taken);
+        }
+    }
+
+    /**
+     * Binds every port first — the control sockets and the status endpoint, then the monitor — and only when all
+     * are held starts serving the control sockets and the status endpoint, then the config's bridges (when
+     * {@code withBridges}), then the graph. A port that cannot be had stops the start before any control socket
+     * served, any bridge connected or anything moved.
      */
     private static Daemon assemble(HablaConfig config, PluginRegistry registry, MethodGraph graph, EngineClock clock,
             boolean withBridges) throws IOException {
+        try {
+            checkPorts(config);
+        } catch (PortsUnavailableException e) {
+            graph.close();
+            throw e;
+        }
         Daemon d = new Daemon(config, graph, clock);
         try {
             for (ControlPoint point : d.graph.controlPoints()) {
-                ControlServer server = new ControlServer(point, d.graph.exposeOf(point), config.limits());
+                ControlServer server = new ControlServer(point, d.graph.exposeOf(point), config.limits(),
+                        d.blockBudget);
                 d.servers.put(point.name(), server);
+                try {
+                    server.bind();
+                } catch (IOException e) {
+                    throw new PortsUnavailableException(List.of(PortCheck.controlSocketError(config, point.methodId(), e)));
+                }
+            }
+            if (config.status().port() > 0) {
+                d.statusServer = new StatusServer(config.status(), config.limits(), d::status);
+                try {
+                    d.statusServer.bind();
+                } catch (IOException e) {
+                    throw new PortsUnavailableException(List.of(new ConfigError("$.status.port", e.getMessage())));
+                }
+            }
+            if (config.status().monitorPort() > 0) {
+                // The monitor binds and serves in one step: it starts last of the ports, before any control
+                // socket serves, so a monitor port taken meanwhile still leaves the control sockets unused.
+                try {
+                    d.monitor = Monitor.start(config.status().bind(), config.status().monitorPort(), d.liveView(),
+                            SvgWriter.write(GraphPicture.of(config, registry)));
+                } catch (IOException e) {
+                    throw new PortsUnavailableException(List.of(new ConfigError("$.status.monitorPort", e.getMessage())));
+                }
+            }
+            for (ControlServer server : d.servers.values()) {
                 server.start();
+            }
+            if (d.statusServer != null) {
+                d.statusServer.start();
             }
             if (withBridges) {
                 for (BridgeConfig bc : config.bridges()) {
@@ -108,14 +162,6 @@ public final class Daemon implements AutoCloseable {
                     d.bridges.put(bc.id(), bridge);
                     bridge.start(config.system(), d.graph.controlPoints(), Bridges.role(registry, bc));
                 }
-            }
-            if (config.status().port() > 0) {
-                d.statusServer = new StatusServer(config.status(), d::status);
-                d.statusServer.start();
-            }
-            if (config.status().monitorPort() > 0) {
-                d.monitor = Monitor.start(config.status().bind(), config.status().monitorPort(), d.liveView(),
-                        SvgWriter.write(GraphPicture.of(config, registry)));
             }
             d.graph.start();
         } catch (IOException | RuntimeException e) {
@@ -193,11 +239,19 @@ public final class Daemon implements AutoCloseable {
         ObjectNode st = graph.status();
         ArrayNode sockets = st.putArray("sockets");
         servers.values().forEach(s -> sockets.add(s.stats()));
+        st.putObject("blocks")
+                .put("bytesInFlight", blockBudget.reserved())
+                .put("budgetBytes", blockBudget.limitBytes());
         if (!bridges.isEmpty()) {
             ArrayNode bs = st.putArray("bridges");
             bridges.forEach((id, b) -> bs.add(b.status().put("id", id)));
         }
         return st;
+    }
+
+    /** Bytes the control sockets hold now for blocks still arriving (the daemon's own count). */
+    public long blockBytesInFlight() {
+        return blockBudget.reserved();
     }
 
     /** Stops the actuators first, then closes the sockets, then stops the graph. Safe to call twice. */

@@ -5,8 +5,9 @@ import org.habla.sample.PayloadKind;
 
 /**
  * A native-protocol driver for one robot: it describes the robot's channels and the TCP connections
- * that carry them. Everything about connecting — back-off, staleness, the motion watchdog — is the
- * engine's, written once.
+ * that carry them. Everything about connecting — back-off, telling a lost peer, staleness, the motion
+ * watchdog — is the engine's, written once; a driver only declares, per {@link Connection}, whether its peer
+ * keeps sending ({@link Liveness}).
  */
 public interface Driver {
 

@@ -9,8 +9,9 @@ import org.habla.sample.Payload;
 
 /**
  * The protocol spoken over one TCP connection to a robot, for the life of that connection.
- * The engine connects, reconnects with back-off, times out reads and serialises writes; the session
- * only turns bytes into readings and commands into bytes.
+ * The engine connects, reconnects with back-off, tells a lost peer (by the {@link Liveness} its
+ * {@link Connection} declares, and TCP keep-alive) and serialises writes; the session only turns bytes into
+ * readings and commands into bytes.
  *
  * <p>Threading: {@link #handshake} and {@link #readNext} run on the link's reader thread; the write
  * methods run under the link's write lock, from any thread. State shared between the two sides must
@@ -18,12 +19,21 @@ import org.habla.sample.Payload;
  */
 public interface LinkSession {
 
-    /** Runs the connection's opening exchange (e.g. SYNC0/1/2, OPEN, ENABLE). Reads time out. */
+    /**
+     * Runs the connection's opening exchange (e.g. SYNC0/1/2, OPEN, ENABLE). Reads time out after the
+     * interface's {@code connectTimeoutMs}. A session that
+     * carries a motion channel leaves the robot still: a robot that may remember the speeds of an earlier session
+     * and resume them is stopped before anything is enabled (the Pioneer's STOP right after OPEN, zeros to the
+     * Aibo's walk). A protocol whose robot stops by itself when the connection ends, as HABLA's interface
+     * protocol asks of its programs, needs nothing here.
+     */
     default void handshake(InputStream in, OutputStream out, ReadingSink sink) throws IOException {
     }
 
     /**
-     * Blocks for the next unit of input (a packet, a frame, a line), decodes it into {@code sink}.
+     * Blocks for the next unit of input (a packet, a frame, a line), decodes it into {@code sink}. On a periodic
+     * connection a read times out after its silence limit and the engine declares the peer lost; on a quiet one
+     * it waits as long as the peer is silent.
      * Input that cannot be decoded is reported through {@link ReadingSink#malformed} and skipped;
      * an {@link IOException} ends the connection (and the engine reconnects).
      */

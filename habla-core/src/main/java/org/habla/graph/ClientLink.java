@@ -29,6 +29,7 @@ final class ClientLink implements Link {
     private final ClientConnection connection;
     private final Reconnect reconnect;
     private final BackOff backOff;
+    private final OutageLog outages;
     private final ReadingSink sink;
     private final Runnable onStateChange;
     private final ReentrantLock writeLock = new ReentrantLock();
@@ -46,6 +47,7 @@ final class ClientLink implements Link {
         this.connection = connection;
         this.reconnect = reconnect;
         this.backOff = new BackOff(reconnect);
+        this.outages = new OutageLog(LOG, "link " + name);
         this.sink = sink;
         this.onStateChange = onStateChange;
     }
@@ -97,31 +99,30 @@ final class ClientLink implements Link {
         while (running) {
             ClientSession s = connection.sessions().get();
             session = s;
+            Exception failure;
             try {
                 s.open(sink, Duration.ofMillis(reconnect.connectTimeoutMs()));
                 connects.incrementAndGet();
                 lastError = "";
                 up = true;
                 backOff.reset();
-                LOG.info("link {} up", name);
+                outages.up();
                 onStateChange.run();
                 while (running) {
                     s.readNext(sink);
                 }
+                break;
             } catch (IOException | RuntimeException e) {
+                failure = e;
                 if (running) {
                     failures.incrementAndGet();
                     lastError = e.getMessage() == null ? e.toString() : e.getMessage();
-                    if (up || connects.get() == 0 && failures.get() == 1) {
-                        LOG.warn("link {} down: {}", name, lastError);
-                    } else {
-                        LOG.debug("link {} still down: {}", name, lastError);
-                    }
+                    outages.failed(lastError);
                 }
             } finally {
                 markDown(s);
             }
-            if (running && !backOff.pause(() -> running)) {
+            if (running && !backOff.pause(failure, () -> running)) {
                 running = false;
             }
         }

@@ -9,21 +9,25 @@ import java.io.InputStream;
 import java.io.OutputStream;
 import java.net.InetSocketAddress;
 import java.net.Socket;
+import java.net.SocketTimeoutException;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.ReentrantLock;
 import org.habla.config.Reconnect;
 import org.habla.driver.Connection;
 import org.habla.driver.LinkSession;
+import org.habla.driver.Liveness;
 import org.habla.driver.ReadingSink;
 import org.habla.sample.Payload;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Keeps one TCP connection of an interface alive: connects, runs the driver session's handshake,
- * reads until the connection fails, then waits (doubling up to a maximum) and connects again.
- * Writes come from any thread and are serialised; a write to a connection that is down is refused,
- * never queued, so a command is never applied late.
+ * Keeps one TCP connection of an interface alive: connects, runs the driver session's handshake, reads
+ * until the connection fails, then waits ({@link BackOff}) and connects again. The connection fails when the
+ * peer closes or resets it, when TCP keep-alive finds its host gone ({@link LinkSocket}), or — only if the
+ * driver declares the peer's stream periodic ({@link Liveness}) — after the stream's silence limit; a quiet
+ * peer may be silent for ever. Writes come from any thread and are serialised; a write to a connection that
+ * is down is refused, never queued, so a command is never applied late.
  */
 final class ConnectionLink implements Link {
 
@@ -34,6 +38,9 @@ final class ConnectionLink implements Link {
     private final Connection connection;
     private final Reconnect reconnect;
     private final BackOff backOff;
+    /** Silence after which the peer is lost; 0 for a quiet peer (only TCP tells). */
+    private final long silenceLimitMs;
+    private final OutageLog outages;
     private final ReadingSink sink;
     private final Runnable onStateChange;
     private final ReentrantLock writeLock = new ReentrantLock();
@@ -42,6 +49,7 @@ final class ConnectionLink implements Link {
     private volatile boolean running;
     private volatile boolean up;
     private volatile String lastError = "";
+    private volatile double lastConnectMs = -1;
     private volatile Socket socket;
     private volatile LinkSession session;
     private volatile OutputStream out;
@@ -55,6 +63,9 @@ final class ConnectionLink implements Link {
         this.connection = connection;
         this.reconnect = reconnect;
         this.backOff = new BackOff(reconnect);
+        this.silenceLimitMs = connection.liveness() instanceof Liveness.Periodic p
+                ? (reconnect.readTimeoutMs() > 0 ? reconnect.readTimeoutMs() : p.lostAfter().toMillis()) : 0;
+        this.outages = new OutageLog(LOG, "link " + name + " (" + host + ":" + connection.port() + ")");
         this.sink = sink;
         this.onStateChange = onStateChange;
     }
@@ -62,6 +73,11 @@ final class ConnectionLink implements Link {
     @Override
     public String connectionName() {
         return connection.name();
+    }
+
+    @Override
+    public boolean optional() {
+        return connection.optional();
     }
 
     @Override
@@ -98,37 +114,37 @@ final class ConnectionLink implements Link {
         }
     }
 
+    /** The wait chooser of this link (tests and benchmarks observe the waits it chooses). */
+    BackOff backOff() {
+        return backOff;
+    }
+
     private void loop() {
         while (running) {
+            Exception failure;
             try {
                 runOnce();
-                backOff.reset();
+                break;
             } catch (IOException | RuntimeException e) {
-                if (!running) {
-                    break;
-                }
-                failures.incrementAndGet();
-                lastError = e.getMessage() == null ? e.toString() : e.getMessage();
-                if (connects.get() == 0 || up) {
-                    LOG.warn("link {} ({}:{}) down: {}", name, host, connection.port(), lastError);
-                } else {
-                    LOG.debug("link {} still down: {}", name, lastError);
+                failure = e;
+                if (running) {
+                    failures.incrementAndGet();
+                    lastError = e.getMessage() == null ? e.toString() : e.getMessage();
+                    outages.failed(lastError);
                 }
             } finally {
                 markDown();
             }
-            if (running) {
-                if (!backOff.pause(() -> running)) {
-                    running = false;
-                }
+            if (running && !backOff.pause(failure, () -> running)) {
+                running = false;
             }
         }
     }
 
     private void runOnce() throws IOException {
-        Socket s = new Socket();
+        Socket s = LinkSocket.create(reconnect.tcpKeepAlive());
         socket = s;
-        s.setTcpNoDelay(true);
+        long started = System.nanoTime();
         s.connect(new InetSocketAddress(host, connection.port()), (int) reconnect.connectTimeoutMs());
         s.setSoTimeout((int) reconnect.connectTimeoutMs());
         InputStream in = new BufferedInputStream(s.getInputStream());
@@ -136,17 +152,23 @@ final class ConnectionLink implements Link {
         LinkSession sess = connection.sessions().get();
         sess.handshake(in, o, sink);
         o.flush();
-        s.setSoTimeout((int) reconnect.readTimeoutMs());
+        s.setSoTimeout((int) silenceLimitMs);
         session = sess;
         out = o;
         connects.incrementAndGet();
+        lastConnectMs = (System.nanoTime() - started) / 1e6;
         up = true;
         lastError = "";
-        LOG.info("link {} up ({}:{})", name, host, connection.port());
+        backOff.reset();
+        outages.up();
         onStateChange.run();
         sess.keepAlivePeriod().ifPresent(p -> keepAlive = startKeepAlive(sess, p.toMillis()));
         while (running) {
-            sess.readNext(in, sink);
+            try {
+                sess.readNext(in, sink);
+            } catch (SocketTimeoutException e) {
+                throw new IOException("nothing came for " + silenceLimitMs + " ms from a peer that keeps sending: lost");
+            }
         }
     }
 
@@ -244,8 +266,16 @@ final class ConnectionLink implements Link {
         n.put("name", connection.name());
         n.put("port", connection.port());
         n.put("up", up);
+        n.put("liveness", silenceLimitMs > 0 ? "lost after " + silenceLimitMs + " ms of silence"
+                : "quiet: silence is normal; TCP keep-alive");
+        if (connection.optional()) {
+            n.put("optional", true);
+        }
         n.put("connects", connects.get());
         n.put("failures", failures.get());
+        if (lastConnectMs >= 0) {
+            n.put("lastConnectMs", Math.round(lastConnectMs * 10) / 10.0);
+        }
         if (!lastError.isEmpty()) {
             n.put("lastError", lastError);
         }

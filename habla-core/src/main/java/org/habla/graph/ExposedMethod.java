@@ -7,10 +7,12 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import org.habla.config.Expose;
+import org.habla.method.ControlNotice;
 import org.habla.method.Input;
 import org.habla.method.Layer;
 import org.habla.method.MethodState;
 import org.habla.method.Output;
+import org.habla.net.ControlLease;
 import org.habla.net.ControlPoint;
 import org.habla.sample.Payload;
 import org.habla.sample.Sample;
@@ -25,10 +27,16 @@ final class ExposedMethod implements ControlPoint {
     private final GraphTap tap;
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     private final Map<String, Long> controlSequences = new HashMap<>();
+    private final boolean actuating;
+    private final ControlLease lease;
 
+    /** @param actuating whether values written here can reach a command channel */
     ExposedMethod(MethodRunner runner, Expose expose, List<Input<?>> controlInputs, MotionWatchdog watchdog,
-            GraphTap tap) {
+            GraphTap tap, boolean actuating) {
         this.runner = runner;
+        this.actuating = actuating && !controlInputs.isEmpty();
+        this.lease = this.actuating ? new ControlLease(expose.name(), watchdog.timeoutMillis(), runner::nowMicros,
+                this::writerLeft, line -> listeners.forEach(l -> l.onControl(line))) : null;
         this.expose = expose;
         this.controlInputs = List.copyOf(controlInputs);
         this.watchdog = watchdog;
@@ -73,6 +81,11 @@ final class ExposedMethod implements ControlPoint {
     }
 
     @Override
+    public Optional<ControlLease> lease() {
+        return Optional.ofNullable(lease);
+    }
+
+    @Override
     public Map<String, Sample> latest() {
         Map<String, Sample> m = new HashMap<>();
         for (Output<?> out : runner.method().outputs()) {
@@ -87,6 +100,13 @@ final class ExposedMethod implements ControlPoint {
     @Override
     public boolean stale() {
         return runner.stale();
+    }
+
+    /** Tells every client what a method its values reach has to say about them. */
+    void notice(ControlNotice notice) {
+        for (Listener l : listeners) {
+            l.onNotice(notice);
+        }
     }
 
     /** Tells every client that staleness changed. */
@@ -124,7 +144,9 @@ final class ExposedMethod implements ControlPoint {
         synchronized (controlSequences) {
             seq = controlSequences.merge(input.name(), 1L, Long::sum);
         }
-        watchdog.controlWrite();
+        if (actuating) {
+            watchdog.controlWrite();
+        }
         Sample sample = new Sample(value, "control:" + expose.name(), seq, runner.nowMicros(), false);
         tap.control(expose.name(), input.name(), sample);
         if (!runner.slot(input).offer(sample)) {
@@ -135,8 +157,10 @@ final class ExposedMethod implements ControlPoint {
 
     @Override
     public void writerLeft() {
-        tap.writerLeft(expose.name());
-        watchdog.writerLeft();
+        if (actuating) {
+            tap.writerLeft(expose.name());
+            watchdog.writerLeft();
+        }
     }
 
     static List<Input<?>> controlInputsOf(MethodRunner runner, Map<String, ?> controlSources) {

@@ -20,6 +20,7 @@ final class InputSlot {
     }
 
     private final Input<?> input;
+    private final Delivery delivery;
     private final AtomicReference<Arrival> latest;
     private final ArrayBlockingQueue<Arrival> queue;
     private final AtomicLong offered = new AtomicLong();
@@ -30,20 +31,31 @@ final class InputSlot {
     private volatile long consumedThrough;
 
     InputSlot(Input<?> input, Runnable wake, WorkCount work) {
+        this(input, input.delivery(), wake, work);
+    }
+
+    /** A slot that delivers as {@code delivery}, which may differ from the input's own (a declared cycle's wire). */
+    InputSlot(Input<?> input, Delivery delivery, Runnable wake, WorkCount work) {
         this.input = input;
+        this.delivery = delivery;
         this.wake = wake;
         this.work = work;
-        if (input.delivery().mode() == Delivery.Mode.LATEST) {
+        if (delivery.mode() == Delivery.Mode.LATEST) {
             latest = new AtomicReference<>();
             queue = null;
         } else {
             latest = null;
-            queue = new ArrayBlockingQueue<>(input.delivery().capacity());
+            queue = new ArrayBlockingQueue<>(delivery.capacity());
         }
     }
 
     Input<?> input() {
         return input;
+    }
+
+    /** How this slot delivers. */
+    Delivery delivery() {
+        return delivery;
     }
 
     /** Hands a sample to the method; false if a full queue dropped it. */

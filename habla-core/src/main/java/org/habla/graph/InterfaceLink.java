@@ -5,20 +5,23 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
-import java.util.function.Consumer;
 import org.habla.config.InterfaceConfig;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.driver.ClientConnection;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.ReadingSink;
+import org.habla.sample.NumberValue;
 import org.habla.sample.Payload;
 import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
+import org.habla.sample.VectorValue;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -27,6 +30,11 @@ import org.slf4j.LoggerFactory;
  * channel (plus the engine's {@code link} channel), and the routing of commands to the connection
  * that carries them. Motion commands are dropped — never delayed — while their connection is down
  * or the motion watchdog has tripped.
+ *
+ * <p>A watchdog trip leaves a stop <em>owed</em> on every connection that carries a motion channel. It is
+ * paid at once from a thread of its own and, at the latest, just before the next motion command on that
+ * connection, under one lock: a new motion never reaches the robot ahead of the stop, and a stop that could
+ * not be written while the connection was down is written before the first motion after it comes back.
  */
 final class InterfaceLink {
 
@@ -40,13 +48,16 @@ final class InterfaceLink {
     private final Map<String, String> unavailable = new java.util.concurrent.ConcurrentHashMap<>();
     private final Map<String, Link> commandRoutes = new HashMap<>();
     private final List<Link> connections = new ArrayList<>();
-    private final List<Consumer<Boolean>> stateListeners = new ArrayList<>();
+    private final LinkStates states;
     private final boolean replayed;
     private final Sink sink = new Sink();
     private final LongAdder malformed = new LongAdder();
     private final LongAdder unknownChannel = new LongAdder();
     private final LongAdder commandsSent = new LongAdder();
     private final AtomicLong commandsDropped = new AtomicLong();
+    private final AtomicLong droppedMoves = new AtomicLong();
+    private final Object motionLock = new Object();
+    private final Set<Link> stopsOwed = new HashSet<>();
     private volatile ObjectNode robotInfo = JsonNodeFactory.instance.objectNode();
     private volatile MotionWatchdog watchdog;
     private volatile boolean up;
@@ -59,8 +70,10 @@ final class InterfaceLink {
      *                 only a description of the channels, readings and link changes are pushed in, and commands
      *                 are absorbed (counted and tapped as sent) instead of written
      */
-    InterfaceLink(InterfaceConfig config, Driver driver, EngineClock clock, GraphTap tap, boolean replayed) {
+    InterfaceLink(InterfaceConfig config, Driver driver, EngineClock clock, GraphTap tap, boolean replayed,
+            LinkStates states) {
         this.replayed = replayed;
+        this.states = states;
         this.config = config;
         this.clock = clock;
         this.tap = tap;
@@ -108,12 +121,13 @@ final class InterfaceLink {
         return readings.get(channel);
     }
 
-    void watchdog(MotionWatchdog w) {
-        this.watchdog = w;
+    /** The links of the driver's connections, in the driver's order. */
+    List<Link> connections() {
+        return List.copyOf(connections);
     }
 
-    void onStateChange(Consumer<Boolean> listener) {
-        stateListeners.add(listener);
+    void watchdog(MotionWatchdog w) {
+        this.watchdog = w;
     }
 
     boolean up() {
@@ -125,8 +139,8 @@ final class InterfaceLink {
         for (Link c : connections) {
             c.start();
         }
-        linkTicker = clock.every(1_000_000, this::publishLink);
-        publishLink();
+        linkTicker = clock.every(1_000_000, () -> states.locked(this::publishLink));
+        states.locked(this::publishLink);
     }
 
     void stop() {
@@ -147,32 +161,53 @@ final class InterfaceLink {
         ChannelDescriptor d = channels.get(channel);
         Link link = commandRoutes.get(channel);
         if (d == null || (link == null && !replayed)) {
-            drop(channel, "no connection carries it");
-            return;
-        }
-        MotionWatchdog w = watchdog;
-        if (d.motion() && w != null && !w.allowsMotion()) {
-            tap.command(config.id(), channel, sample, false);
-            drop(channel, "the motion watchdog has stopped the robot");
+            drop(channel, sample, "no connection carries it");
             return;
         }
         if (replayed) {
-            if (!up) {
-                tap.command(config.id(), channel, sample, false);
-                drop(channel, "link " + config.id() + " is down in the recording");
-                return;
+            if (d.motion() && !motionAllowed()) {
+                refuse(channel, sample, "the motion watchdog has stopped the robot");
+            } else if (!up) {
+                refuse(channel, sample, "link " + config.id() + " is down in the recording");
+            } else {
+                tap.command(config.id(), channel, sample, true);
+                commandsSent.increment();
             }
-            tap.command(config.id(), channel, sample, true);
-            commandsSent.increment();
             return;
         }
+        if (d.motion()) {
+            // Under the motion lock: a trip either comes before the check (and the command is dropped) or
+            // after the write (and its stop follows the command).
+            synchronized (motionLock) {
+                if (!motionAllowed()) {
+                    refuse(channel, sample, "the motion watchdog has stopped the robot");
+                    return;
+                }
+                payOwedStop(link);
+                send(channel, sample, link);
+            }
+        } else {
+            send(channel, sample, link);
+        }
+    }
+
+    private boolean motionAllowed() {
+        MotionWatchdog w = watchdog;
+        return w == null || w.allowsMotion();
+    }
+
+    private void send(String channel, Sample sample, Link link) {
         if (!link.command(channel, sample.payload())) {
-            tap.command(config.id(), channel, sample, false);
-            drop(channel, "link " + config.id() + "/" + link.connectionName() + " is down");
+            refuse(channel, sample, "link " + config.id() + "/" + link.connectionName() + " is down");
             return;
         }
         tap.command(config.id(), channel, sample, true);
         commandsSent.increment();
+    }
+
+    private void refuse(String channel, Sample sample, String why) {
+        tap.command(config.id(), channel, sample, false);
+        drop(channel, sample, why);
     }
 
     /** A recorded reading, replayed: published exactly as the driver's session (or the link heartbeat) did. */
@@ -186,74 +221,150 @@ final class InterfaceLink {
 
     /** A recorded link change, replayed. */
     void replayLink(boolean isUp) {
-        if (isUp != up) {
-            up = isUp;
-            sinceMicros = clock.nowMicros();
-            tap.link(config.id(), isUp, clock.nowMicros());
-            for (Consumer<Boolean> l : stateListeners) {
-                l.accept(isUp);
+        states.locked(() -> {
+            if (isUp != up) {
+                up = isUp;
+                sinceMicros = clock.nowMicros();
+                tap.link(config.id(), isUp, clock.nowMicros());
+                states.refreshStaleness();
+            }
+        });
+    }
+
+    /** Owes a stop on every connection that carries a motion channel (see the class comment). */
+    void oweStop() {
+        synchronized (motionLock) {
+            for (Link link : connections) {
+                if (carriesMotion(link)) {
+                    stopsOwed.add(link);
+                }
             }
         }
     }
 
-    /** Writes the stop of every connection that carries a motion channel, each from a thread of its own. */
+    /** Pays the owed stops now, each connection from a thread of its own. */
     void stopMotion() {
         for (Link link : connections) {
-            boolean carriesMotion = link.commandChannels().stream()
-                    .map(channels::get).anyMatch(c -> c != null && c.motion());
-            if (carriesMotion) {
-                Thread.ofVirtual().name("habla-stop-" + config.id()).start(link::stopMotion);
+            if (carriesMotion(link)) {
+                Thread.ofVirtual().name("habla-stop-" + config.id()).start(() -> {
+                    synchronized (motionLock) {
+                        payOwedStop(link);
+                    }
+                });
             }
         }
+    }
+
+    /** Writes the stop owed on {@code link}, if any; it stays owed while the connection is down. */
+    private void payOwedStop(Link link) {
+        if (stopsOwed.contains(link) && link.stopMotion()) {
+            stopsOwed.remove(link);
+        }
+    }
+
+    private boolean carriesMotion(Link link) {
+        return link.commandChannels().stream().map(channels::get).anyMatch(c -> c != null && c.motion());
     }
 
     /** Stops motion and waits briefly for the stop to be written (shutdown). */
     void stopMotionNow() {
         for (Link link : connections) {
-            if (link.commandChannels().stream().map(channels::get).anyMatch(c -> c != null && c.motion())) {
-                link.stopMotion();
+            if (carriesMotion(link)) {
+                synchronized (motionLock) {
+                    if (link.stopMotion()) {
+                        stopsOwed.remove(link);
+                    }
+                }
             }
         }
     }
 
-    private void drop(String channel, String why) {
+    /**
+     * Counts a dropped command and warns on the first and every 100th that mattered. A command to stand still on a
+     * motion channel is dropped quietly (at DEBUG): the robot is stopped or its link is down, so nothing was lost.
+     */
+    private void drop(String channel, Sample sample, String why) {
         long n = commandsDropped.incrementAndGet();
-        if (n == 1 || n % 100 == 0) {
+        ChannelDescriptor d = channels.get(channel);
+        if (d != null && d.motion() && standsStill(sample.payload())) {
+            LOG.debug("interface {}: a stand-still command on {} dropped: {}", config.id(), channel, why);
+            return;
+        }
+        long loud = droppedMoves.incrementAndGet();
+        if (loud == 1 || loud % 100 == 0) {
             LOG.warn("interface {}: command on {} dropped ({} dropped so far): {}", config.id(), channel, n, why);
         }
     }
 
-    private void connectionChanged() {
-        boolean all = connections.stream().allMatch(Link::up);
-        if (all && !up) {
-            // A fresh session tells its devices' availability again.
-            unavailable.clear();
+    /** Whether a motion command asks for no motion at all: every speed zero. */
+    static boolean standsStill(Payload command) {
+        if (command instanceof NumberValue n) {
+            return n.value() == 0;
         }
-        if (all != up) {
-            up = all;
-            sinceMicros = clock.nowMicros();
-            tap.link(config.id(), all, clock.nowMicros());
-            publishLink();
-            for (Consumer<Boolean> l : stateListeners) {
-                l.accept(all);
+        if (command instanceof VectorValue v) {
+            for (double x : v.toArray()) {
+                if (x != 0) {
+                    return false;
+                }
             }
+            return true;
         }
+        return false;
     }
 
+    /**
+     * Whether the interface is up: every connection it needs is (a driver's optional connections, such as a menu
+     * server, do not count unless all of its connections are optional).
+     */
+    private boolean requiredUp() {
+        List<Link> required = connections.stream().filter(c -> !c.optional()).toList();
+        return (required.isEmpty() ? connections : required).stream().allMatch(Link::up);
+    }
+
+    /**
+     * A connection went up or down: the interface is up when every connection it needs is. The staleness of what
+     * depends on it changes first, then the link record goes out, so the record arrives with the stale flag of
+     * the state it tells of.
+     */
+    private void connectionChanged() {
+        states.locked(() -> {
+            boolean all = requiredUp();
+            if (all && !up) {
+                // A fresh session tells its devices' availability again.
+                unavailable.clear();
+            }
+            if (all != up) {
+                up = all;
+                sinceMicros = clock.nowMicros();
+                tap.link(config.id(), all, clock.nowMicros());
+                states.refreshStaleness();
+                publishLink();
+            } else if (connections.size() > 1) {
+                // The interface stays up (or down), but the record says which connections are: tell it now.
+                publishLink();
+            }
+        });
+    }
+
+    /** Publishes the link record; under the link-state lock, so it never overtakes a change. */
     private void publishLink() {
         if (replayed) {
             // A replay publishes the link records of the recording instead, as they were.
             return;
         }
         StringBuilder detail = new StringBuilder();
+        ObjectNode each = JsonNodeFactory.instance.objectNode();
         for (Link c : connections) {
+            each.put(c.connectionName(), c.up());
             if (!c.up()) {
-                detail.append(detail.length() == 0 ? "" : "; ").append(c.connectionName()).append(" down")
+                detail.append(detail.length() == 0 ? "" : "; ").append(c.connectionName())
+                        .append(c.optional() ? " (optional)" : "").append(" down")
                         .append(c.lastError().isEmpty() ? "" : ": " + c.lastError());
             }
         }
         RecordValue value = RecordValue.builder().put("up", up).put("interface", config.id())
-                .put("detail", detail.length() == 0 ? "all connections up" : detail.toString()).build();
+                .put("detail", detail.length() == 0 ? "all connections up" : detail.toString())
+                .set("connections", each).build();
         readings.get(Driver.LINK_CHANNEL.name()).publish(value, clock.nowMicros(), false,
                 s -> tap.reading(config.id(), Driver.LINK_CHANNEL.name(), s));
     }
@@ -323,15 +434,15 @@ final class InterfaceLink {
                 unknownChannel.increment();
                 return;
             }
-            String before = available ? unavailable.remove(channel) : unavailable.put(channel, why);
-            if ((before == null) == available) {
-                return;
-            }
-            LOG.info("interface {}: the device of channel {} is {} ({})", config.id(), channel,
-                    available ? "available again" : "unavailable", why);
-            for (Consumer<Boolean> l : stateListeners) {
-                l.accept(up);
-            }
+            // The device's state and the staleness it causes change as one step, like a link's.
+            states.locked(() -> {
+                String before = available ? unavailable.remove(channel) : unavailable.put(channel, why);
+                if ((before == null) != available) {
+                    LOG.info("interface {}: the device of channel {} is {} ({})", config.id(), channel,
+                            available ? "available again" : "unavailable", why);
+                    states.refreshStaleness();
+                }
+            });
         }
 
         @Override

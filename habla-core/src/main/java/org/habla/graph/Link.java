@@ -19,6 +19,11 @@ interface Link {
 
     boolean up();
 
+    /** Whether the interface is up without this connection (the driver marked it optional). */
+    default boolean optional() {
+        return false;
+    }
+
     /** Why the last attempt or session failed; empty when none did. */
     String lastError();
 

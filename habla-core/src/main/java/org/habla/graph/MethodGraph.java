@@ -55,7 +55,7 @@ public final class MethodGraph implements AutoCloseable {
     private final Map<String, Set<Source.Channel>> upstreamChannels = new HashMap<>();
     private final Map<String, RemotePlacement> placements = new LinkedHashMap<>();
     private final Map<String, Set<String>> upstreamPlacements = new HashMap<>();
-    private final Object staleLock = new Object();
+    private final LinkStates linkStates = new LinkStates();
     private final List<ExposedMethod> exposed = new ArrayList<>();
     private final MotionWatchdog watchdog;
     private final long startedMicros;
@@ -83,19 +83,18 @@ public final class MethodGraph implements AutoCloseable {
         for (InterfaceConfig ic : config.interfaces()) {
             org.habla.driver.Driver driver = replayed ? new RecordedDriver(recordedChannels.getOrDefault(ic.id(), List.of()))
                     : createDriver(registry, ic);
-            links.put(ic.id(), new InterfaceLink(ic, driver, clock, tap, replayed));
+            links.put(ic.id(), new InterfaceLink(ic, driver, clock, tap, replayed, linkStates));
         }
         this.watchdog = new MotionWatchdog(config.safety().watchdogMs(), clock, List.copyOf(links.values()));
         links.values().forEach(l -> l.watchdog(watchdog));
         for (MethodConfig mc : config.methods()) {
             runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc), clock, backgroundPool,
-                    work, tap));
+                    work, tap, config.cycleInputs(mc.id())));
         }
         for (MethodConfig mc : config.methods()) {
             if (mc.host().isPresent()) {
                 MethodRunner runner = runners.get(mc.id());
-                RemotePlacement p = new RemotePlacement(mc, runner, config.limits(), Reconnect.DEFAULTS,
-                        () -> refreshStale("worker " + mc.host().get() + " of method " + mc.id()));
+                RemotePlacement p = new RemotePlacement(mc, runner, config.limits(), Reconnect.DEFAULTS, linkStates);
                 runner.placeOn(p);
                 placements.put(mc.id(), p);
             }
@@ -103,14 +102,16 @@ public final class MethodGraph implements AutoCloseable {
         for (MethodConfig mc : config.methods()) {
             wire(mc);
         }
+        routeNotices();
+        for (String id : motionPath()) {
+            runners.get(id).followMotionResets(watchdog::resets);
+        }
         for (MethodConfig mc : config.methods()) {
             upstreamInterfaces.put(mc.id(), upstream(mc.id(), new LinkedHashSet<>()));
             upstreamChannels.put(mc.id(), upstreamChannels(mc.id(), new LinkedHashSet<>()));
             upstreamPlacements.put(mc.id(), upstreamPlacements(mc.id(), new LinkedHashSet<>()));
         }
-        for (InterfaceLink link : links.values()) {
-            link.onStateChange(up -> refreshStale("interface " + link.id()));
-        }
+        linkStates.onChange(this::refreshStale);
     }
 
     /** Builds the graph of a checked config. Nothing runs until {@link #start()}. */
@@ -187,6 +188,12 @@ public final class MethodGraph implements AutoCloseable {
             }
         }
         return false;
+    }
+
+    /** Whether the method, or one its outputs feed, writes an interface's command channel. */
+    private boolean actuates(String methodId) {
+        return downstream(methodId, new LinkedHashSet<>()).stream()
+                .anyMatch(id -> !config.method(id).orElseThrow().commands().isEmpty());
     }
 
     /** The method and every method its outputs feed, directly or not. */
@@ -280,7 +287,7 @@ public final class MethodGraph implements AutoCloseable {
             runner.port(out).subscribe(sample -> link.command(channel, sample));
         }
         mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner,
-                x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap)));
+                x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap, actuates(mc.id()))));
     }
 
     private Set<String> upstream(String methodId, Set<String> visited) {
@@ -297,6 +304,47 @@ public final class MethodGraph implements AutoCloseable {
             }
         }
         return result;
+    }
+
+    /** Sends what each method tells control clients to the sockets whose values reach it. */
+    private void routeNotices() {
+        for (MethodRunner r : runners.values()) {
+            List<ExposedMethod> told = exposed.stream().filter(x -> !x.controlInputs().isEmpty()
+                    && downstream(x.methodId(), new LinkedHashSet<>()).contains(r.id())).toList();
+            if (!told.isEmpty()) {
+                r.tellControlVia(notice -> told.forEach(x -> x.notice(notice)));
+            }
+        }
+    }
+
+    /**
+     * The methods whose outputs lead, through other methods or directly, to a motion command channel: the ones
+     * that must forget their motion when the watchdog stops the robot.
+     */
+    private Set<String> motionPath() {
+        Set<String> found = new LinkedHashSet<>();
+        for (MethodConfig mc : config.methods()) {
+            boolean drives = mc.commands().values().stream().anyMatch(ref -> {
+                ChannelDescriptor d = links.get(ref.interfaceId()).channel(ref.channel());
+                return d != null && d.motion();
+            });
+            if (drives) {
+                feeding(mc.id(), found);
+            }
+        }
+        return found;
+    }
+
+    /** Adds the method and every method whose outputs feed it, directly or not. */
+    private void feeding(String methodId, Set<String> found) {
+        if (!found.add(methodId)) {
+            return;
+        }
+        for (Source s : config.method(methodId).orElseThrow().inputs().values()) {
+            if (s instanceof Source.MethodOutput mo) {
+                feeding(mo.methodId(), found);
+            }
+        }
     }
 
     /** The interface channels whose readings reach {@code methodId}. */
@@ -334,15 +382,10 @@ public final class MethodGraph implements AutoCloseable {
 
     /**
      * Marks stale every method that depends on an interface that is down or on a worker that is lost
-     * without a local fallback, and fresh again the others; {@code changed} names what just changed.
+     * without a local fallback, and fresh again the others. Runs under the link-state lock, as part of the
+     * change that caused it.
      */
-    private void refreshStale(String changed) {
-        synchronized (staleLock) {
-            refreshStaleLocked(changed);
-        }
-    }
-
-    private void refreshStaleLocked(String changed) {
+    private void refreshStale() {
         for (MethodRunner r : runners.values()) {
             String why = staleness(r.id());
             boolean stale = why != null;
@@ -400,6 +443,21 @@ public final class MethodGraph implements AutoCloseable {
                 links.size(), exposed.size());
     }
 
+    /** An interface of the graph (for tests and benchmarks in this package). */
+    InterfaceLink interfaceLink(String interfaceId) {
+        return links.get(interfaceId);
+    }
+
+    /** The method object of a method (for tests in this package). */
+    Method method(String methodId) {
+        return runners.get(methodId).method();
+    }
+
+    /** The worker link of a placed method (for tests and benchmarks in this package). */
+    RemotePlacement placement(String methodId) {
+        return placements.get(methodId);
+    }
+
     /** The exposed methods, in config order, each with its socket settings. */
     public List<ControlPoint> controlPoints() {
         return List.copyOf(exposed);
@@ -443,8 +501,12 @@ public final class MethodGraph implements AutoCloseable {
         watchdog.trip(reason);
     }
 
-    /** A snapshot for the status endpoint. */
+    /** A snapshot for the status endpoint: link states and staleness as one consistent moment. */
     public ObjectNode status() {
+        return linkStates.read(this::statusNow);
+    }
+
+    private ObjectNode statusNow() {
         long now = clock.nowMicros();
         ObjectNode n = JsonNodeFactory.instance.objectNode();
         n.put("system", config.system());

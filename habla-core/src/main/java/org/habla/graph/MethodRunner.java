@@ -15,7 +15,10 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
+import java.util.function.LongSupplier;
 import org.habla.driver.ChannelDescriptor;
+import org.habla.method.ControlNotice;
+import org.habla.method.Delivery;
 import org.habla.method.Input;
 import org.habla.method.Method;
 import org.habla.method.MethodContext;
@@ -58,6 +61,9 @@ final class MethodRunner implements MethodContext {
     private Thread thread;
     private RemotePlacement placement;
     private volatile boolean localStarted;
+    private volatile Consumer<ControlNotice> controlNotices = n -> { };
+    private LongSupplier motionResets;
+    private long motionResetsSeen;
 
     static final String TICK_PREFIX = "tick:";
 
@@ -66,6 +72,15 @@ final class MethodRunner implements MethodContext {
 
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
             WorkCount work, GraphTap tap) {
+        this(id, type, method, clock, backgroundPool, work, tap, java.util.Set.of());
+    }
+
+    /**
+     * A runner whose inputs named in {@code latestInputs} (the wires of a declared cycle) hold only the newest
+     * sample, whatever delivery the method type asks for.
+     */
+    MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
+            WorkCount work, GraphTap tap, java.util.Set<String> latestInputs) {
         this.work = work;
         this.tap = tap;
         this.id = id;
@@ -74,7 +89,8 @@ final class MethodRunner implements MethodContext {
         this.clock = clock;
         this.backgroundPool = backgroundPool;
         for (Input<?> in : method.inputs()) {
-            InputSlot slot = new InputSlot(in, this::wake, work);
+            InputSlot slot = new InputSlot(in, latestInputs.contains(in.name()) ? Delivery.latest() : in.delivery(),
+                    this::wake, work);
             slots.add(slot);
             slotByInput.put(in, slot);
         }
@@ -132,6 +148,16 @@ final class MethodRunner implements MethodContext {
 
     boolean stale() {
         return stale;
+    }
+
+    /**
+     * Makes the method hear of motion resets ({@link MotionWatchdog}): before it handles anything that comes
+     * after one, it is told the robot was stopped. For methods whose outputs lead to a motion channel; call
+     * before {@link #start}.
+     */
+    void followMotionResets(LongSupplier resets) {
+        this.motionResets = resets;
+        this.motionResetsSeen = resets.getAsLong();
     }
 
     /**
@@ -279,6 +305,7 @@ final class MethodRunner implements MethodContext {
             Sample s = slot.poll();
             if (s != null) {
                 worked = true;
+                catchUpMotionReset();
                 long now = clock.nowMicros();
                 latency.record(now - s.sourceMicros());
                 handled.mark(now);
@@ -295,6 +322,7 @@ final class MethodRunner implements MethodContext {
                 break;
             }
             worked = true;
+            catchUpMotionReset();
             try {
                 turn.run();
             } finally {
@@ -302,6 +330,24 @@ final class MethodRunner implements MethodContext {
             }
         }
         return worked;
+    }
+
+    /**
+     * Tells the method of a motion reset it has not heard of yet. Read after the message was taken, so a message
+     * that came after a reset (a value written once control is back) always finds the reset told first.
+     */
+    private void catchUpMotionReset() {
+        LongSupplier resets = motionResets;
+        if (resets == null) {
+            return;
+        }
+        long now = resets.getAsLong();
+        if (now != motionResetsSeen) {
+            motionResetsSeen = now;
+            if (placement == null || localStarted) {
+                method.motionStopped();
+            }
+        }
     }
 
     /** Hands a sample to the worker while it is up, else to the local method if it runs, else drops it. */
@@ -337,6 +383,16 @@ final class MethodRunner implements MethodContext {
             throw new IllegalArgumentException(output + " of " + id + " cannot carry " + value.kind().wireName());
         }
         ports.get(output).publish(value, sourceMicros, stale);
+    }
+
+    /** Where the method's notices to control clients go (the exposed methods whose values reach it). */
+    void tellControlVia(Consumer<ControlNotice> sink) {
+        controlNotices = sink;
+    }
+
+    @Override
+    public void tellControl(ControlNotice notice) {
+        controlNotices.accept(notice);
     }
 
     @Override
@@ -405,7 +461,7 @@ final class MethodRunner implements MethodContext {
         ObjectNode inputs = n.putObject("inputs");
         for (InputSlot slot : slots) {
             ObjectNode i = inputs.putObject(slot.input().name());
-            i.put("delivery", slot.input().delivery().mode().name().toLowerCase(java.util.Locale.ROOT));
+            i.put("delivery", slot.delivery().mode().name().toLowerCase(java.util.Locale.ROOT));
             i.put("depth", slot.depth());
             i.put("offered", slot.offered());
             i.put("dropped", slot.dropped());

@@ -7,8 +7,8 @@ import org.slf4j.LoggerFactory;
 
 /**
  * Stops the robot when its control architecture goes quiet or away. Armed by the first value a
- * control client writes; trips when no value has come for the timeout, or at once when a client
- * that wrote values disconnects. A trip sends every link's stop and then drops motion commands
+ * control client writes to an actuating socket; trips when no value has come for the timeout, or at once
+ * when the client commanding such a socket disconnects or releases control. A trip sends every link's stop and then drops motion commands
  * until a control client writes again, so nothing queued before the trip moves the robot later.
  */
 final class MotionWatchdog {
@@ -19,6 +19,7 @@ final class MotionWatchdog {
     private final EngineClock clock;
     private final List<InterfaceLink> links;
     private final AtomicLong trips = new AtomicLong();
+    private final AtomicLong resets = new AtomicLong();
     private volatile long lastWriteMicros;
     private volatile boolean armed;
     private volatile boolean tripped;
@@ -31,39 +32,49 @@ final class MotionWatchdog {
     }
 
     /** A control client wrote a value: motion is allowed again and the silence timer restarts. */
-    void controlWrite() {
+    synchronized void controlWrite() {
         lastWriteMicros = clock.nowMicros();
         armed = true;
         if (tripped) {
+            resets.incrementAndGet();
             tripped = false;
             LOG.info("motion watchdog: control is back, motion commands flow again");
         }
     }
 
     /** Called periodically by the engine. */
-    void check() {
+    synchronized void check() {
         if (armed && timeoutMicros > 0 && clock.nowMicros() - lastWriteMicros > timeoutMicros) {
             trip("no control value for " + timeoutMicros / 1_000 + " ms");
         }
     }
 
-    /** A control client that had written values disconnected. */
-    void writerLeft() {
+    /** The client commanding an actuating socket disconnected or gave control back. */
+    synchronized void writerLeft() {
         if (armed) {
-            trip("a control client that drove the robot disconnected");
+            trip("the control client commanding the robot left or released control");
         }
     }
 
     /** Stops every motion now (also used at shutdown). */
-    void trip(String reason) {
+    synchronized void trip(String reason) {
         armed = false;
+        for (InterfaceLink link : links) {
+            link.oweStop(); // before anything can see the trip: no motion may pass ahead of the stop
+        }
         tripped = true;
+        resets.incrementAndGet();
         lastReason = reason;
         trips.incrementAndGet();
         LOG.warn("motion watchdog: stopping the robot: {}", reason);
         for (InterfaceLink link : links) {
             link.stopMotion();
         }
+    }
+
+    /** Motion resets so far: trips, and returns of control after one. */
+    long resets() {
+        return resets.get();
     }
 
     boolean allowsMotion() {

@@ -54,7 +54,8 @@ final class RemotePlacement {
     private final Limits limits;
     private final Reconnect reconnect;
     private final BackOff backOff;
-    private final Runnable onStateChange;
+    private final OutageLog outages;
+    private final LinkStates states;
     private final ArrayBlockingQueue<Frame> outbound = new ArrayBlockingQueue<>(QUEUE_SAMPLES);
     private final AtomicLong sent = new AtomicLong();
     private final AtomicLong received = new AtomicLong();
@@ -68,8 +69,7 @@ final class RemotePlacement {
     private volatile Socket socket;
     private Thread thread;
 
-    RemotePlacement(MethodConfig config, MethodRunner runner, Limits limits, Reconnect reconnect,
-            Runnable onStateChange) {
+    RemotePlacement(MethodConfig config, MethodRunner runner, Limits limits, Reconnect reconnect, LinkStates states) {
         this.config = config;
         String text = config.host().orElseThrow();
         int colon = text.lastIndexOf(':');
@@ -80,7 +80,8 @@ final class RemotePlacement {
         this.limits = limits;
         this.reconnect = reconnect;
         this.backOff = new BackOff(reconnect);
-        this.onStateChange = onStateChange;
+        this.outages = new OutageLog(LOG, "worker " + config.host().orElseThrow() + " of method " + config.id());
+        this.states = states;
     }
 
     /** The worker as the config names it ({@code host:port}). */
@@ -133,23 +134,24 @@ final class RemotePlacement {
         dropped.incrementAndGet();
     }
 
+    /** The wait chooser of this link (tests and benchmarks observe the waits it chooses). */
+    BackOff backOff() {
+        return backOff;
+    }
+
     private void loop() {
         while (running) {
+            Exception failure;
             try {
                 runOnce();
-                backOff.reset();
+                break;
             } catch (IOException | RuntimeException e) {
-                if (!running) {
-                    break;
+                failure = e;
+                if (running) {
+                    failures.incrementAndGet();
+                    lastError = e.getMessage() == null ? e.toString() : e.getMessage();
+                    outages.failed(lastError);
                 }
-                failures.incrementAndGet();
-                String why = e.getMessage() == null ? e.toString() : e.getMessage();
-                if (up || connects.get() == 0 && !why.equals(lastError)) {
-                    LOG.warn("worker {} of method {} lost: {}", host(), config.id(), why);
-                } else {
-                    LOG.debug("worker {} of method {} still lost: {}", host(), config.id(), why);
-                }
-                lastError = why;
             } finally {
                 markLost();
             }
@@ -157,7 +159,7 @@ final class RemotePlacement {
                 if (fallsBackToLocal()) {
                     runner.fallBackToLocal();
                 }
-                if (!backOff.pause(() -> running)) {
+                if (!backOff.pause(failure, () -> running)) {
                     running = false;
                 }
             }
@@ -165,13 +167,12 @@ final class RemotePlacement {
     }
 
     private void runOnce() throws IOException {
-        Socket s = new Socket();
+        Socket s = LinkSocket.create(reconnect.tcpKeepAlive());
         socket = s;
         if (!running) {
             s.close();
             return;
         }
-        s.setTcpNoDelay(true);
         s.connect(new InetSocketAddress(host, port), (int) reconnect.connectTimeoutMs());
         s.setSoTimeout((int) reconnect.connectTimeoutMs());
         FrameReader reader = new FrameReader(new BufferedInputStream(s.getInputStream(), 65_536),
@@ -193,9 +194,12 @@ final class RemotePlacement {
         outbound.clear();
         connects.incrementAndGet();
         lastError = "";
-        up = true;
-        LOG.info("method {} runs on worker {}", config.id(), host());
-        onStateChange.run();
+        backOff.reset();
+        states.locked(() -> {
+            up = true;
+            states.refreshStaleness();
+        });
+        outages.up();
         Thread writerThread = Thread.ofVirtual().name("habla-worker-out-" + config.id())
                 .start(() -> writeLoop(writer, s));
         try {
@@ -290,14 +294,16 @@ final class RemotePlacement {
 
     private void markLost() {
         closeSocket();
-        boolean was = up;
-        up = false;
+        states.locked(() -> {
+            boolean was = up;
+            up = false;
+            if (was || connects.get() == 0 && failures.get() == 1) {
+                states.refreshStaleness();
+            }
+        });
         outbound.clear();
         if (!fallsBackToLocal()) {
             runner.readiness(false, "worker " + host() + " is lost");
-        }
-        if (was || connects.get() == 0 && failures.get() == 1) {
-            onStateChange.run();
         }
     }
 

@@ -42,7 +42,8 @@ import org.slf4j.LoggerFactory;
  * ({@link #attach}, {@link #start}, {@link #deliver}, {@link #tick}, {@link #stop}) are the engine's
  * and check every transition; an exception thrown by a hook puts the method in {@code FAILED} with
  * one log line, and a failed method is handed nothing more. Subclasses fill the hooks
- * {@link #onStart}, {@link #onSample}, {@link #onTick} and {@link #onStop}.
+ * {@link #onStart}, {@link #onSample}, {@link #onTick} and {@link #onStop}; a method that keeps motion
+ * state (a held action, a speed ramp) also fills {@link #onMotionStopped}.
  */
 public abstract sealed class Method permits SensorActuatorMethod, ProcessingMethod, VirtualMethod {
 
@@ -157,6 +158,16 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
     protected void onStop() throws Exception {
     }
 
+    /**
+     * Called when the engine stopped the robot behind the method's back — the motion watchdog tripped — and
+     * again when control comes back after such a stop, each time before the method handles anything newer.
+     * Only methods whose outputs lead to a motion command channel are called. The robot stands: forget any
+     * motion being held or ramped, so that what the method says next is what the robot does (a method that
+     * emits only changes would otherwise stay silent when asked again for the motion it last sent).
+     */
+    protected void onMotionStopped() throws Exception {
+    }
+
     // ---------------------------------------------------------------- helpers for method code
 
     /** Publishes a value, stamped with the source time of the message being handled. */
@@ -193,6 +204,15 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
      */
     protected final Optional<ChannelDescriptor> commandChannelOf(Output<?> output) {
         return context().commandChannelOf(output);
+    }
+
+    /**
+     * Tells the control clients whose values reach this method something about what they asked — a move vetoed,
+     * and why — as a {@code notice} line on their sockets, stamped with the source time of the message being
+     * handled (for a value a client wrote, the time of that write). See {@link ControlNotice}.
+     */
+    protected final void tellControl(String notice, String message, org.habla.sample.RecordValue detail) {
+        context().tellControl(new ControlNotice(notice, id(), message, detail, currentSourceMicros));
     }
 
     /** Reports whether the method can do its work yet. */
@@ -278,6 +298,15 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
         }
         currentSourceMicros = nowMicros;
         guard("tick", () -> onTick(nowMicros));
+    }
+
+    /** Engine only: the robot was stopped by the engine (or control came back after that), if running. */
+    public final void motionStopped() {
+        if (state != MethodState.RUNNING) {
+            return;
+        }
+        currentSourceMicros = context.nowMicros();
+        guard("forget its motion after a motion stop", this::onMotionStopped);
     }
 
     /** Engine only: runs a piece of method code (a background result) as a turn, if running. */

@@ -30,6 +30,13 @@ public interface MethodContext {
         return Optional.empty();
     }
 
+    /**
+     * Tells the control clients whose values reach this method something about what they asked (see
+     * {@link ControlNotice}); nothing where no control socket reaches it, or where the method runs on a worker.
+     */
+    default void tellControl(ControlNotice notice) {
+    }
+
     /** Tells the status whether the method can do its work yet (e.g. a model still loading). */
     void readiness(boolean ready, String detail);
 

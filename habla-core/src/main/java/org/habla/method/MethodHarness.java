@@ -33,6 +33,7 @@ public final class MethodHarness {
     private final Map<String, ChannelDescriptor> channels = new HashMap<>();
     private final Map<String, ChannelDescriptor> commandChannels = new HashMap<>();
     private final ArrayDeque<Runnable> pendingBackground = new ArrayDeque<>();
+    private final List<ControlNotice> notices = new ArrayList<>();
     private final Map<String, Long> sequences = new HashMap<>();
     private long nowMicros = 1_700_000_000_000_000L;
     private long nextTickMicros;
@@ -124,6 +125,12 @@ public final class MethodHarness {
         return push(input, value);
     }
 
+    /** Tells the method the engine stopped the robot (the motion watchdog tripped, or control came back). */
+    public MethodHarness motionStopped() {
+        method.motionStopped();
+        return this;
+    }
+
     /** Moves the clock forward, running every tick that falls due on the way. */
     public MethodHarness advanceMillis(long millis) {
         long target = nowMicros + millis * 1000;
@@ -164,9 +171,15 @@ public final class MethodHarness {
         return s.get(s.size() - 1).payload();
     }
 
-    /** Forgets what was emitted so far. */
+    /** Every notice the method told control clients, oldest first. */
+    public List<ControlNotice> notices() {
+        return List.copyOf(notices);
+    }
+
+    /** Forgets what was emitted and told so far. */
     public MethodHarness clear() {
         emitted.clear();
+        notices.clear();
         return this;
     }
 
@@ -221,6 +234,11 @@ public final class MethodHarness {
         @Override
         public Optional<ChannelDescriptor> channelOf(Input<?> input) {
             return Optional.ofNullable(channels.get(input.name()));
+        }
+
+        @Override
+        public void tellControl(ControlNotice notice) {
+            notices.add(notice);
         }
 
         @Override

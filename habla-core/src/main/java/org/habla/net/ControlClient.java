@@ -5,6 +5,7 @@ import java.io.InputStream;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
 import java.util.List;
+import java.util.Optional;
 import java.util.concurrent.atomic.AtomicBoolean;
 import org.habla.config.Limits;
 import org.slf4j.Logger;
@@ -13,14 +14,15 @@ import org.slf4j.LoggerFactory;
 /**
  * One control client's connection: a reader that turns its frames into requests, a writer that drains its
  * {@link Outbox}, each on its own virtual thread. Whatever goes wrong stays inside: one log line, the
- * connection closes, the server and the other clients carry on.
+ * connection closes, the server and the other clients carry on. Its {@link ConnectionGuard} sees what it
+ * does ({@link PeerActivity}, the frame it is reading) and may evict it: the client is told why, then closed.
  *
  * <pre>
  *   socket in  -&gt; FrameReader -&gt; ControlProtocol -&gt; ControlPoint.write / replies -+
  *   engine     -&gt; offerSample / offerNotice -----------------------------------&gt; Outbox -&gt; FrameWriter -&gt; socket out
  * </pre>
  */
-final class ControlClient implements ControlProtocol.Replies {
+final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Guarded {
 
     private static final Logger LOG = LoggerFactory.getLogger(ControlClient.class);
     private static final int REPLY_CAPACITY = 256;
@@ -29,23 +31,30 @@ final class ControlClient implements ControlProtocol.Replies {
 
     private final Socket socket;
     private final String label;
-    private final ControlPoint point;
     private final ControlProtocol protocol;
     private final Limits limits;
+    private final BlockBudget budget;
+    private final ConnectionGuard guard;
     private final ControlServer.Counters counters;
     private final Runnable onClosed;
     private final Outbox outbox;
+    private final PeerActivity activity = new PeerActivity();
     private final AtomicBoolean closed = new AtomicBoolean();
-    private final AtomicBoolean wrote = new AtomicBoolean();
+    private final AtomicBoolean evicted = new AtomicBoolean();
+    private final ClientId id;
     private volatile Thread writer;
+    private volatile Thread reader;
+    private volatile FrameReader frames;
 
-    ControlClient(Socket socket, String label, ControlPoint point, ControlProtocol protocol, Limits limits,
-            ControlServer.Counters counters, Runnable onClosed) {
+    ControlClient(Socket socket, String label, ClientId id, ControlProtocol protocol, Limits limits,
+            BlockBudget budget, ConnectionGuard guard, ControlServer.Counters counters, Runnable onClosed) {
         this.socket = socket;
+        this.id = id;
         this.label = label;
-        this.point = point;
         this.protocol = protocol;
         this.limits = limits;
+        this.budget = budget;
+        this.guard = guard;
         this.counters = counters;
         this.onClosed = onClosed;
         this.outbox = new Outbox(limits.clientQueueSamples(), REPLY_CAPACITY);
@@ -59,7 +68,58 @@ final class ControlClient implements ControlProtocol.Replies {
     /** Starts the reader and the writer. */
     void start() {
         writer = Thread.ofVirtual().name(label + "-writer").start(this::writeLoop);
-        Thread.ofVirtual().name(label + "-reader").start(this::readLoop);
+        reader = Thread.ofVirtual().name(label + "-reader").start(this::readLoop);
+    }
+
+    @Override
+    public long connectedNanos() {
+        return activity.connectedNanos();
+    }
+
+    @Override
+    public long lastActiveNanos() {
+        return activity.lastActiveNanos();
+    }
+
+    @Override
+    public long frameSinceNanos() {
+        FrameReader f = frames;
+        return f == null ? 0 : f.frameSinceNanos();
+    }
+
+    /**
+     * Sends the client {@code code} and {@code message} instead of anything still queued, ends our side, and
+     * closes once the client has closed too or after {@link #LINGER_MS}. What the client sends meanwhile is
+     * read and ignored, so the error line is not lost to a reset.
+     */
+    @Override
+    public void evict(String code, String message) {
+        if (closed.get() || !evicted.compareAndSet(false, true)) {
+            return;
+        }
+        counters.errors.incrementAndGet();
+        outbox.finishWith(ControlProtocol.error(code, message, null));
+        Thread.ofVirtual().name(label + "-evicted").start(this::lingerThenClose);
+    }
+
+    private void lingerThenClose() {
+        try {
+            Thread w = writer;
+            if (w != null && !w.join(java.time.Duration.ofMillis(LINGER_MS))) {
+                close();
+                return;
+            }
+            socket.shutdownOutput();
+            Thread r = reader;
+            if (r != null) {
+                r.join(java.time.Duration.ofMillis(LINGER_MS));
+            }
+        } catch (IOException e) {
+            LOG.debug("{}: while evicting: {}", label, e.toString());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        close();
     }
 
     void offerSample(String output, Frame frame) {
@@ -88,18 +148,27 @@ final class ControlClient implements ControlProtocol.Replies {
     }
 
     @Override
-    public void wrote() {
-        wrote.set(true);
+    public ClientId id() {
+        return id;
     }
 
     private void readLoop() {
+        boolean client = false; // whether its first frame made it a client of the port
         try {
-            FrameReader reader = new FrameReader(socket.getInputStream(), limits.maxLineBytes(), limits.maxBinaryBytes());
+            FrameReader in = new FrameReader(socket.getInputStream(), limits.maxLineBytes(), limits.maxBinaryBytes(),
+                    budget);
+            frames = in;
             while (!closed.get()) {
                 Frame frame;
                 try {
-                    frame = reader.read();
+                    frame = in.read();
                 } catch (FrameException e) {
+                    if (evicted.get()) {
+                        if (e.fatal()) {
+                            break;
+                        }
+                        continue;
+                    }
                     reply(ControlProtocol.error(e.code(), e.getMessage(), null));
                     if (e.fatal()) {
                         LOG.info("{}: closing after a fatal protocol error: {} {}", label, e.code(), e.getMessage());
@@ -110,6 +179,20 @@ final class ControlClient implements ControlProtocol.Replies {
                 }
                 if (frame == null) {
                     break;
+                }
+                if (evicted.get()) {
+                    continue;
+                }
+                activity.received();
+                if (!client) {
+                    client = true;
+                    Optional<String> refusal = guard.promote(this);
+                    if (refusal.isPresent()) {
+                        reply(ControlProtocol.error("too_many_clients", refusal.get(), frame.header().get("id")));
+                        LOG.info("{}: refused as a client: {}", label, refusal.get());
+                        closeAfterError();
+                        return;
+                    }
                 }
                 counters.linesIn.incrementAndGet();
                 protocol.handle(frame, this);
@@ -135,8 +218,10 @@ final class ControlClient implements ControlProtocol.Replies {
                     out.write(f);
                 }
                 out.flush();
+                activity.delivered();
                 counters.linesOut.addAndGet(batch.size());
             }
+            return; // the outbox was finished: whoever finished it closes the connection
         } catch (IOException e) {
             if (!closed.get()) {
                 LOG.debug("{}: cannot write: {}", label, e.toString());
@@ -179,7 +264,7 @@ final class ControlClient implements ControlProtocol.Replies {
         close();
     }
 
-    /** Closes the connection once; tells the engine if this client had written values. */
+    /** Closes the connection once; if this client commanded the socket, control is free and the robot stopped. */
     void close() {
         if (!closed.compareAndSet(false, true)) {
             return;
@@ -191,11 +276,9 @@ final class ControlClient implements ControlProtocol.Replies {
             LOG.debug("{}: close: {}", label, e.toString());
         }
         try {
-            if (wrote.get()) {
-                point.writerLeft();
-            }
+            protocol.left(this);
         } catch (RuntimeException e) {
-            LOG.warn("{}: the engine failed on writerLeft", label, e);
+            LOG.warn("{}: the engine failed on the commander leaving", label, e);
         }
         onClosed.run();
         LOG.debug("{}: closed", label);

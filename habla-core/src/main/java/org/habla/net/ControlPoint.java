@@ -2,6 +2,8 @@ package org.habla.net;
 
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
+import org.habla.method.ControlNotice;
 import org.habla.method.Input;
 import org.habla.method.Layer;
 import org.habla.method.Output;
@@ -47,14 +49,31 @@ public interface ControlPoint {
      */
     void write(Input<?> input, Payload value) throws Rejected;
 
-    /** Tells the engine a client that had written values went away (the motion watchdog acts on it). */
+    /** Tells the engine the client that commanded this socket went away or gave control back: stop the robot. */
     void writerLeft();
+
+    /**
+     * Who commands this socket, when values written here can reach a robot's command channel: such a socket has
+     * one commander at a time, whatever the writes come through (its control socket, a bridge), and writing to it
+     * counts for the motion watchdog. Empty for a socket whose values move nothing.
+     */
+    default Optional<ControlLease> lease() {
+        return Optional.empty();
+    }
 
     /** Receives what an exposed method emits. */
     interface Listener {
         void onSample(Output<?> output, Sample sample);
 
         void onStale(boolean stale, String why);
+
+        /** A method the socket's values reach tells its clients something about what they asked. */
+        default void onNotice(ControlNotice notice) {
+        }
+
+        /** Who commands the socket changed: a {@code control} line for every client (see {@link ControlLease}). */
+        default void onControl(Frame line) {
+        }
     }
 
     /** Ends a subscription. */

@@ -23,7 +23,11 @@ import org.habla.sample.Sample;
  *   {"op":"latest"}                             -&gt; one sample line per output that has one, then ok (if "id")
  *   {"op":"rate","maxHz":5}                     -&gt; ok (if "id"); samples thinned to 5 a second per output
  *   {"op":"ping"}                               -&gt; {"type":"pong"} (with the "id", which acknowledges it)
+ *   {"op":"take"}                               -&gt; ok (if "id"); this client commands the socket now
+ *   {"op":"release"}                            -&gt; ok (if "id") | error not_commander; the robot is stopped
  * </pre>
+ *
+ * On an actuating socket a write goes through the socket's {@link ControlLease}: one commander at a time.
  */
 final class ControlProtocol {
 
@@ -31,22 +35,22 @@ final class ControlProtocol {
 
     private static final JsonNodeFactory NODES = JsonNodeFactory.instance;
 
-    /** Where the protocol's answers go, and the per-connection settings it changes. */
-    interface Replies {
+    /** Where the protocol's answers go, and the per-connection settings it changes; the client it serves. */
+    interface Replies extends ControlLease.Client {
         void reply(Frame frame) throws InterruptedException;
 
         void rate(double maxHz);
-
-        /** Notes that the client wrote a value (so its leaving matters to the motion watchdog). */
-        void wrote();
     }
 
     private final ControlPoint point;
     private final Limits limits;
+    private final ControlLease lease;
 
-    ControlProtocol(ControlPoint point, Limits limits) {
+    /** @param lease who commands the socket; null when its values reach no actuator */
+    ControlProtocol(ControlPoint point, Limits limits, ControlLease lease) {
         this.point = point;
         this.limits = limits;
+        this.lease = lease;
     }
 
     /** The line a client gets on connect. */
@@ -72,10 +76,15 @@ final class ControlProtocol {
             inputs.addObject().put("name", i.name()).put("kind", i.kind().wireName());
         }
         h.put("stale", point.stale());
+        if (lease != null) {
+            h.set("control", lease.status());
+        }
         h.putObject("limits")
                 .put("maxLineBytes", limits.maxLineBytes())
                 .put("maxBinaryBytes", limits.maxBinaryBytes())
-                .put("queueSamples", limits.clientQueueSamples());
+                .put("clientQueueSamples", limits.clientQueueSamples())
+                .put("idleTimeoutMs", limits.idleTimeoutMs())
+                .put("frameTimeoutMs", limits.frameTimeoutMs());
         return Frame.of(h);
     }
 
@@ -95,6 +104,8 @@ final class ControlProtocol {
                 case "write" -> write(request, replies);
                 case "latest" -> latest(replies);
                 case "rate" -> rate(h, replies);
+                case "take" -> commanded().take(replies);
+                case "release" -> commanded().release(replies);
                 case "ping" -> {
                     ObjectNode pong = NODES.objectNode().put("type", "pong");
                     if (id != null) {
@@ -138,8 +149,26 @@ final class ControlProtocol {
                             "no input " + named + "; inputs are " + names(inputs)));
         }
         Payload value = SampleCodec.value(request, input.kind());
-        replies.wrote();
-        point.write(input, value);
+        if (lease == null) {
+            point.write(input, value);
+        } else {
+            lease.write(replies, () -> point.write(input, value));
+        }
+    }
+
+    /** The client has gone: if it commanded the socket, control is free and the robot is stopped. */
+    void left(ControlLease.Client client) {
+        if (lease != null) {
+            lease.left(client);
+        }
+    }
+
+    private ControlLease commanded() throws FrameException {
+        if (lease == null) {
+            throw FrameException.recoverable("no_control", "socket '" + point.name()
+                    + "' moves nothing: there is no control to take or release");
+        }
+        return lease;
     }
 
     private void latest(Replies replies) throws InterruptedException {

@@ -3,7 +3,6 @@ package org.habla.net;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
@@ -14,6 +13,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import org.habla.config.Expose;
 import org.habla.config.Limits;
+import org.habla.method.ControlNotice;
 import org.habla.method.Output;
 import org.habla.sample.Sample;
 import org.slf4j.Logger;
@@ -27,11 +27,16 @@ import org.slf4j.LoggerFactory;
  * <pre>
  *   engine --samples, staleness--&gt; listener (encodes once, only enqueues) --&gt; client 1 outbox --&gt; writer
  *                                                                       \--&gt; client 2 outbox --&gt; writer
- *   acceptor thread --&gt; ControlClient per connection (virtual threads), at most maxClientsPerPort
+ *   acceptor thread --&gt; ConnectionGuard (cap, eviction, deadlines) --&gt; ControlClient per connection
+ *                                                                       (virtual threads)
  * </pre>
  *
  * The engine's listener never blocks and never does I/O; a client that stops reading loses its oldest
- * samples (counted, and told) and delays nobody else.
+ * samples (counted, and told) and delays nobody else. A newcomer is always let in; at most
+ * {@code maxPendingPerPort} connections wait without having sent a request and at most
+ * {@code maxClientsPerPort} clients hold the port, and a full port evicts one that only holds its place
+ * ({@link AdmissionPolicy}). The blocks clients write reserve their memory from the port's
+ * {@link BlockBudget} as they arrive.
  */
 public final class ControlServer implements AutoCloseable {
 
@@ -41,50 +46,89 @@ public final class ControlServer implements AutoCloseable {
     private final Expose expose;
     private final Limits limits;
     private final ControlProtocol protocol;
+    private final ControlLease lease;
+    private final ConnectionGuard guard;
+    private final BlockBudget budget;
     private final List<ControlClient> clients = new CopyOnWriteArrayList<>();
     private final Counters counters = new Counters();
     private final AtomicLong droppedByGone = new AtomicLong();
+    /**
+     * The longest {@link #close} waits for the acceptor to leave its {@code accept}: the operating system releases
+     * the port only then, so a daemon started right after this one closed can have it.
+     */
+    static final long ACCEPTOR_STOP_MILLIS = 2_000;
+
     private volatile ServerSocket listener;
+    private volatile Thread acceptor;
     private volatile ControlPoint.Subscription subscription;
     private volatile boolean closed;
 
     /** The server's running counts. */
     static final class Counters {
         final AtomicLong connections = new AtomicLong();
-        final AtomicLong refused = new AtomicLong();
         final AtomicLong linesIn = new AtomicLong();
         final AtomicLong linesOut = new AtomicLong();
         final AtomicLong errors = new AtomicLong();
     }
 
+    /** A server with a block budget of its own for the process's share (one server alone, tests). */
     public ControlServer(ControlPoint point, Expose expose, Limits limits) {
+        this(point, expose, limits, BlockBudget.of("limits.processBlockBudgetBytes", limits.processBlockBudgetBytes()));
+    }
+
+    /** A server whose port's block budget is part of {@code processBudget}, shared by every port of the daemon. */
+    public ControlServer(ControlPoint point, Expose expose, Limits limits, BlockBudget processBudget) {
         this.point = Objects.requireNonNull(point, "point");
         this.expose = Objects.requireNonNull(expose, "expose");
         this.limits = Objects.requireNonNull(limits, "limits");
-        this.protocol = new ControlProtocol(point, limits);
+        this.lease = point.lease().orElse(null);
+        this.protocol = new ControlProtocol(point, limits, lease);
+        this.guard = new ConnectionGuard("control socket '" + point.name() + "'", limits.maxClientsPerPort(),
+                "limits.maxClientsPerPort", limits);
+        this.budget = processBudget.child("limits.socketBlockBudgetBytes", limits.socketBlockBudgetBytes());
     }
 
-    /** Binds the port and starts accepting clients. */
-    public void start() throws IOException {
+    /**
+     * Binds the port without accepting anyone yet, so a daemon can hold all its ports before it serves on any.
+     * A connection that arrives before {@link #start} waits in the backlog (and is reset if the server closes).
+     */
+    public void bind() throws IOException {
         if (listener != null) {
-            throw new IllegalStateException("control socket '" + point.name() + "' is already started");
+            throw new IllegalStateException("control socket '" + point.name() + "' is already bound");
         }
-        String bind = expose.bind() == null || expose.bind().isBlank() ? "127.0.0.1" : expose.bind();
+        String bind = bindAddress();
         ServerSocket server = new ServerSocket();
         try {
             server.setReuseAddress(true);
-            server.bind(new InetSocketAddress(InetAddress.getByName(bind), expose.port()), 50);
+            server.bind(new InetSocketAddress(InetAddress.getByName(bind), expose.port()), ConnectionGuard.ACCEPT_BACKLOG);
         } catch (IOException e) {
             server.close();
             throw new IOException("control socket '" + point.name() + "' of method " + point.methodId()
                     + " cannot listen on " + bind + ":" + expose.port() + ": " + e.getMessage(), e);
         }
         listener = server;
+    }
+
+    /** Binds the port if {@link #bind} was not called, and starts accepting clients. */
+    public void start() throws IOException {
+        if (subscription != null) {
+            throw new IllegalStateException("control socket '" + point.name() + "' is already started");
+        }
+        if (listener == null) {
+            bind();
+        }
+        String bind = bindAddress();
         subscription = point.subscribe(new Fanout());
-        Thread acceptor = new Thread(this::acceptLoop, "control-" + point.name() + "-accept");
-        acceptor.setDaemon(true);
-        acceptor.start();
+        guard.start();
+        Thread a = new Thread(this::acceptLoop, "control-" + point.name() + "-accept");
+        a.setDaemon(true);
+        acceptor = a;
+        a.start();
         LOG.info("control socket '{}' of method {} listening on {}:{}", point.name(), point.methodId(), bind, port());
+    }
+
+    private String bindAddress() {
+        return expose.bind() == null || expose.bind().isBlank() ? "127.0.0.1" : expose.bind();
     }
 
     /** The bound port (useful when the config asked for port 0). */
@@ -100,22 +144,36 @@ public final class ControlServer implements AutoCloseable {
         return clients.size();
     }
 
-    /** Clients now and in total, refused connections, lines each way, dropped samples and protocol errors. */
+    /**
+     * Clients now and in total, refused connections, lines each way, dropped samples and protocol errors; on an
+     * actuating socket, who commands it ({@code control}).
+     */
     public ObjectNode stats() {
         long dropped = droppedByGone.get();
         for (ControlClient c : clients) {
             dropped += c.dropped();
         }
-        return JsonNodeFactory.instance.objectNode()
+        ObjectNode stats = JsonNodeFactory.instance.objectNode()
                 .put("socket", point.name())
                 .put("port", listener == null ? expose.port() : port())
                 .put("clients", clients.size())
                 .put("connections", counters.connections.get())
-                .put("refused", counters.refused.get())
+                .put("refused", guard.refusedTotal())
                 .put("linesIn", counters.linesIn.get())
                 .put("linesOut", counters.linesOut.get())
                 .put("dropped", dropped)
                 .put("errors", counters.errors.get());
+        guard.putStats(stats);
+        stats.put("blockBytes", budget.reserved());
+        if (lease != null) {
+            stats.set("control", lease.status());
+        }
+        return stats;
+    }
+
+    /** Bytes this port holds now for blocks still arriving. */
+    public long blockBytesInFlight() {
+        return budget.reserved();
     }
 
     @Override
@@ -125,6 +183,7 @@ public final class ControlServer implements AutoCloseable {
         if (s != null) {
             s.close();
         }
+        guard.close();
         ServerSocket l = listener;
         if (l != null) {
             try {
@@ -133,8 +192,21 @@ public final class ControlServer implements AutoCloseable {
                 LOG.debug("closing control socket '{}': {}", point.name(), e.toString());
             }
         }
+        awaitAcceptorGone();
         for (ControlClient c : clients) {
             c.close();
+        }
+    }
+
+    private void awaitAcceptorGone() {
+        Thread a = acceptor;
+        if (a == null || a == Thread.currentThread()) {
+            return;
+        }
+        try {
+            a.join(ACCEPTOR_STOP_MILLIS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
     }
 
@@ -162,27 +234,19 @@ public final class ControlServer implements AutoCloseable {
 
     private void admit(Socket socket, long n) throws IOException {
         socket.setTcpNoDelay(true);
-        if (clients.size() >= limits.maxClientsPerPort()) {
-            counters.refused.incrementAndGet();
-            LOG.warn("control socket '{}': refusing {}: {} clients already", point.name(),
-                    socket.getRemoteSocketAddress(), clients.size());
-            socket.setSoTimeout(1_000);
-            OutputStream out = socket.getOutputStream();
-            new FrameWriter(out).send(ControlProtocol.error("too_many_clients", "socket '" + point.name()
-                    + "' already has maxClientsPerPort=" + limits.maxClientsPerPort() + " clients", null).header());
-            socket.shutdownOutput();
-            closeQuietly(socket);
-            return;
-        }
-        counters.connections.incrementAndGet();
         String label = "control-" + point.name() + "-" + n;
         ControlClient[] self = new ControlClient[1];
-        self[0] = new ControlClient(socket, label, point, protocol, limits, counters, () -> {
+        ClientId id = new ClientId(point.name() + "#" + n,
+                socket.getInetAddress().getHostAddress() + ":" + socket.getPort());
+        self[0] = new ControlClient(socket, label, id, protocol, limits, budget, guard, counters, () -> {
+            guard.left(self[0]);
             if (clients.remove(self[0])) {
                 droppedByGone.addAndGet(self[0].dropped());
             }
         });
-        clients.add(self[0]);
+        clients.add(self[0]); // before admission: if it is evicted at once, its close removes it again
+        guard.admit(self[0]);
+        counters.connections.incrementAndGet();
         LOG.debug("{}: connected from {}", label, socket.getRemoteSocketAddress());
         self[0].start();
     }
@@ -212,6 +276,28 @@ public final class ControlServer implements AutoCloseable {
             }
             for (ControlClient c : clients) {
                 c.offerSample(output.name(), frame);
+            }
+        }
+
+        @Override
+        public void onNotice(ControlNotice notice) {
+            ObjectNode line = JsonNodeFactory.instance.objectNode()
+                    .put("type", "notice")
+                    .put("notice", notice.notice())
+                    .put("method", notice.methodId())
+                    .put("t", notice.sourceMicros())
+                    .put("message", notice.message());
+            line.set("detail", notice.detail().json());
+            Frame frame = Frame.of(line);
+            for (ControlClient c : clients) {
+                c.offerNotice(frame);
+            }
+        }
+
+        @Override
+        public void onControl(Frame line) {
+            for (ControlClient c : clients) {
+                c.offerNotice(line);
             }
         }
 

@@ -9,6 +9,9 @@ import java.io.IOException;
  * <p>A <em>recoverable</em> error has already been skipped: the stream is back at the start of the next
  * frame, so the connection goes on. A <em>fatal</em> one leaves the stream out of step (a binary block
  * too large to skip, a peer gone mid-frame): the connection must be closed after telling the peer.
+ *
+ * <p>It carries no stack trace: it reports what a peer sent, not where HABLA went wrong, and a peer sending
+ * garbage causes thousands a second.
  */
 public final class FrameException extends IOException {
 
@@ -36,6 +39,11 @@ public final class FrameException extends IOException {
     /** A value that does not fit where it was sent. */
     public static FrameException badValue(String message) {
         return new FrameException("bad_value", message, false);
+    }
+
+    @Override
+    public synchronized Throwable fillInStackTrace() {
+        return this;
     }
 
     /** The wire error code. */

@@ -1,7 +1,9 @@
 package org.habla.net;
 
+import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.core.StreamReadFeature;
+import com.fasterxml.jackson.core.util.JsonRecyclerPools;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
@@ -14,6 +16,7 @@ import java.nio.ByteBuffer;
 import java.nio.charset.CharacterCodingException;
 import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
+import java.util.Objects;
 
 /**
  * Reads the frames of every HABLA socket (control side, interface protocol, workers): a chain of small
@@ -31,30 +34,57 @@ import java.nio.charset.StandardCharsets;
  *     -&gt; LineFramer     bounded line          line_too_long (skipped to the next '\n')
  *     -&gt; UTF-8 decoder  strict                bad_utf8
  *     -&gt; Jackson        one JSON value        bad_json, not_object
- *     -&gt; bytes trailer  N raw bytes           bad_bytes; binary_too_large (fatal); truncated (fatal)
+ *     -&gt; bytes trailer  N raw bytes           bad_bytes; binary_too_large (fatal); truncated (fatal);
+ *                       memory reserved from   block_budget (the block is read and dropped)
+ *                       a BlockBudget as the
+ *                       bytes arrive
  *     -&gt; Frame(header, body)
  * </pre>
  *
  * Blank lines are skipped (a person typing into {@code nc} may press Enter twice). Recoverable errors
- * leave the stream at the next frame; after a fatal one the connection must be closed. Not thread-safe.
+ * leave the stream at the next frame; after a fatal one the connection must be closed. Not thread-safe,
+ * except {@link #frameSinceNanos()}, which a watchdog of slow frames reads.
  */
 public final class FrameReader {
 
+    /**
+     * Jackson's buffers, shared by every connection. Its default keeps a set per thread for the thread's life:
+     * with a reader and a writer thread per connection, that was about 40 KB held by every idle connection.
+     */
+    private static final int JSON_BUFFER_SETS = 64;
+
     /** Parses wire JSON strictly: no trailing tokens, no duplicate keys. */
-    static final ObjectMapper JSON = JsonMapper.builder()
+    static final ObjectMapper JSON = JsonMapper.builder(JsonFactory.builder()
+                    .recyclerPool(JsonRecyclerPools.newBoundedPool(JSON_BUFFER_SETS)).build())
             .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS)
             .enable(StreamReadFeature.STRICT_DUPLICATE_DETECTION)
             .build();
 
     private final LineFramer lines;
     private final int maxBinaryBytes;
+    private final BlockBudget budget;
 
+    /** A reader whose blocks take as much memory as they declare, up to {@code maxBinaryBytes} each. */
     public FrameReader(InputStream in, int maxLineBytes, int maxBinaryBytes) {
+        this(in, maxLineBytes, maxBinaryBytes, BlockBudget.unbounded());
+    }
+
+    /** A reader whose blocks reserve their memory from {@code budget} as their bytes arrive. */
+    public FrameReader(InputStream in, int maxLineBytes, int maxBinaryBytes, BlockBudget budget) {
         if (maxBinaryBytes < 0) {
             throw new IllegalArgumentException("maxBinaryBytes must not be negative, was " + maxBinaryBytes);
         }
         this.lines = new LineFramer(in, maxLineBytes);
         this.maxBinaryBytes = maxBinaryBytes;
+        this.budget = Objects.requireNonNull(budget, "budget");
+    }
+
+    /**
+     * When the frame being read got its first byte ({@link System#nanoTime()}), or 0 while the reader waits
+     * between frames. Safe to call from any thread.
+     */
+    public long frameSinceNanos() {
+        return lines.frameSinceNanos();
     }
 
     /**
@@ -66,13 +96,25 @@ public final class FrameReader {
      * @throws IOException    if the stream fails
      */
     public Frame read() throws IOException {
+        try {
+            return readFrame();
+        } finally {
+            lines.frameDone();
+        }
+    }
+
+    private Frame readFrame() throws IOException {
         byte[] line;
-        do {
+        while (true) {
             line = lines.readLine();
             if (line == null) {
                 return null;
             }
-        } while (isBlank(line));
+            if (!isBlank(line)) {
+                break;
+            }
+            lines.frameDone();
+        }
         ObjectNode header = parse(decode(line));
         JsonNode count = header.get("bytes");
         if (count == null) {
@@ -86,7 +128,7 @@ public final class FrameReader {
                     + maxBinaryBytes + "; the stream cannot be resynchronised");
         }
         try {
-            return new Frame(header, lines.readBytes(count.intValue()));
+            return new Frame(header, lines.readBytes(count.intValue(), budget));
         } catch (EOFException e) {
             throw FrameException.fatal("truncated", "the stream ended inside a binary block: " + e.getMessage());
         }

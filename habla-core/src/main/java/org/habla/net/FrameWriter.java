@@ -18,7 +18,9 @@ public final class FrameWriter {
     private final OutputStream out;
 
     public FrameWriter(OutputStream out) {
-        this.out = new BufferedOutputStream(out, 16_384);
+        // Without a size, a stream made on a virtual thread (every served connection's writer) starts with a
+        // small buffer that grows as batches need it: an idle connection holds 512 bytes, not 16 KB.
+        this.out = new BufferedOutputStream(out);
     }
 
     /** Writes a frame without flushing; a frame with a body gets {@code "bytes"} set to its length. */

@@ -13,17 +13,30 @@ import java.util.Objects;
  *
  * <p>A line longer than {@code maxLineBytes} is never held: its bytes are discarded up to and including the
  * next newline, then a recoverable {@code line_too_long} error names the limit, and the next call reads the
- * next line. Not thread-safe: one reader thread per stream.
+ * next line.
+ *
+ * <p>A block's memory is reserved from a {@link BlockBudget} as its bytes arrive, growing by doubling from
+ * {@link #FIRST_BLOCK_BYTES}: a declared size is never allocated before the bytes are there.
+ *
+ * <p>Not thread-safe: one reader thread per stream; only {@link #frameSinceNanos()} may be read by others
+ * (a watchdog of slow frames).
  */
 public final class LineFramer {
 
+    /** The read buffer grows to this while reads fill it; an idle stream holds only the first size. */
     private static final int BUFFER_BYTES = 8_192;
+    private static final int FIRST_BUFFER_BYTES = 512;
+    /** The room reserved for a block when its first bytes arrive; it doubles as more come. */
+    static final int FIRST_BLOCK_BYTES = 65_536;
+    private static final byte[] NO_BYTES = new byte[0];
 
     private final InputStream in;
     private final int maxLineBytes;
-    private final byte[] buf = new byte[BUFFER_BYTES];
+    private byte[] buf = new byte[FIRST_BUFFER_BYTES];
     private int pos;
     private int end;
+    /** When the frame being read got its first byte ({@link System#nanoTime()}), or 0 between frames. */
+    private volatile long frameSince;
 
     public LineFramer(InputStream in, int maxLineBytes) {
         this.in = Objects.requireNonNull(in, "in");
@@ -50,6 +63,9 @@ public final class LineFramer {
                     return null;
                 }
                 throw FrameException.fatal("truncated", "the stream ended inside a line, after " + length + " bytes");
+            }
+            if (frameSince == 0) {
+                frameSince = System.nanoTime();
             }
             int newline = indexOfNewline();
             int stop = newline < 0 ? end : newline;
@@ -82,23 +98,91 @@ public final class LineFramer {
     }
 
     /**
-     * Reads exactly {@code count} raw bytes (the block after a line).
+     * Reads exactly {@code count} raw bytes (the block after a line), with no bound on the memory it holds.
      *
      * @throws EOFException if the stream ends first
      */
     public byte[] readBytes(int count) throws IOException {
-        byte[] out = new byte[count];
-        int have = Math.min(count, end - pos);
-        System.arraycopy(buf, pos, out, 0, have);
-        pos += have;
-        while (have < count) {
-            int n = in.read(out, have, count - have);
-            if (n < 0) {
-                throw new EOFException("the stream ended after " + have + " of " + count + " bytes");
-            }
-            have += n;
+        return readBytes(count, BlockBudget.unbounded());
+    }
+
+    /**
+     * Reads exactly {@code count} raw bytes (the block after a line), reserving room from {@code budget} only
+     * as the bytes arrive; the reservation is given back when the block is whole or abandoned.
+     *
+     * @throws FrameException {@code block_budget} (recoverable: the rest of the block has been read and
+     *                        discarded, the stream is at the next frame) when the budget has no room
+     * @throws EOFException   if the stream ends first
+     */
+    public byte[] readBytes(int count, BlockBudget budget) throws IOException {
+        if (count == 0) {
+            return NO_BYTES;
         }
-        return out;
+        byte[] out = NO_BYTES;
+        int have = 0;
+        long held = 0;
+        try {
+            while (have < count) {
+                if (pos == end && !fill()) {
+                    throw new EOFException("the stream ended after " + have + " of " + count + " bytes");
+                }
+                if (have == out.length) {
+                    int room = (int) Math.min(count, Math.max(FIRST_BLOCK_BYTES, 2L * have));
+                    try {
+                        budget.reserve(room - held);
+                    } catch (FrameException full) {
+                        budget.release(held);
+                        held = 0;
+                        out = NO_BYTES;
+                        skip(count - have);
+                        throw full;
+                    }
+                    held = room;
+                    out = Arrays.copyOf(out, room);
+                }
+                int take = Math.min(end - pos, out.length - have);
+                System.arraycopy(buf, pos, out, have, take);
+                pos += take;
+                have += take;
+                if (pos == end && have < out.length) {
+                    int n = in.read(out, have, out.length - have);
+                    if (n < 0) {
+                        throw new EOFException("the stream ended after " + have + " of " + count + " bytes");
+                    }
+                    have += n;
+                }
+            }
+            return out;
+        } finally {
+            budget.release(held);
+        }
+    }
+
+    /** Reads and drops {@code count} bytes, holding no more than the line buffer. */
+    private void skip(long count) throws IOException {
+        long left = count;
+        while (left > 0) {
+            if (pos == end && !fill()) {
+                throw FrameException.fatal("truncated", "the stream ended inside a binary block, "
+                        + left + " bytes short");
+            }
+            int take = (int) Math.min(left, end - pos);
+            pos += take;
+            left -= take;
+        }
+    }
+
+    /**
+     * When the frame being read got its first byte, as {@link System#nanoTime()}, or 0 while waiting between
+     * frames. Safe to call from any thread.
+     */
+    public long frameSinceNanos() {
+        return frameSince;
+    }
+
+    /** Marks the end of a frame (read whole, or skipped after an error): the next byte starts the next one. */
+    public void frameDone() {
+        frameSince = 0;
     }
 
     private void discardThroughNewline(boolean atNewline) throws IOException {
@@ -130,6 +214,9 @@ public final class LineFramer {
     }
 
     private boolean fill() throws IOException {
+        if (end == buf.length && buf.length < BUFFER_BYTES) {
+            buf = new byte[Math.min(BUFFER_BYTES, buf.length * 4)]; // the last read filled it: more is coming
+        }
         int n = in.read(buf, 0, buf.length);
         while (n == 0) {
             n = in.read(buf, 0, buf.length);

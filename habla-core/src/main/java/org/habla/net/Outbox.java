@@ -20,7 +20,8 @@ import java.util.concurrent.locks.ReentrantLock;
  *       A client's rate limit holds back the newest sample of an output until it is due.</li>
  *   <li>Replies come from the client's own reader and wait for room (at most {@code replyCapacity}), so a
  *       client that asks faster than it reads only slows itself.</li>
- *   <li>Staleness notices never wait and never pile up: a newer one replaces one not yet sent.</li>
+ *   <li>Notices (staleness, who commands the socket, ...) never wait and never pile up: a newer one replaces one
+ *       of the same type not yet sent.</li>
  * </ul>
  * One writer thread takes batches with {@link #take}.
  */
@@ -106,14 +107,14 @@ final class Outbox {
         }
     }
 
-    /** Queues a notice that replaces any notice not yet sent; never blocks. */
+    /** Queues a notice that replaces any notice of the same type not yet sent; never blocks. */
     void offerNotice(Frame frame) {
         lock.lock();
         try {
             if (finished) {
                 return;
             }
-            queue.removeIf(e -> e.kind == Kind.NOTICE);
+            queue.removeIf(e -> e.kind == Kind.NOTICE && e.frame.type().equals(frame.type()));
             queue.add(new Entry(frame, Kind.NOTICE));
             changed.signal();
         } finally {
@@ -166,6 +167,28 @@ final class Outbox {
         try {
             finished = true;
             held.clear();
+            changed.signalAll();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Drops whatever waits and accepts nothing more but {@code last}, which {@link #take} hands out next
+     * (an eviction's error line); then {@code take} returns {@code null}.
+     */
+    void finishWith(Frame last) {
+        lock.lock();
+        try {
+            if (finished) {
+                return;
+            }
+            queue.clear();
+            held.clear();
+            samples = 0;
+            replies = 0;
+            queue.add(new Entry(last, Kind.REPLY));
+            finished = true;
             changed.signalAll();
         } finally {
             lock.unlock();

@@ -26,7 +26,7 @@ import org.habla.net.Frame;
  * Reads an MCAP recording written by {@link McapEventFile} front to back, chunk by chunk, without its summary —
  * so a file cut by a kill (no summary, no footer, a torn last chunk) reads back every whole chunk. Each chunk's
  * CRC is checked; a chunk that fails it, or a record that is not whole, ends the reading and {@link #cut}
- * names its byte offset and what was wrong. Not thread-safe.
+ * names its byte offset, what was wrong and whether it is a torn end or damage ({@link Cut}). Not thread-safe.
  */
 public final class McapRecordingReader implements RecordingSource {
 
@@ -36,6 +36,7 @@ public final class McapRecordingReader implements RecordingSource {
     private static final ObjectMapper JSON = new ObjectMapper();
 
     private final InputStream in;
+    private final Path file;
     private final long size;
     private final Map<Integer, String> topics = new HashMap<>();
     private final ArrayDeque<RecordedEvent> pending = new ArrayDeque<>();
@@ -44,8 +45,9 @@ public final class McapRecordingReader implements RecordingSource {
     private Cut cut;
     private boolean ended;
 
-    private McapRecordingReader(InputStream in, long size) {
+    private McapRecordingReader(InputStream in, Path file, long size) {
         this.in = in;
+        this.file = file;
         this.size = size;
     }
 
@@ -59,7 +61,7 @@ public final class McapRecordingReader implements RecordingSource {
     /** Opens an MCAP recording and reads up to its HABLA header (the {@code habla.recording} metadata). */
     public static McapRecordingReader open(Path file) throws IOException, RecordingException {
         McapRecordingReader r = new McapRecordingReader(new BufferedInputStream(Files.newInputStream(file), 1 << 16),
-                Files.size(file));
+                file, Files.size(file));
         try {
             r.start();
         } catch (IOException | RecordingException e) {
@@ -235,7 +237,7 @@ public final class McapRecordingReader implements RecordingSource {
         }
         byte[] len = in.readNBytes(8);
         if (len.length < 8) {
-            return stop(start, "the record at the end has no whole length");
+            return stop(start, "the record at the end has no whole length", true);
         }
         long length = ByteBuffer.wrap(len).order(ByteOrder.LITTLE_ENDIAN).getLong();
         if (op == McapWriter.OP_FOOTER) {
@@ -249,13 +251,24 @@ public final class McapRecordingReader implements RecordingSource {
         byte[] content = in.readNBytes((int) length);
         offset += 9 + content.length;
         if (content.length < length) {
-            return stop(start, "the last record is short: " + content.length + " of " + length + " bytes");
+            return stop(start, "the last record is short: " + content.length + " of " + length + " bytes", true);
         }
         return new Record(op, content);
     }
 
-    private Record stop(long start, String reason) {
-        cut = new Cut(start, size - start, reason);
+    private Record stop(long start, String reason) throws IOException {
+        return stop(start, reason, false);
+    }
+
+    /**
+     * Ends the reading at the record at {@code start}: a torn end only when the file ends inside it and no whole
+     * chunk follows; a complete record that is bad (a failed CRC, a size no writer writes), or one with whole
+     * chunks after it, is damage.
+     */
+    private Record stop(long start, String reason, boolean fileEndsInside) throws IOException {
+        java.util.OptionalLong next = WholeRecordSearch.after(file, start, size, McapChunkProbe.INSTANCE);
+        cut = fileEndsInside && next.isEmpty() ? Cut.tornEnd(start, size - start, reason)
+                : new Cut(start, size - start, reason, true, next);
         ended = true;
         return null;
     }

@@ -8,7 +8,7 @@ import java.util.Optional;
  *
  * @param header the config and channels it was made with
  * @param events every whole record after the header, in file order
- * @param cut    where the file stopped being readable, if it did (a daemon killed mid-write)
+ * @param cut    where the file stopped being readable, if it did (a torn end, or damage)
  */
 public record Recording(RecordingHeader header, List<RecordedEvent> events, Optional<Cut> cut) {
 

@@ -13,14 +13,16 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.OptionalLong;
 import org.habla.net.Frame;
 
 /**
  * Reads a recording record by record (see {@link Recorder} for the layout). A record is whole when its
  * header line ends with {@code \n}, is a JSON object, and the binary block it declares is all there. The
  * first record that is not whole ends the reading: {@link #next} returns null and {@link #cut} says where
- * and why — a daemon killed mid-write leaves exactly that, a torn last record, and every record before it
- * reads back. Not thread-safe.
+ * and why, and whether it is a torn end — a daemon killed mid-write leaves a last record the file ends inside,
+ * and every record before it reads back — or damage: a complete record that cannot be read, or a bad record
+ * with whole records after it ({@link Cut}). Not thread-safe.
  */
 public final class RecordingReader implements RecordingSource {
 
@@ -32,6 +34,7 @@ public final class RecordingReader implements RecordingSource {
     private static final ObjectMapper JSON = new ObjectMapper();
 
     private final InputStream in;
+    private final Path file;
     private final long size;
     private final RecordingHeader header;
     private long offset;
@@ -39,8 +42,9 @@ public final class RecordingReader implements RecordingSource {
     private Cut cut;
     private boolean ended;
 
-    private RecordingReader(InputStream in, long size) throws IOException, RecordingException {
+    private RecordingReader(InputStream in, Path file, long size) throws IOException, RecordingException {
         this.in = in;
+        this.file = file;
         this.size = size;
         Frame first = readFrame();
         if (first == null) {
@@ -58,7 +62,7 @@ public final class RecordingReader implements RecordingSource {
 
     /** Opens a recording and reads its header. */
     public static RecordingReader open(Path file) throws IOException, RecordingException {
-        return new RecordingReader(new BufferedInputStream(Files.newInputStream(file), 65_536), Files.size(file));
+        return new RecordingReader(new BufferedInputStream(Files.newInputStream(file), 65_536), file, Files.size(file));
     }
 
     /** Reads a whole recording into memory: its header, its events, and where it was cut, if it was. */
@@ -93,8 +97,7 @@ public final class RecordingReader implements RecordingSource {
                 }
                 unknown++;
             } catch (RecordingException ex) {
-                cut = new Cut(at, size - at, ex.getMessage());
-                ended = true;
+                stop(at, ex.getMessage(), false);
             }
         }
         return null;
@@ -118,7 +121,7 @@ public final class RecordingReader implements RecordingSource {
             int c = in.read();
             if (c < 0) {
                 if (line.size() > 0) {
-                    return stop(start, "the header line has no end (" + line.size() + " bytes)");
+                    return stop(start, "the header line has no end (" + line.size() + " bytes)", true);
                 }
                 return null;
             }
@@ -151,13 +154,23 @@ public final class RecordingReader implements RecordingSource {
         byte[] body = in.readNBytes(count.intValue());
         offset += body.length;
         if (body.length < count.intValue()) {
-            return stop(start, "the binary block is short: " + body.length + " of " + count.intValue() + " bytes");
+            return stop(start, "the binary block is short: " + body.length + " of " + count.intValue() + " bytes", true);
         }
         return new Frame(header, body);
     }
 
-    private Frame stop(long start, String reason) {
-        cut = new Cut(start, size - start, reason);
+    private Frame stop(long start, String reason) throws IOException {
+        return stop(start, reason, false);
+    }
+
+    /**
+     * Ends the reading at the record at {@code start}. It is a torn end only when the file ends inside it and no
+     * whole record follows; a complete record that is bad, or one with whole records after it, is damage.
+     */
+    private Frame stop(long start, String reason, boolean fileEndsInside) throws IOException {
+        OptionalLong next = WholeRecordSearch.after(file, start, size, WholeRecordSearch.LINE_RECORD);
+        cut = fileEndsInside && next.isEmpty() ? Cut.tornEnd(start, size - start, reason)
+                : new Cut(start, size - start, reason, true, next);
         ended = true;
         return null;
     }

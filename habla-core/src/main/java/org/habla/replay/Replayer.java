@@ -19,8 +19,10 @@ import org.habla.graph.GraphTap;
 import org.habla.graph.MethodGraph;
 import org.habla.method.Input;
 import org.habla.net.ControlPoint;
+import org.habla.recording.Cut;
 import org.habla.recording.RecordedEvent;
 import org.habla.recording.Recorder;
+import org.habla.recording.RecordingDamagedException;
 import org.habla.recording.RecordingException;
 import org.habla.recording.RecordingHeader;
 import org.habla.recording.RecordingSource;
@@ -65,23 +67,47 @@ public final class Replayer {
     private final RecordingHeader header;
     private final HablaConfig config;
     private final PluginRegistry registry;
+    private final boolean recordedTicks;
+    private final Optional<Cut> cut;
 
-    private Replayer(Path file, RecordingHeader header, HablaConfig config, PluginRegistry registry) {
+    private Replayer(Path file, RecordingHeader header, HablaConfig config, PluginRegistry registry,
+            boolean recordedTicks, Optional<Cut> cut) {
         this.file = file;
         this.header = header;
         this.config = config;
         this.registry = registry;
+        this.recordedTicks = recordedTicks;
+        this.cut = cut;
     }
 
     /**
-     * Reads a recording's header and the config to replay it with: the recorded one, or {@code override}
-     * (whose interfaces and channels must be those of the recording).
+     * Reads a recording through, and the config to replay it with: the recorded one, or {@code override}
+     * (whose interfaces and channels must be those of the recording). A recording damaged before its end is
+     * refused with a {@link RecordingDamagedException}; a torn end is not damage.
      */
     public static Replayer open(Path file, Optional<Path> override, PluginRegistry registry)
             throws IOException, RecordingException, ConfigException {
+        return open(file, override, registry, false);
+    }
+
+    /**
+     * As {@link #open(Path, Optional, PluginRegistry)}; with {@code salvage}, a damaged recording is replayed up to
+     * its damage instead of refused.
+     */
+    public static Replayer open(Path file, Optional<Path> override, PluginRegistry registry, boolean salvage)
+            throws IOException, RecordingException, ConfigException {
         RecordingHeader header;
+        boolean ticks = false;
+        Optional<Cut> cut;
         try (RecordingSource r = RecordingSource.open(file)) {
             header = r.header();
+            for (RecordedEvent e = r.next(); e != null; e = r.next()) {
+                ticks |= e instanceof RecordedEvent.Tick;
+            }
+            cut = r.cut();
+        }
+        if (cut.isPresent() && cut.get().damage() && !salvage) {
+            throw new RecordingDamagedException(cut.get());
         }
         ConfigLoader loader = new ConfigLoader(registry);
         HablaConfig config = override.isPresent() ? loader.load(override.get())
@@ -102,7 +128,12 @@ public final class Replayer {
                 }
             }
         }
-        return new Replayer(file, header, config, registry);
+        return new Replayer(file, header, config, registry, ticks, cut);
+    }
+
+    /** Where the recording stops being readable, if it does: a torn end, or damage being salvaged. */
+    public Optional<Cut> cut() {
+        return cut;
     }
 
     public HablaConfig config() {
@@ -121,8 +152,8 @@ public final class Replayer {
      */
     public ReplayResult run(Options options, Optional<Path> recordTo, Consumer<Daemon> onStarted)
             throws IOException, RecordingException, InterruptedException {
-        boolean recordedTicks = hasTicks();
         ReplayClock clock = new ReplayClock(header.startMicros());
+        Daemon.checkPorts(config);
         Recorder recorder = null;
         if (recordTo.isPresent()) {
             recorder = Recorder.create(recordTo.get(), new RecordingHeader(header.startMicros(), header.timeScale(),
@@ -167,19 +198,6 @@ public final class Replayer {
                 recorder.close();
             }
         }
-    }
-
-    private boolean hasTicks() throws IOException {
-        try (RecordingSource r = RecordingSource.open(file)) {
-            for (RecordedEvent e = r.next(); e != null; e = r.next()) {
-                if (e instanceof RecordedEvent.Tick) {
-                    return true;
-                }
-            }
-        } catch (RecordingException e) {
-            return false;
-        }
-        return false;
     }
 
     /** The replay's thread: paces, feeds and settles. */

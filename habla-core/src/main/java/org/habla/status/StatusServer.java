@@ -10,7 +10,9 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.Objects;
 import java.util.function.Supplier;
+import org.habla.config.Limits;
 import org.habla.config.StatusConfig;
+import org.habla.net.ConnectionGuard;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -18,52 +20,91 @@ import org.slf4j.LoggerFactory;
  * The daemon's status endpoint: a TCP server that writes the current snapshot (rates, latencies, queue drops,
  * link states, as the engine assembles them) as one JSON line to each client that connects, then closes.
  * {@code nc 127.0.0.1 7099} is a complete client. Port 0 in the config turns it off.
+ *
+ * <p>At most {@code limits.maxPendingPerPort} answers are in flight at once; a newcomer to a full endpoint
+ * is answered and the oldest answer in flight is abandoned. A client that has not taken its whole line
+ * within {@code limits.frameTimeoutMs} is disconnected. See {@link ConnectionGuard}.
  */
 public final class StatusServer implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(StatusServer.class);
     private static final ObjectMapper JSON = new ObjectMapper();
-    /** A client that does not take its line within this time is dropped. */
-    private static final int WRITE_TIMEOUT_MS = 2_000;
 
     private final StatusConfig config;
     private final Supplier<ObjectNode> snapshot;
+    private final ConnectionGuard guard;
+    /** The longest {@link #close} waits for the acceptor to leave {@code accept}, which is when the port is released. */
+    private static final long ACCEPTOR_STOP_MILLIS = 2_000;
+
     private volatile ServerSocket listener;
+    private volatile Thread acceptor;
     private volatile boolean closed;
 
     public StatusServer(StatusConfig config, Supplier<ObjectNode> snapshot) {
-        this.config = Objects.requireNonNull(config, "config");
-        this.snapshot = Objects.requireNonNull(snapshot, "snapshot");
+        this(config, Limits.DEFAULTS, snapshot);
     }
 
-    /** Binds and starts answering; does nothing when the config's port is 0 (the endpoint is off). */
+    public StatusServer(StatusConfig config, Limits limits, Supplier<ObjectNode> snapshot) {
+        this.config = Objects.requireNonNull(config, "config");
+        this.snapshot = Objects.requireNonNull(snapshot, "snapshot");
+        this.guard = new ConnectionGuard("the status endpoint", limits.maxClientsPerPort(), "limits.maxClientsPerPort",
+                limits);
+    }
+
+    /**
+     * Binds the config's port without answering anyone yet (so a daemon holds all its ports before it serves on
+     * any); does nothing when the port is 0 (the endpoint is off).
+     */
+    public void bind() throws IOException {
+        bind(config.port());
+    }
+
+    /** Binds (unless {@link #bind} did) and starts answering; does nothing when the config's port is 0. */
     public void start() throws IOException {
-        start(config.port());
+        if (listener == null) {
+            bind(config.port());
+        }
+        accept();
     }
 
     /** Binds to an ephemeral port whatever the config says (tests, several daemons on one machine). */
     public void startOnAnyPort() throws IOException {
-        start(-1);
+        bind(-1);
+        accept();
     }
 
-    private void start(int port) throws IOException {
+    private void bind(int port) throws IOException {
+        if (listener != null) {
+            throw new IllegalStateException("the status endpoint is already bound");
+        }
         if (port == 0) {
-            LOG.info("status endpoint is off (port 0)");
             return;
         }
         String bind = config.bind() == null || config.bind().isBlank() ? "127.0.0.1" : config.bind();
         ServerSocket server = new ServerSocket();
         try {
             server.setReuseAddress(true);
-            server.bind(new InetSocketAddress(InetAddress.getByName(bind), Math.max(port, 0)), 16);
+            server.bind(new InetSocketAddress(InetAddress.getByName(bind), Math.max(port, 0)),
+                    ConnectionGuard.ACCEPT_BACKLOG);
         } catch (IOException e) {
             server.close();
             throw new IOException("status endpoint cannot listen on " + bind + ":" + port + ": " + e.getMessage(), e);
         }
         listener = server;
-        Thread acceptor = new Thread(this::acceptLoop, "status-accept");
-        acceptor.setDaemon(true);
-        acceptor.start();
+    }
+
+    private void accept() {
+        ServerSocket server = listener;
+        if (server == null) {
+            LOG.info("status endpoint is off (port 0)");
+            return;
+        }
+        String bind = config.bind() == null || config.bind().isBlank() ? "127.0.0.1" : config.bind();
+        guard.start();
+        Thread a = new Thread(this::acceptLoop, "status-accept");
+        a.setDaemon(true);
+        acceptor = a;
+        a.start();
         LOG.info("status endpoint listening on {}:{}", bind, server.getLocalPort());
     }
 
@@ -81,15 +122,29 @@ public final class StatusServer implements AutoCloseable {
         return s.getLocalPort();
     }
 
+    /** Answers being written now. */
+    public int answering() {
+        return guard.size();
+    }
+
     @Override
     public void close() {
         closed = true;
+        guard.close();
         ServerSocket s = listener;
         if (s != null) {
             try {
                 s.close();
             } catch (IOException e) {
                 LOG.debug("closing the status endpoint: {}", e.toString());
+            }
+        }
+        Thread a = acceptor;
+        if (a != null && a != Thread.currentThread()) {
+            try {
+                a.join(ACCEPTOR_STOP_MILLIS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
             }
         }
     }
@@ -105,28 +160,69 @@ public final class StatusServer implements AutoCloseable {
                 }
                 return;
             }
-            Thread.ofVirtual().name("status-client").start(() -> answer(client));
+            Answer answer = new Answer(client);
+            guard.admit(answer);
+            Thread.ofVirtual().name("status-client").start(answer::run);
         }
     }
 
-    private void answer(Socket client) {
-        try (client) {
-            client.setSoTimeout(WRITE_TIMEOUT_MS);
-            byte[] line;
-            try {
-                line = JSON.writeValueAsBytes(snapshot.get());
-            } catch (RuntimeException e) {
-                LOG.warn("the status snapshot failed", e);
-                line = JSON.writeValueAsBytes(JSON.createObjectNode()
-                        .put("type", "error").put("code", "snapshot_failed").put("message", e.toString()));
+    /** One client's answer: the snapshot line, taken within the frame deadline or abandoned. */
+    private final class Answer implements ConnectionGuard.Guarded {
+        private final Socket socket;
+        private final long connected = System.nanoTime();
+        private volatile boolean written;
+
+        Answer(Socket socket) {
+            this.socket = socket;
+        }
+
+        void run() {
+            try (socket) {
+                byte[] line;
+                try {
+                    line = JSON.writeValueAsBytes(snapshot.get());
+                } catch (RuntimeException e) {
+                    LOG.warn("the status snapshot failed", e);
+                    line = JSON.writeValueAsBytes(JSON.createObjectNode()
+                            .put("type", "error").put("code", "snapshot_failed").put("message", e.toString()));
+                }
+                OutputStream out = socket.getOutputStream();
+                out.write(line);
+                out.write('\n');
+                out.flush();
+                written = true;
+                socket.shutdownOutput();
+            } catch (IOException e) {
+                LOG.debug("status client {}: {}", socket.getRemoteSocketAddress(), e.toString());
+            } finally {
+                guard.left(this);
             }
-            OutputStream out = client.getOutputStream();
-            out.write(line);
-            out.write('\n');
-            out.flush();
-            client.shutdownOutput();
-        } catch (IOException e) {
-            LOG.debug("status client {}: {}", client.getRemoteSocketAddress(), e.toString());
+        }
+
+        @Override
+        public long connectedNanos() {
+            return connected;
+        }
+
+        @Override
+        public long lastActiveNanos() {
+            return connected;
+        }
+
+        @Override
+        public long frameSinceNanos() {
+            return written ? 0 : connected;
+        }
+
+        /** An answer cannot be interrupted by an error line: the connection is closed. */
+        @Override
+        public void evict(String code, String message) {
+            LOG.debug("status client {}: closed: {} {}", socket.getRemoteSocketAddress(), code, message);
+            try {
+                socket.close();
+            } catch (IOException e) {
+                LOG.debug("status client: close: {}", e.toString());
+            }
         }
     }
 }

@@ -38,6 +38,11 @@ public final class WorkerCommand implements Callable<Integer> {
             description = "Run the methods' clock S times faster than the wall clock, as the daemon's --time-scale.")
     private double timeScale;
 
+    @Option(names = "--max-methods", paramLabel = "N", defaultValue = "" + Limits.CLIENTS_PER_PORT,
+            description = "Connections (methods placed or being placed) at once, 1..1024 (default ${DEFAULT-VALUE}); "
+                    + "at the cap a connection that placed nothing gives way to a newcomer.")
+    private int maxMethods;
+
     @Override
     public Integer call() throws InterruptedException {
         PrintWriter err = spec.commandLine().getErr();
@@ -51,9 +56,14 @@ public final class WorkerCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
         }
+        if (maxMethods < 1 || maxMethods > 1_024) {
+            err.println("habla worker: --max-methods must be in 1..1024, was " + maxMethods);
+            err.flush();
+            return ExitCodes.USAGE_OR_CONFIG;
+        }
         PluginRegistry registry = PluginRegistry.discover(Thread.currentThread().getContextClassLoader());
         EngineClock clock = timeScale == 1 ? EngineClock.system() : EngineClock.scaled(timeScale);
-        WorkerServer server = new WorkerServer(registry, bind, port, clock, Limits.DEFAULTS);
+        WorkerServer server = new WorkerServer(registry, bind, port, clock, limits(maxMethods));
         try {
             server.start();
         } catch (IOException e) {
@@ -73,5 +83,10 @@ public final class WorkerCommand implements Callable<Integer> {
         }, "habla-worker-shutdown"));
         stopped.await();
         return ExitCodes.OK;
+    }
+
+    /** The default limits of every socket, with the cap on connections this worker was given. */
+    static Limits limits(int maxMethods) {
+        return Limits.DEFAULTS.withCaps(maxMethods, Limits.DEFAULTS.maxPendingPerPort());
     }
 }

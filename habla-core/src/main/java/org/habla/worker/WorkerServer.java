@@ -12,29 +12,32 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.habla.config.Limits;
 import org.habla.graph.EngineClock;
-import org.habla.net.FrameWriter;
-import org.habla.net.WorkerProtocol;
+import org.habla.net.BlockBudget;
+import org.habla.net.ConnectionGuard;
 import org.habla.plugin.PluginRegistry;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
  * The listening side of {@code habla worker}: accepts daemon connections, each running one placed method
- * in a {@link WorkerSession} of its own. At most {@link #MAX_SESSIONS} at once; the next connection gets a
- * {@code too_many_methods} error line and is closed.
+ * in a {@link WorkerSession} of its own. Its {@link ConnectionGuard} keeps the control sockets' rules: at most
+ * {@code limits.maxPendingPerPort} connections wait to place a method (the one waiting longest gives way to a
+ * newcomer) and at most {@code limits.maxClientsPerPort} run one ({@code habla worker --max-methods}); a place
+ * line beyond that evicts a method idle for {@code evictableIdleMs}, or gets a {@code too_many_methods} error
+ * line and is closed; a connection that breaks a deadline is closed.
+ * The blocks the daemon sends reserve their memory from the worker's {@link BlockBudget} as they arrive.
  */
 public final class WorkerServer implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(WorkerServer.class);
-    /** Methods one worker runs at once. */
-    public static final int MAX_SESSIONS = 64;
-
     private final PluginRegistry registry;
     private final String bind;
     private final int requestedPort;
     private final EngineClock clock;
     private final Limits limits;
     private final Set<Socket> sessions = ConcurrentHashMap.newKeySet();
+    private final ConnectionGuard guard;
+    private final BlockBudget budget;
     private final ExecutorService backgroundPool;
     private volatile boolean running;
     private ServerSocket server;
@@ -46,6 +49,10 @@ public final class WorkerServer implements AutoCloseable {
         this.requestedPort = port;
         this.clock = clock;
         this.limits = limits;
+        this.guard = new ConnectionGuard("worker port", limits.maxClientsPerPort(), "habla worker --max-methods",
+                limits);
+        this.budget = BlockBudget.of("limits.processBlockBudgetBytes", limits.processBlockBudgetBytes())
+                .child("limits.socketBlockBudgetBytes", limits.socketBlockBudgetBytes());
         AtomicInteger n = new AtomicInteger();
         this.backgroundPool = Executors.newFixedThreadPool(Math.max(2, Runtime.getRuntime().availableProcessors()),
                 r -> {
@@ -60,13 +67,14 @@ public final class WorkerServer implements AutoCloseable {
         ServerSocket s = new ServerSocket();
         s.setReuseAddress(true);
         try {
-            s.bind(new InetSocketAddress(InetAddress.getByName(bind), requestedPort), 50);
+            s.bind(new InetSocketAddress(InetAddress.getByName(bind), requestedPort), ConnectionGuard.ACCEPT_BACKLOG);
         } catch (IOException e) {
             s.close();
             throw new IOException("cannot listen on " + bind + ":" + requestedPort + ": " + e.getMessage(), e);
         }
         server = s;
         running = true;
+        guard.start();
         acceptor = Thread.ofPlatform().daemon().name("habla-worker-accept").start(this::acceptLoop);
         LOG.info("HABLA worker listening on {}:{}; method types: {}", bind, port(),
                 String.join(", ", registry.methods().keySet()));
@@ -77,9 +85,19 @@ public final class WorkerServer implements AutoCloseable {
         return server.getLocalPort();
     }
 
-    /** Connections running a method now. */
+    /** Connections open now (placing or running a method). */
     public int sessions() {
         return sessions.size();
+    }
+
+    /** Bytes held now for blocks still arriving from daemons (the worker's own count). */
+    public long blockBytesInFlight() {
+        return budget.reserved();
+    }
+
+    /** Connections evicted to admit a newcomer, and closed for a deadline, so far. */
+    public long evictions() {
+        return guard.evictedTotal() + guard.idleTimeoutsTotal() + guard.frameTimeoutsTotal();
     }
 
     private void acceptLoop() {
@@ -93,28 +111,17 @@ public final class WorkerServer implements AutoCloseable {
                 }
                 continue;
             }
-            if (sessions.size() >= MAX_SESSIONS) {
-                refuse(s);
-                continue;
-            }
+            WorkerSession session = new WorkerSession(s, registry, clock, backgroundPool, limits, budget, guard);
             sessions.add(s);
-            WorkerSession session = new WorkerSession(s, registry, clock, backgroundPool, limits);
+            guard.admit(session);
             Thread.ofVirtual().name("habla-worker-session").start(() -> {
                 try {
                     session.run();
                 } finally {
+                    guard.left(session);
                     sessions.remove(s);
                 }
             });
-        }
-    }
-
-    private static void refuse(Socket s) {
-        try (s) {
-            FrameWriter w = new FrameWriter(s.getOutputStream());
-            w.send(WorkerProtocol.error("too_many_methods", "this worker runs " + MAX_SESSIONS + " methods already"));
-        } catch (IOException e) {
-            LOG.debug("refusing a connection: {}", e.toString());
         }
     }
 
@@ -122,6 +129,7 @@ public final class WorkerServer implements AutoCloseable {
     @Override
     public synchronized void close() {
         running = false;
+        guard.close();
         try {
             if (server != null) {
                 server.close();

@@ -6,10 +6,13 @@ import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.net.Socket;
 import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.ReentrantLock;
 import java.util.stream.Collectors;
 import org.habla.config.ConfigError;
 import org.habla.config.ConfigException;
@@ -20,10 +23,13 @@ import org.habla.graph.EngineClock;
 import org.habla.graph.HostedMethod;
 import org.habla.method.Layer;
 import org.habla.method.Method;
+import org.habla.net.BlockBudget;
+import org.habla.net.ConnectionGuard;
 import org.habla.net.Frame;
 import org.habla.net.FrameException;
 import org.habla.net.FrameReader;
 import org.habla.net.FrameWriter;
+import org.habla.net.PeerActivity;
 import org.habla.net.SampleCodec;
 import org.habla.net.WorkerProtocol;
 import org.habla.plugin.MethodProvider;
@@ -38,62 +44,141 @@ import org.slf4j.LoggerFactory;
  * makes the method the daemon asks for, feeds it the samples that arrive and sends back what it publishes.
  * Outgoing lines wait in a bounded queue for one writer thread, which also sends the heartbeat; a full
  * queue drops the newest output sample and counts it. A bad line gets an error line and is skipped.
+ * The worker's {@link ConnectionGuard} sees what the connection does and may evict it: the daemon is told why
+ * (an error line), then the connection closes.
  */
-final class WorkerSession implements Runnable {
+final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
 
     private static final Logger LOG = LoggerFactory.getLogger(WorkerSession.class);
     /** How long a new connection may take to say which method to run. */
     static final int PLACE_TIMEOUT_MILLIS = 10_000;
     /** Output lines waiting for the daemon; more are dropped and counted. */
     static final int QUEUE_FRAMES = 256;
+    /** How long an evicted connection has to take its error line and close before it is closed anyway. */
+    private static final long LINGER_MS = 2_000;
 
     private final Socket socket;
     private final PluginRegistry registry;
     private final EngineClock clock;
     private final ExecutorService backgroundPool;
     private final Limits limits;
+    private final BlockBudget budget;
+    private final ConnectionGuard guard;
     private final ArrayBlockingQueue<Frame> outbound = new ArrayBlockingQueue<>(QUEUE_FRAMES);
     private final AtomicLong dropped = new AtomicLong();
+    private final PeerActivity activity = new PeerActivity();
+    private final ReentrantLock writeLock = new ReentrantLock();
+    private final AtomicBoolean evicted = new AtomicBoolean();
     private volatile boolean open = true;
+    private volatile FrameReader frames;
+    private volatile FrameWriter out;
+    private volatile Thread runner;
     private HostedMethod hosted;
     private String methodId = "?";
 
     WorkerSession(Socket socket, PluginRegistry registry, EngineClock clock, ExecutorService backgroundPool,
-            Limits limits) {
+            Limits limits, BlockBudget budget, ConnectionGuard guard) {
         this.socket = socket;
         this.registry = registry;
         this.clock = clock;
         this.backgroundPool = backgroundPool;
         this.limits = limits;
+        this.budget = budget;
+        this.guard = guard;
+    }
+
+    @Override
+    public long connectedNanos() {
+        return activity.connectedNanos();
+    }
+
+    @Override
+    public long lastActiveNanos() {
+        return activity.lastActiveNanos();
+    }
+
+    @Override
+    public long frameSinceNanos() {
+        FrameReader f = frames;
+        return f == null ? 0 : f.frameSinceNanos();
+    }
+
+    /**
+     * Tells the daemon {@code code} and {@code message} (if the line can be written within {@link #LINGER_MS}),
+     * ends our side, and closes once the daemon has closed too or after {@link #LINGER_MS}. The method stops.
+     */
+    @Override
+    public void evict(String code, String message) {
+        if (!evicted.compareAndSet(false, true)) {
+            return;
+        }
+        LOG.info("closing the connection of method {} from {}: {} {}", methodId, socket.getRemoteSocketAddress(),
+                code, message);
+        Thread.ofVirtual().name("habla-worker-evict").start(() -> {
+            try {
+                FrameWriter w = out;
+                if (w != null && writeLock.tryLock(LINGER_MS, TimeUnit.MILLISECONDS)) {
+                    try {
+                        w.send(WorkerProtocol.error(code, message));
+                        socket.shutdownOutput();
+                    } finally {
+                        writeLock.unlock();
+                    }
+                    Thread r = runner;
+                    if (r != null) {
+                        r.join(java.time.Duration.ofMillis(LINGER_MS));
+                    }
+                }
+            } catch (IOException e) {
+                LOG.debug("evicting: {}", e.toString());
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+            open = false;
+            try {
+                socket.close();
+            } catch (IOException e) {
+                LOG.debug("evicting: close: {}", e.toString());
+            }
+        });
     }
 
     @Override
     public void run() {
         String peer = String.valueOf(socket.getRemoteSocketAddress());
+        runner = Thread.currentThread();
         Thread writer = null;
         try (socket) {
             socket.setTcpNoDelay(true);
             socket.setSoTimeout(PLACE_TIMEOUT_MILLIS);
             FrameReader reader = new FrameReader(new BufferedInputStream(socket.getInputStream(), 65_536),
-                    limits.maxLineBytes(), limits.maxBinaryBytes());
-            FrameWriter out = new FrameWriter(socket.getOutputStream());
-            out.send(WorkerProtocol.hello(registry.methods().keySet()));
+                    limits.maxLineBytes(), limits.maxBinaryBytes(), budget);
+            frames = reader;
+            out = new FrameWriter(socket.getOutputStream());
+            send(WorkerProtocol.hello(registry.methods().keySet()));
             Frame place = reader.read();
-            if (place == null) {
+            if (place == null || evicted.get()) {
+                return;
+            }
+            activity.received();
+            Optional<String> full = guard.promote(this);
+            if (full.isPresent()) {
+                send(WorkerProtocol.error("too_many_methods", full.get()));
+                LOG.warn("refused a method for {}: {}", peer, full.get());
                 return;
             }
             Refusal refusal = place(place);
             if (refusal != null) {
-                out.send(WorkerProtocol.error(refusal.code(), refusal.message()));
+                send(WorkerProtocol.error(refusal.code(), refusal.message()));
                 LOG.warn("refused method {} for {}: {}", methodId, peer, refusal.message());
                 return;
             }
-            out.send(WorkerProtocol.placed(methodId, hosted.inputNames(), hosted.outputNames()));
+            send(WorkerProtocol.placed(methodId, hosted.inputNames(), hosted.outputNames()));
             socket.setSoTimeout(0);
             hosted.onOutput((output, sample) -> queue(WorkerProtocol.outputSample(output, sample)));
             hosted.start();
             LOG.info("running method {} for {}", methodId, peer);
-            writer = Thread.ofVirtual().name("habla-worker-" + methodId + "-out").start(() -> writeLoop(out));
+            writer = Thread.ofVirtual().name("habla-worker-" + methodId + "-out").start(this::writeLoop);
             readLoop(reader);
         } catch (IOException e) {
             LOG.info("connection of method {} from {} ended: {}", methodId, peer, e.getMessage());
@@ -164,13 +249,28 @@ final class WorkerSession implements Runnable {
         return provider.create(layer, provider.paramsType().cast(params));
     }
 
+    /** Writes one line now (before the writer thread runs), taking turns with an eviction's error line. */
+    private void send(com.fasterxml.jackson.databind.node.ObjectNode line) throws IOException {
+        writeLock.lock();
+        try {
+            if (!evicted.get()) {
+                out.send(line);
+                activity.delivered();
+            }
+        } finally {
+            writeLock.unlock();
+        }
+    }
+
     private void readLoop(FrameReader reader) throws IOException {
         while (open) {
             Frame f;
             try {
                 f = reader.read();
             } catch (FrameException e) {
-                queue(Frame.of(WorkerProtocol.error(e.code(), e.getMessage())));
+                if (!evicted.get()) {
+                    queue(Frame.of(WorkerProtocol.error(e.code(), e.getMessage())));
+                }
                 if (e.fatal()) {
                     throw e;
                 }
@@ -179,6 +279,10 @@ final class WorkerSession implements Runnable {
             if (f == null) {
                 throw new IOException("the daemon closed the connection");
             }
+            if (evicted.get()) {
+                continue; // read away what the daemon still sends, so our error line is not lost to a reset
+            }
+            activity.received();
             if (!f.type().equals("sample")) {
                 queue(Frame.of(WorkerProtocol.error("unexpected", "a worker takes sample lines, not '" + f.type() + "'")));
                 continue;
@@ -203,21 +307,34 @@ final class WorkerSession implements Runnable {
         }
     }
 
-    private void writeLoop(FrameWriter out) {
+    private void writeLoop() {
         long nextBeat = System.nanoTime();
         try {
-            while (open) {
+            while (open && !evicted.get()) {
                 long now = System.nanoTime();
-                if (now - nextBeat >= 0) {
-                    out.write(WorkerProtocol.heartbeat(hosted.ready(), hosted.readiness()));
-                    nextBeat = now + TimeUnit.MILLISECONDS.toNanos(WorkerProtocol.HEARTBEAT_MILLIS);
+                Frame f = null;
+                if (now - nextBeat < 0) {
+                    f = outbound.poll(Math.max(1, nextBeat - now), TimeUnit.NANOSECONDS);
                 }
-                Frame f = outbound.poll(Math.max(1, nextBeat - now), TimeUnit.NANOSECONDS);
-                while (f != null) {
-                    out.write(f);
-                    f = outbound.poll();
+                writeLock.lock();
+                try {
+                    if (evicted.get()) {
+                        return;
+                    }
+                    now = System.nanoTime();
+                    if (now - nextBeat >= 0) {
+                        out.write(WorkerProtocol.heartbeat(hosted.ready(), hosted.readiness()));
+                        nextBeat = now + TimeUnit.MILLISECONDS.toNanos(WorkerProtocol.HEARTBEAT_MILLIS);
+                    }
+                    while (f != null) {
+                        out.write(f);
+                        f = outbound.poll();
+                    }
+                    out.flush();
+                } finally {
+                    writeLock.unlock();
                 }
-                out.flush();
+                activity.delivered();
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

@@ -44,6 +44,58 @@ class ReplayCommandTest {
         assertThat(run.err()).contains("not whole");
     }
 
+    /** A recording of 200 outputs with the first byte of the 101st record's line broken; returns that offset. */
+    private long damagedRecording(Path file) throws Exception {
+        Path whole = dir.resolve("whole.habla-rec");
+        org.habla.graph.ManualClock clock = new org.habla.graph.ManualClock(1_000_000);
+        com.fasterxml.jackson.databind.node.ObjectNode config =
+                com.fasterxml.jackson.databind.node.JsonNodeFactory.instance.objectNode().put("system", "x");
+        try (org.habla.recording.Recorder r = org.habla.recording.Recorder.create(whole,
+                new org.habla.recording.RecordingHeader(1_000_000, 1.0, config, "", java.util.Map.of()), clock)) {
+            for (int i = 1; i <= 200; i++) {
+                clock.advanceMillis(10);
+                r.output("reward", "reward", new org.habla.sample.Sample(new org.habla.sample.NumberValue(i),
+                        "reward.reward", i, clock.nowMicros(), false));
+            }
+        }
+        byte[] bytes = Files.readAllBytes(whole);
+        long at = -1;
+        for (int i = 0, lines = 0; i < bytes.length; i++) {
+            if (bytes[i] == '\n' && ++lines == 101) {
+                at = i + 1;
+                break;
+            }
+        }
+        bytes[(int) at] = '#';
+        Files.write(file, bytes);
+        return at;
+    }
+
+    @Test
+    void aRecordingDamagedInTheMiddleIsRefusedNamingTheByteOffset() throws Exception {
+        Path damaged = dir.resolve("damaged.habla-rec");
+        long at = damagedRecording(damaged);
+
+        CommandRun run = replay(damaged.toString(), "--as-fast-as-possible");
+
+        assertThat(run.exitCode()).isEqualTo(ExitCodes.USAGE_OR_CONFIG);
+        assertThat(run.err()).contains("the recording is damaged at byte " + at + " (")
+                .contains("Nothing was replayed; --salvage replays the part before byte " + at);
+        assertThat(run.out()).doesNotContain("replayed");
+    }
+
+    @Test
+    void salvageReplaysWhatPrecedesTheDamageAndSaysWhereItStopped() throws Exception {
+        Path damaged = dir.resolve("damaged.habla-rec");
+        long at = damagedRecording(damaged);
+
+        CommandRun run = replay(damaged.toString(), "--as-fast-as-possible", "--salvage");
+
+        assertThat(run.exitCode()).isEqualTo(ExitCodes.OK);
+        assertThat(run.out()).contains("the recording is damaged at byte " + at + " (")
+                .contains("everything before it was replayed");
+    }
+
     @Test
     void speedAndAsFastAsPossibleExcludeEachOther() {
         CommandRun run = replay("x.habla-rec", "--speed", "2", "--as-fast-as-possible");

@@ -27,6 +27,7 @@ class BrokenConfigTest {
         system-not-a-string               | $.system                        | must be a string, not a number (5)
         limit-not-an-integer              | $.limits.maxLineBytes           | must be an integer in 1..16777216, not a string ("64k")
         limit-zero                        | $.limits.maxClientsPerPort      | must be in 1..1024, was 0
+        limit-socket-budget-below-largest-block | $.limits.socketBlockBudgetBytes | must not be less than maxBinaryBytes (33554432)
         safety-unknown-key                | $.safety.watchdog               | unknown key 'watchdog' (allowed: watchdogMs)
         status-port-out-of-range          | $.status.port                   | must be in 0..65535, was 70000
         interfaces-not-an-array           | $.interfaces                    | must be an array, not an object
@@ -34,6 +35,7 @@ class BrokenConfigTest {
         unknown-bridge-type               | $.bridges[0].type               | unknown bridge type 'carrier-pigeon' (known: none registered)
         bad-address                       | $.interfaces[0].address         | '127.0.0.1:port' is not an address
         reconnect-max-below-initial       | $.interfaces[0].reconnect.maxMs | must not be less than initialMs (500), was 100
+        reconnect-keepalive-count-zero    | $.interfaces[0].reconnect.tcpKeepAliveCount | must be in 1..100, was 0
         bad-interface-id                  | $.interfaces[0].id              | '1robot' is not an id: a letter then
         duplicate-interface-id            | $.interfaces[1].id              | duplicate interface id 'robot': already used at $.interfaces[0].id
         duplicate-method-id               | $.methods[1].id                 | duplicate method id 'sonar': already used at $.methods[0].id
@@ -86,6 +88,11 @@ class BrokenConfigTest {
         control-without-expose            | $.methods[0].inputs.action      | 'control' needs a control socket: give the method an 'expose'
         source-not-a-string               | $.methods[0].inputs.ranges      | must be a string, not a number (5)
         method-not-an-object              | $.methods[0]                    | must be an object, not a string ("sonar")
+        wiring-cycle                      | $.methods[0].inputs.in          | 'b.out' closes a wiring cycle (a -> b -> a): a sample could go round it for ever. Rewire it, or declare it with "feedback": ["in"] on method 'a'
+        wiring-cycle-of-one-method        | $.methods[0].inputs.in          | 'echo.out' closes a wiring cycle (echo -> echo)
+        feedback-on-no-cycle              | $.methods[1].feedback[0]        | 'in' ('sonar.ranges') is on no wiring cycle: nothing to declare
+        feedback-not-an-input             | $.methods[0].feedback[0]        | 'inn' is not a wired input of 'a' (wired: in)
+        feedback-from-a-channel           | $.methods[0].feedback[0]        | 'ranges' reads '@robot.sonar': only a wire from a method's output can close a cycle
         """)
     void brokenConfigIsRejectedWithOneErrorAtItsPath(String file, String path, String message) throws URISyntaxException {
         Path config = Path.of(getClass().getResource("/configs/broken/" + file + ".json").toURI());

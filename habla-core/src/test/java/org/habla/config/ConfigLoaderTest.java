@@ -36,7 +36,7 @@ class ConfigLoaderTest {
         assertThat(config.status()).isEqualTo(new StatusConfig("127.0.0.1", 7199));
         assertThat(config.interfaces()).containsExactly(new InterfaceConfig("robot", "robot-sim",
                 new InterfaceAddress("127.0.0.1", OptionalInt.of(8101)), new TestDriver.Params(8),
-                new Reconnect(100, 5_000, 3_000, 3_000)));
+                new Reconnect(100, 5_000, 3_000, 0)));
         assertThat(config.methods()).extracting(MethodConfig::id)
                 .containsExactly("sonar", "nearest", "distance", "action", "safety", "wheels");
 
@@ -54,6 +54,18 @@ class ConfigLoaderTest {
         assertThat(wheels.inputs()).containsEntry("velocity", new Source.MethodOutput("safety", "velocity"));
         assertThat(wheels.commands()).containsEntry("motion", new ChannelRef("robot", "motion"));
         assertThat(wheels.params()).isEqualTo(new TestMethods.WheelsParams(0.33, TestMethods.WheelsParams.Stop.HARD));
+    }
+
+    @Test
+    void everySocketLimitIsReadAndBudgetsLeftOutGrowWithTheLargestBlock() throws Exception {
+        HablaConfig config = loader.parse("""
+                {"system": "s", "limits": {"maxPendingPerPort": 32, "idleTimeoutMs": 0, "frameTimeoutMs": 2500,
+                  "evictableIdleMs": 700, "processBlockBudgetBytes": 100000000}}""");
+        assertThat(config.limits()).isEqualTo(Limits.DEFAULTS.withCaps(16, 32).withDeadlines(0, 2_500, 700)
+                .withBlockBudgets(Limits.SOCKET_BLOCK_BUDGET_BYTES, 100_000_000));
+        Limits big = loader.parse("{\"system\": \"s\", \"limits\": {\"maxBinaryBytes\": 100000000}}").limits();
+        assertThat(big.socketBlockBudgetBytes()).isEqualTo(100_000_000);
+        assertThat(big.processBlockBudgetBytes()).isEqualTo(100_000_000);
     }
 
     @Test
@@ -146,6 +158,21 @@ class ConfigLoaderTest {
                 () -> loader.parse("{\"system\": \"s\", \"my key\": 1}"));
 
         assertThat(e.errors()).singleElement().extracting(ConfigError::path).isEqualTo("$[\"my key\"]");
+    }
+
+    @Test
+    void aDeclaredCycleLoadsAndEveryWireOnItIsACycleInput() throws Exception {
+        HablaConfig config = loader.parse("""
+                {"system": "t", "methods": [
+                  {"id": "a", "type": "relay", "layer": "processing", "inputs": {"in": "b.out"}, "feedback": ["in"]},
+                  {"id": "b", "type": "relay", "layer": "processing", "inputs": {"in": "a.out"}},
+                  {"id": "c", "type": "relay", "layer": "processing", "inputs": {"in": "b.out"}}]}
+                """);
+
+        assertThat(config.method("a").orElseThrow().feedback()).containsExactly("in");
+        assertThat(config.cycleInputs("a")).containsExactly("in");
+        assertThat(config.cycleInputs("b")).containsExactly("in");
+        assertThat(config.cycleInputs("c")).isEmpty();
     }
 
     @Test

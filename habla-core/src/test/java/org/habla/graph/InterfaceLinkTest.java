@@ -2,6 +2,7 @@ package org.habla.graph;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import ch.qos.logback.classic.Level;
 import com.fasterxml.jackson.databind.JsonNode;
 import java.util.ArrayList;
 import java.util.List;
@@ -27,6 +28,7 @@ import org.habla.method.Output;
 import org.habla.net.ControlPoint;
 import org.habla.plugin.NoParams;
 import org.habla.sample.NumberValue;
+import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -35,6 +37,9 @@ import org.junit.jupiter.api.Timeout;
 /** The hardware side of the engine against a robot on loopback: reconnecting, staleness, the watchdog. */
 @Timeout(60)
 class InterfaceLinkTest {
+
+    /** The bound of every wait for something that must happen: generous, as the suite runs on busy machines. */
+    private static final long WAIT_MS = 15_000;
 
     private final List<AutoCloseable> toClose = new ArrayList<>();
 
@@ -47,6 +52,12 @@ class InterfaceLinkTest {
 
     /** Sensing: @robot.value → s → p → v (exposed). Acting: control → cmd (virtual) → fwd → act → @robot.motor. */
     private MethodGraph start(int port, long watchdogMs) {
+        MethodGraph g = build(port, watchdogMs);
+        g.start();
+        return g;
+    }
+
+    private MethodGraph build(int port, long watchdogMs) {
         MethodConfig s = new MethodConfig("s", "add-one-sensor", Layer.SENSORS_ACTUATORS,
                 Map.of("in", new Source.Channel("robot", "value")), Map.of(), new NoParams(), Optional.empty(),
                 Optional.empty());
@@ -72,7 +83,6 @@ class InterfaceLinkTest {
                 new StatusConfig("127.0.0.1", 0), List.of(robot), List.of(s, p, v, cmd, fwd, act));
         MethodGraph g = MethodGraph.build(config, TestMethods.registry(), EngineClock.system());
         toClose.add(g);
-        g.start();
         return g;
     }
 
@@ -97,7 +107,7 @@ class InterfaceLinkTest {
 
     /** The driver's session is up once the link says so, a moment after the robot accepted the connection. */
     private static void awaitUp(MethodGraph g) throws InterruptedException {
-        long end = System.nanoTime() + 5_000_000_000L;
+        long end = System.nanoTime() + WAIT_MS * 1_000_000L;
         while (!g.status().path("interfaces").get(0).path("up").asBoolean() && System.nanoTime() < end) {
             Thread.sleep(5);
         }
@@ -109,14 +119,14 @@ class InterfaceLinkTest {
      * change happened before the recorder subscribed.
      */
     private static void awaitStaleness(ControlPoint p, Recorder rec, boolean wanted) throws InterruptedException {
-        long end = System.nanoTime() + 5_000_000_000L;
+        long end = System.nanoTime() + WAIT_MS * 1_000_000L;
         while (System.nanoTime() < end) {
             Boolean next = rec.staleness.poll(20, TimeUnit.MILLISECONDS);
             if ((next != null && next == wanted) || (next == null && p.stale() == wanted)) {
                 return;
             }
         }
-        throw new AssertionError("no staleness notice " + wanted + " within 5 s");
+        throw new AssertionError("no staleness notice " + wanted + " within " + WAIT_MS + " ms");
     }
 
     private static void write(ControlPoint p, double value) throws ControlPoint.Rejected {
@@ -128,10 +138,10 @@ class InterfaceLinkTest {
         FakeLineRobot robot = new FakeLineRobot(0);
         toClose.add(robot);
         MethodGraph g = start(robot.port(), 0);
-        assertThat(robot.awaitClient(5_000)).isTrue();
+        assertThat(robot.awaitClient(WAIT_MS)).isTrue();
         awaitUp(g);
         write(point(g, "cmd"), 0.25);
-        assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.25");
+        assertThat(robot.next(WAIT_MS)).isEqualTo("cmd motor 0.25");
     }
 
     @Test
@@ -139,14 +149,14 @@ class InterfaceLinkTest {
         FakeLineRobot robot = new FakeLineRobot(0);
         toClose.add(robot);
         MethodGraph g = start(robot.port(), 0);
-        assertThat(robot.awaitClient(5_000)).isTrue();
+        assertThat(robot.awaitClient(WAIT_MS)).isTrue();
         ControlPoint.Rejected rejected = org.assertj.core.api.Assertions.catchThrowableOfType(
                 ControlPoint.Rejected.class, () -> write(point(g, "cmd"), 500));
         assertThat(rejected).isNotNull();
         assertThat(rejected.code()).isEqualTo("bad_value");
         assertThat(rejected.getMessage()).contains("within ±100");
         write(point(g, "cmd"), 0.75);
-        assertThat(robot.next(5_000)).as("the refused value was never queued").isEqualTo("cmd motor 0.75");
+        assertThat(robot.next(WAIT_MS)).as("the refused value was never queued").isEqualTo("cmd motor 0.75");
     }
 
     @Test
@@ -167,12 +177,12 @@ class InterfaceLinkTest {
         FakeLineRobot robot = new FakeLineRobot(0);
         toClose.add(robot);
         MethodGraph g = start(robot.port(), 300);
-        assertThat(robot.awaitClient(5_000)).isTrue();
+        assertThat(robot.awaitClient(WAIT_MS)).isTrue();
         awaitUp(g);
         long t0 = System.nanoTime();
         write(point(g, "cmd"), 0.5);
-        assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.5");
-        assertThat(robot.next(5_000)).isEqualTo("stop");
+        assertThat(robot.next(WAIT_MS)).isEqualTo("cmd motor 0.5");
+        assertThat(robot.next(WAIT_MS)).isEqualTo("stop");
         long tookMs = (System.nanoTime() - t0) / 1_000_000;
         assertThat(tookMs).isGreaterThanOrEqualTo(250);
         JsonNode w = g.status().path("watchdog");
@@ -180,7 +190,7 @@ class InterfaceLinkTest {
         assertThat(w.path("trips").asLong()).isEqualTo(1);
         // A new control value lifts the stop.
         write(point(g, "cmd"), 0.1);
-        assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.1");
+        assertThat(robot.next(WAIT_MS)).isEqualTo("cmd motor 0.1");
     }
 
     @Test
@@ -188,12 +198,12 @@ class InterfaceLinkTest {
         FakeLineRobot robot = new FakeLineRobot(0);
         toClose.add(robot);
         MethodGraph g = start(robot.port(), 0);
-        assertThat(robot.awaitClient(5_000)).isTrue();
+        assertThat(robot.awaitClient(WAIT_MS)).isTrue();
         awaitUp(g);
         write(point(g, "cmd"), 0.5);
-        assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.5");
+        assertThat(robot.next(WAIT_MS)).isEqualTo("cmd motor 0.5");
         point(g, "cmd").writerLeft();
-        assertThat(robot.next(2_000)).isEqualTo("stop");
+        assertThat(robot.next(WAIT_MS)).isEqualTo("stop");
     }
 
     @Test
@@ -203,11 +213,11 @@ class InterfaceLinkTest {
         MethodGraph g = start(port, 0);
         Recorder rec = new Recorder();
         point(g, "v").subscribe(rec);
-        assertThat(robot.awaitClient(5_000)).isTrue();
+        assertThat(robot.awaitClient(WAIT_MS)).isTrue();
         awaitUp(g);
         awaitStaleness(point(g, "v"), rec, false);
         robot.send("value 1");
-        Sample fresh = rec.samples.poll(5, TimeUnit.SECONDS);
+        Sample fresh = rec.samples.poll(WAIT_MS, TimeUnit.MILLISECONDS);
         assertThat(fresh.payload()).isEqualTo(new NumberValue(4));
         assertThat(fresh.stale()).isFalse();
 
@@ -216,7 +226,7 @@ class InterfaceLinkTest {
         assertThat(point(g, "v").stale()).isTrue();
         // While the robot is away, a motion command is dropped, not queued.
         write(point(g, "cmd"), 0.7);
-        long end = System.nanoTime() + 5_000_000_000L;
+        long end = System.nanoTime() + WAIT_MS * 1_000_000L;
         while (g.status().path("interfaces").get(0).path("commandsDropped").asLong() == 0 && System.nanoTime() < end) {
             Thread.sleep(10);
         }
@@ -224,11 +234,11 @@ class InterfaceLinkTest {
 
         FakeLineRobot again = new FakeLineRobot(port);
         toClose.add(again);
-        assertThat(again.awaitClient(5_000)).isTrue();
+        assertThat(again.awaitClient(WAIT_MS)).isTrue();
         awaitUp(g);
         awaitStaleness(point(g, "v"), rec, false);
         again.send("value 2");
-        Sample after = rec.samples.poll(5, TimeUnit.SECONDS);
+        Sample after = rec.samples.poll(WAIT_MS, TimeUnit.MILLISECONDS);
         assertThat(after.payload()).isEqualTo(new NumberValue(5));
         assertThat(after.stale()).isFalse();
         // The command sent while the robot was away never arrives late.
@@ -238,18 +248,96 @@ class InterfaceLinkTest {
     }
 
     @Test
+    void aStandStillCommandDroppedWhileTheLinkIsDownIsCountedWithoutAWarning() throws Exception {
+        try (LogLines log = new LogLines(InterfaceLink.class)) {
+            MethodGraph g = start(1, 0);
+            write(point(g, "cmd"), 0);
+            awaitDropped(g, 1);
+            assertThat(log.at(Level.WARN)).as("nothing was lost by dropping a stop").isEmpty();
+            write(point(g, "cmd"), 0.5);
+            awaitDropped(g, 2);
+            assertThat(log.at(Level.WARN)).singleElement().asString()
+                    .isEqualTo("interface robot: command on motor dropped (2 dropped so far): link robot/main is down");
+        }
+    }
+
+    private static void awaitDropped(MethodGraph g, long n) throws InterruptedException {
+        long end = System.nanoTime() + 10_000_000_000L;
+        while (g.status().path("interfaces").get(0).path("commandsDropped").asLong() < n && System.nanoTime() < end) {
+            Thread.sleep(10);
+        }
+        assertThat(g.status().path("interfaces").get(0).path("commandsDropped").asLong()).isEqualTo(n);
+    }
+
+    @Test
+    void theLinkRecordOfAChangeGoesOutOnlyOnceTheStalenessItTellsOfIsInForce() throws Exception {
+        FakeLineRobot robot = new FakeLineRobot(0);
+        int port = robot.port();
+        MethodGraph g = build(port, 0);
+        // Both are told on the link's own thread, in the order the engine does things.
+        BlockingQueue<String> events = new LinkedBlockingQueue<>();
+        point(g, "v").subscribe(new ControlPoint.Listener() {
+            @Override
+            public void onSample(Output<?> output, Sample sample) {
+            }
+
+            @Override
+            public void onStale(boolean stale, String why) {
+                events.add("stale " + stale);
+            }
+        });
+        g.interfaceLink("robot").reading("link").subscribe(
+                s -> events.add("link " + ((RecordValue) s.payload()).get("up").asBoolean()));
+        g.start();
+        List<String> seen = new ArrayList<>();
+        awaitEvent(events, seen, "link true");
+        robot.close();
+        awaitEvent(events, seen, "link false");
+        FakeLineRobot again = new FakeLineRobot(port);
+        toClose.add(again);
+        awaitEvent(events, seen, "link true");
+
+        boolean linkUp = false;
+        boolean stale = true;
+        for (String e : seen) {
+            if (e.startsWith("stale ")) {
+                stale = e.equals("stale true");
+            } else if (e.equals("link " + !linkUp)) {
+                linkUp = !linkUp;
+                assertThat(stale).as("stale when the record saying up=%s went out (events %s)", linkUp, seen)
+                        .isEqualTo(!linkUp);
+            }
+        }
+    }
+
+    private static void awaitEvent(BlockingQueue<String> events, List<String> seen, String wanted)
+            throws InterruptedException {
+        long end = System.nanoTime() + 10_000_000_000L;
+        while (System.nanoTime() < end) {
+            String e = events.poll(50, TimeUnit.MILLISECONDS);
+            if (e != null) {
+                seen.add(e);
+                if (e.equals(wanted)) {
+                    return;
+                }
+            }
+        }
+        throw new AssertionError("no '" + wanted + "' within 10 s; saw " + seen);
+    }
+
+    @Test
     void malformedReadingsAreCountedAndTheLinkStaysUp() throws Exception {
         FakeLineRobot robot = new FakeLineRobot(0);
         toClose.add(robot);
         MethodGraph g = start(robot.port(), 0);
         Recorder rec = new Recorder();
         point(g, "v").subscribe(rec);
-        assertThat(robot.awaitClient(5_000)).isTrue();
+        assertThat(robot.awaitClient(WAIT_MS)).isTrue();
         awaitUp(g);
         robot.send("value not-a-number");
         robot.send("nosuchchannel 3");
         robot.send("value 7");
-        assertThat(rec.samples.poll(5, TimeUnit.SECONDS).payload()).isEqualTo(new NumberValue(10));
+        assertThat(rec.samples.poll(WAIT_MS, TimeUnit.MILLISECONDS).payload()).isEqualTo(new NumberValue(10));
         JsonNode link = g.status().path("interfaces").get(0);
         assertThat(link.path("malformed").asLong()).isEqualTo(1);
         assertThat(link.path("unknownChannel").asLong()).isEqualTo(1);

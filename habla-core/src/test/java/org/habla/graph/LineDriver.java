@@ -14,6 +14,7 @@ import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.InterfaceAddress;
 import org.habla.driver.LinkSession;
+import org.habla.driver.Liveness;
 import org.habla.driver.ReadingSink;
 import org.habla.plugin.DriverProvider;
 import org.habla.plugin.NoParams;
@@ -42,7 +43,7 @@ final class LineDriver implements Driver {
 
     @Override
     public List<Connection> connections() {
-        return List.of(new Connection("main", port, Set.of("motor"), Session::new));
+        return List.of(new Connection("main", port, Set.of("motor"), Liveness.quiet(), Session::new));
     }
 
     static String readLine(InputStream in) throws IOException {

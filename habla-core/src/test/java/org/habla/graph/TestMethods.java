@@ -3,6 +3,8 @@ package org.habla.graph;
 import java.time.Duration;
 import java.util.List;
 import java.util.Set;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import org.habla.method.Delivery;
 import org.habla.method.Input;
 import org.habla.method.Layer;
@@ -86,15 +88,41 @@ final class TestMethods {
         }
     }
 
-    /** Spends a long time on every sample, as speech recognition would (busy, not sleeping). */
+    /**
+     * Holds every sample until the test opens its {@link #gate}, as a long recognition holds its thread: while it
+     * is {@link #busy}, the test can show what goes on without it. Gives up after {@link #HOLD_LIMIT_S}.
+     */
     static final class SlowProcessing extends ProcessingMethod {
+        static final long HOLD_LIMIT_S = 60;
         final Output<NumberValue> out = output("out", NumberValue.class);
         final Input<NumberValue> in = input("in", NumberValue.class, Delivery.latest(), this::on);
+        final CountDownLatch gate = new CountDownLatch(1);
+        volatile boolean busy;
 
         private void on(NumberValue v, Sample s) {
-            long until = System.nanoTime() + 2_000_000_000L;
-            while (System.nanoTime() < until) {
-                Thread.onSpinWait();
+            busy = true;
+            try {
+                gate.await(HOLD_LIMIT_S, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            } finally {
+                busy = false;
+            }
+            emit(out, v);
+        }
+    }
+
+    /** Takes values from control into a queue of 64 and holds each until the test opens its {@link #gate}. */
+    static final class GatedVirtual extends VirtualMethod {
+        final Output<NumberValue> out = output("out", NumberValue.class);
+        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(64), this::on);
+        final CountDownLatch gate = new CountDownLatch(1);
+
+        private void on(NumberValue v, Sample s) {
+            try {
+                gate.await(SlowProcessing.HOLD_LIMIT_S, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
             }
             emit(out, v);
         }
@@ -159,6 +187,7 @@ final class TestMethods {
                 new Simple("forward-processing", Layer.PROCESSING, ForwardProcessing::new),
                 new Simple("forward-actuator", Layer.SENSORS_ACTUATORS, ForwardActuator::new),
                 new Simple("slow", Layer.PROCESSING, SlowProcessing::new),
+                new Simple("gated-virtual", Layer.VIRTUAL, GatedVirtual::new),
                 new Simple("ticker", Layer.PROCESSING, Ticker::new),
                 new Simple("fragile", Layer.PROCESSING, Fragile::new)),
                 List.of(new LineDriver.Provider()));

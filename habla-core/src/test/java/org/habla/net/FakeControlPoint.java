@@ -57,6 +57,7 @@ final class FakeControlPoint implements ControlPoint {
     private final AtomicLong seq = new AtomicLong();
     private volatile boolean stale;
     private volatile Rejected rejectNext;
+    private volatile ControlLease lease;
     final BlockingQueue<Written> writes = new LinkedBlockingQueue<>();
     final AtomicInteger writersLeft = new AtomicInteger();
 
@@ -68,6 +69,19 @@ final class FakeControlPoint implements ControlPoint {
     /** A method with outputs of every kind and two control inputs. */
     static FakeControlPoint twoWay() {
         return new FakeControlPoint("tracker", true, false);
+    }
+
+    /** The same, but what is written reaches an actuator: one commander at a time, lapsing after silence. */
+    static FakeControlPoint commanded(long lapseMillis) {
+        FakeControlPoint p = new FakeControlPoint("tracker", true, false);
+        p.lease = new ControlLease(p.name, lapseMillis, () -> System.currentTimeMillis() * 1_000, p::writerLeft,
+                line -> p.listeners.forEach(l -> l.onControl(line)));
+        return p;
+    }
+
+    @Override
+    public java.util.Optional<ControlLease> lease() {
+        return java.util.Optional.ofNullable(lease);
     }
 
     @Override
@@ -142,6 +156,13 @@ final class FakeControlPoint implements ControlPoint {
         stale = isStale;
         for (Listener l : listeners) {
             l.onStale(isStale, why);
+        }
+    }
+
+    /** Tells every listener a notice, as a method the socket's values reach would. */
+    void notice(org.habla.method.ControlNotice notice) {
+        for (Listener l : listeners) {
+            l.onNotice(notice);
         }
     }
 

@@ -49,6 +49,11 @@ final class TestClient implements AutoCloseable {
         out.flush();
     }
 
+    /** The connection itself, for tests that need to look under the codec. */
+    Socket socket() {
+        return socket;
+    }
+
     void sendRaw(byte[] bytes) throws IOException {
         out.write(bytes);
         out.flush();

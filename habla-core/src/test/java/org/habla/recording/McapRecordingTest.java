@@ -120,6 +120,7 @@ class McapRecordingTest {
             if (rec.cut().isPresent()) {
                 assertThat(rec.cut().get().offset() + rec.cut().get().ignoredBytes()).isEqualTo(cutAt);
                 assertThat(rec.cut().get().reason()).isNotBlank();
+                assertThat(rec.cut().get().torn()).as("a file cut at %d ends in a torn record", cutAt).isTrue();
             }
         }
         // A kill in the middle of a run loses only the chunk being written: cut inside the third chunk, the
@@ -143,6 +144,7 @@ class McapRecordingTest {
         List<long[]> chunks = chunks(bytes);
         assertThat(chunks.size()).as("chunks in the file").isGreaterThanOrEqualTo(3);
         long[] victim = chunks.get(chunks.size() / 2);
+        long[] after = chunks.get(chunks.size() / 2 + 1);
         byte[] damaged = bytes.clone();
         damaged[(int) (victim[0] + victim[1] - 5)] ^= 0x5a;
         Path file = dir.resolve("damaged.mcap");
@@ -152,6 +154,8 @@ class McapRecordingTest {
         assertThat(cut).isPresent();
         assertThat(cut.get().offset()).isEqualTo(victim[0]);
         assertThat(cut.get().reason()).startsWith("damaged:").contains("byte " + victim[0]);
+        assertThat(cut.get().damage()).as("a chunk failing its CRC with whole chunks after it is not a torn end").isTrue();
+        assertThat(cut.get().nextWholeRecord()).hasValue(after[0]);
         assertThat(rec.events()).isNotEmpty().isEqualTo(full.events().subList(0, rec.events().size()));
         assertThat(rec.events().size()).isLessThan(full.events().size());
     }

@@ -143,8 +143,68 @@ class RecordingFileTest {
                 assertThat(rec.cut().get().offset()).isEqualTo(lastWholeEnd);
                 assertThat(rec.cut().get().ignoredBytes()).isEqualTo(cutAt - lastWholeEnd);
                 assertThat(rec.cut().get().reason()).isNotBlank();
+                assertThat(rec.cut().get().torn()).as("a file cut at %d ends in a torn record", cutAt).isTrue();
             }
         }
+    }
+
+    /** Where each record after the header starts, and the file's length last. */
+    private static List<Long> recordStarts(Recording full) throws IOException {
+        List<Long> starts = new ArrayList<>();
+        long at = encode(RecordingCodec.header(full.header())).length;
+        for (RecordedEvent e : full.events()) {
+            starts.add(at);
+            at += encode(RecordingCodec.frame(e)).length;
+        }
+        starts.add(at);
+        return starts;
+    }
+
+    @Test
+    void aLineBrokenInTheMiddleIsDamageNamedByItsOffsetNotATornEnd() throws Exception {
+        Path whole = record(dir.resolve("whole.habla-rec"), 40);
+        Recording full = RecordingReader.readAll(whole);
+        List<Long> starts = recordStarts(full);
+        int broken = starts.size() / 2;
+        byte[] bytes = Files.readAllBytes(whole);
+        bytes[(int) (long) starts.get(broken) + 2] = '#';
+        Path damaged = Files.write(dir.resolve("damaged.habla-rec"), bytes);
+
+        Recording rec = RecordingReader.readAll(damaged);
+
+        assertThat(rec.events()).isEqualTo(full.events().subList(0, broken));
+        Cut cut = rec.cut().orElseThrow();
+        assertThat(cut.damage()).isTrue();
+        assertThat(cut.offset()).isEqualTo(starts.get(broken));
+        assertThat(cut.ignoredBytes()).isEqualTo(bytes.length - starts.get(broken));
+        assertThat(cut.nextWholeRecord()).hasValue(starts.get(broken + 1));
+        assertThat(cut.describe()).startsWith("the recording is damaged at byte " + starts.get(broken) + " (");
+    }
+
+    @Test
+    void aBlockSizeThatSwallowsTheRestOfTheFileIsDamageWhenWholeRecordsLieInside() throws Exception {
+        Path whole = record(dir.resolve("whole.habla-rec"), 40);
+        Recording full = RecordingReader.readAll(whole);
+        List<Long> starts = recordStarts(full);
+        int audio = -1;
+        for (int i = full.events().size() / 3; audio < 0; i++) {
+            if (full.events().get(i) instanceof RecordedEvent.Reading r && r.channel().equals("audio")) {
+                audio = i;
+            }
+        }
+        byte[] bytes = Files.readAllBytes(whole);
+        String line = new String(bytes, (int) (long) starts.get(audio), 400, java.nio.charset.StandardCharsets.ISO_8859_1);
+        int digits = starts.get(audio).intValue() + line.indexOf("\"bytes\":1600") + "\"bytes\":".length();
+        // 1600 becomes 9600: the block now runs over the records after it, and the file ends inside it.
+        bytes[digits] = '9';
+        byte[] shortened = Arrays.copyOf(bytes, (int) (starts.get(audio) + 5_000));
+        Path damaged = Files.write(dir.resolve("swallowed.habla-rec"), shortened);
+
+        Cut cut = RecordingReader.readAll(damaged).cut().orElseThrow();
+
+        assertThat(cut.offset()).isEqualTo(starts.get(audio));
+        assertThat(cut.damage()).as("whole records follow inside the over-long block: %s", cut).isTrue();
+        assertThat(cut.nextWholeRecord()).hasValue(starts.get(audio + 1));
     }
 
     @Test

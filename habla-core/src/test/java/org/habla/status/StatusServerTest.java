@@ -9,8 +9,11 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
+import java.io.OutputStream;
 import java.net.Socket;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
+import org.habla.config.Limits;
 import org.habla.config.StatusConfig;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -55,6 +58,71 @@ class StatusServerTest {
             assertThat(read(server.port()).get(0)).contains("\"code\":\"snapshot_failed\"", "engine busy");
             assertThat(read(server.port())).containsExactly("{\"ok\":true}");
         }
+    }
+
+    /** A snapshot far larger than what the kernel buffers for a client that does not read. */
+    private static ObjectNode hugeSnapshot() {
+        return JsonNodeFactory.instance.objectNode().put("pad", "x".repeat(8 << 20));
+    }
+
+    @Test
+    void aClientThatNeverTakesItsAnswerIsDisconnectedAtTheFrameDeadline() throws Exception {
+        Limits limits = Limits.DEFAULTS.withDeadlines(60_000, 300, 10_000);
+        try (StatusServer server = new StatusServer(new StatusConfig("127.0.0.1", 7099), limits,
+                StatusServerTest::hugeSnapshot);
+                Socket s = new Socket("127.0.0.1", startOnAnyPort(server))) {
+            OutputStream out = s.getOutputStream();
+            // The client never reads. Each byte it writes lands unread on the server, so that the server's
+            // close resets the connection and the next write fails: that is how the client sees it closed.
+            boolean closed = false;
+            long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+            while (!closed && System.nanoTime() < until) {
+                try {
+                    out.write('x');
+                    out.flush();
+                    Thread.sleep(20);
+                } catch (IOException e) {
+                    closed = true;
+                }
+            }
+            assertThat(closed).as("the server gave up on a client that does not read").isTrue();
+            assertThat(server.answering()).isZero();
+        }
+    }
+
+    @Test
+    void clientsThatDoNotReadCannotHoldTheEndpoint() throws Exception {
+        Limits limits = Limits.DEFAULTS.withCaps(16, 4).withDeadlines(60_000, 60_000, 10_000);
+        AtomicInteger calls = new AtomicInteger();
+        try (StatusServer server = new StatusServer(new StatusConfig("127.0.0.1", 7099), limits, () -> {
+            calls.incrementAndGet();
+            return hugeSnapshot();
+        })) {
+            int port = startOnAnyPort(server);
+            java.util.List<Socket> crowd = new java.util.ArrayList<>();
+            try {
+                for (int i = 0; i < 8; i++) {
+                    crowd.add(new Socket("127.0.0.1", port));
+                }
+                long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+                while (calls.get() < 8 && System.nanoTime() < until) {
+                    Thread.sleep(5);
+                }
+                assertThat(server.answering()).as("answers in flight").isLessThanOrEqualTo(4);
+                var lines = read(port);
+                assertThat(lines).hasSize(1);
+                assertThat(lines.get(0)).hasSize((8 << 20) + "{\"pad\":\"\"}".length());
+            } finally {
+                for (Socket s : crowd) {
+                    s.close();
+                }
+            }
+        }
+    }
+
+    private static int startOnAnyPort(StatusServer server) throws IOException {
+        server.startOnAnyPort();
+        return server.port();
     }
 
     @Test

@@ -16,10 +16,14 @@ public final class NetworkNamespace implements AutoCloseable {
 
     private final String name;
     private final int subnet;
+    private final String inside;
+    private final String outside;
 
-    private NetworkNamespace(String name, int subnet) {
+    private NetworkNamespace(String name, int subnet, String inside, String outside) {
         this.name = name;
         this.subnet = subnet;
+        this.inside = inside;
+        this.outside = outside;
     }
 
     /** Why a namespace cannot be made here, or null when it can. */
@@ -42,7 +46,7 @@ public final class NetworkNamespace implements AutoCloseable {
         String name = "habla-" + id + "-" + subnet;
         String outside = "hb" + id + "o" + subnet;
         String inside = "hb" + id + "i" + subnet;
-        NetworkNamespace ns = new NetworkNamespace(name, subnet);
+        NetworkNamespace ns = new NetworkNamespace(name, subnet, inside, outside);
         try {
             run("ip", "netns", "add", name);
             run("ip", "link", "add", outside, "type", "veth", "peer", "name", inside);
@@ -79,13 +83,29 @@ public final class NetworkNamespace implements AutoCloseable {
         return List.of("ip", "netns", "exec", name);
     }
 
-    /** Deletes the namespace, and with it the veth pair. */
+    /**
+     * Takes the namespace's end of the veth pair down, as if its cable were pulled: its processes keep running
+     * and keep their sockets, but nothing reaches them and nothing of theirs comes out — no FIN, no reset.
+     */
+    public void cutLink() throws IOException {
+        run("ip", "netns", "exec", name, "ip", "link", "set", inside, "down");
+    }
+
+    /**
+     * Deletes the namespace and the veth pair. The pair is deleted by name too: a socket of the namespace still
+     * closing (its FIN unanswered behind a cut link) keeps the namespace alive for minutes, and with it the pair.
+     */
     @Override
     public void close() {
         try {
             run("ip", "netns", "del", name);
         } catch (IOException e) {
             System.err.println("could not delete network namespace " + name + ": " + e.getMessage());
+        }
+        try {
+            run("ip", "link", "del", outside);
+        } catch (IOException e) {
+            // gone with the namespace
         }
     }
 

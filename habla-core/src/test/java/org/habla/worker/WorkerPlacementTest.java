@@ -50,6 +50,8 @@ import org.junit.jupiter.api.Timeout;
 class WorkerPlacementTest {
 
     private static final ObjectMapper JSON = new ObjectMapper();
+    /** Chunks of 32 KB that more than fill a silent worker's queue and both socket buffers on loopback. */
+    private static final int MAX_CHUNKS = 5_000;
     private final List<AutoCloseable> toClose = new ArrayList<>();
 
     @AfterEach
@@ -65,7 +67,7 @@ class WorkerPlacementTest {
     void aWorkerSaysHelloWithItsProtocolAndTheTypesItRuns() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.all(), 0);
         try (Socket s = new Socket("127.0.0.1", worker.port())) {
-            s.setSoTimeout(5_000);
+            s.setSoTimeout(15_000);
             JsonNode hello = JSON.readTree(lines(s).readLine());
             assertThat(hello.path("type").asText()).isEqualTo("hello");
             assertThat(hello.path("protocol").asText()).isEqualTo("habla-worker/1");
@@ -77,7 +79,7 @@ class WorkerPlacementTest {
     void aWorkerRefusesATypeItCannotRunWithAnErrorLine() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.audioOnly(), 0);
         try (Socket s = new Socket("127.0.0.1", worker.port())) {
-            s.setSoTimeout(5_000);
+            s.setSoTimeout(15_000);
             BufferedReader in = lines(s);
             in.readLine();
             send(s, "{\"type\":\"place\",\"method\":\"m\",\"methodType\":\"scale\",\"layer\":\"processing\","
@@ -94,7 +96,7 @@ class WorkerPlacementTest {
     void audioCrossesAsABinaryBlockAndABadLineCostsOnlyThatLine() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.all(), 0);
         try (Socket s = new Socket("127.0.0.1", worker.port())) {
-            s.setSoTimeout(5_000);
+            s.setSoTimeout(15_000);
             BufferedReader in = lines(s);
             in.readLine();
             send(s, "{\"type\":\"place\",\"method\":\"d\",\"methodType\":\"audio-digest\",\"layer\":\"processing\"}\n");
@@ -127,7 +129,7 @@ class WorkerPlacementTest {
     void aPlacedMethodSeesTheMetadataOfTheInterfaceChannelItsInputReads() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.all(), 0);
         try (Socket s = new Socket("127.0.0.1", worker.port())) {
-            s.setSoTimeout(5_000);
+            s.setSoTimeout(15_000);
             BufferedReader in = lines(s);
             in.readLine();
             send(s, "{\"type\":\"place\",\"method\":\"e\",\"methodType\":\"channel-echo\",\"layer\":\"processing\","
@@ -147,7 +149,7 @@ class WorkerPlacementTest {
     void aPlaceLineWithABadChannelIsRefusedNamingThePort() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.all(), 0);
         try (Socket s = new Socket("127.0.0.1", worker.port())) {
-            s.setSoTimeout(5_000);
+            s.setSoTimeout(15_000);
             BufferedReader in = lines(s);
             in.readLine();
             send(s, "{\"type\":\"place\",\"method\":\"e\",\"methodType\":\"channel-echo\",\"layer\":\"processing\","
@@ -196,7 +198,7 @@ class WorkerPlacementTest {
         BlockingQueue<Sample> seen = listen(point(g, "out"));
         await(() -> placement(g).path("up").asBoolean(), "the placement comes up");
         write(g, new NumberValue(21));
-        Sample s = seen.poll(5, TimeUnit.SECONDS);
+        Sample s = seen.poll(15, TimeUnit.SECONDS);
         assertThat(s).isNotNull();
         assertThat(s.payload()).isEqualTo(new NumberValue(63));
         assertThat(s.stale()).isFalse();
@@ -217,7 +219,7 @@ class WorkerPlacementTest {
         await(() -> method(g, "d").path("placement").path("up").asBoolean(), "the placement comes up");
         byte[] pcm = pcm(32_000);
         write(g, AudioChunk.of(AudioFormat.MONO_16K, pcm));
-        Sample s = seen.poll(5, TimeUnit.SECONDS);
+        Sample s = seen.poll(15, TimeUnit.SECONDS);
         assertThat(s).isNotNull();
         assertThat(s.payload()).isEqualTo(new TextValue(pcm.length + " " + crc(pcm) + " 16000"));
     }
@@ -248,41 +250,19 @@ class WorkerPlacementTest {
                             7002)));
             BlockingQueue<Sample> local = listen(point(g, "out"));
             await(() -> method(g, "d").path("placement").path("up").asBoolean(), "the placement comes up");
+            // Each chunk is written once the local branch has digested the one before, so the local branch never
+            // has to drop; the writes go on until the silent worker's queue and socket buffers are full and the
+            // placement drops (a few hundred chunks of 32 KB on loopback).
             byte[] pcm = pcm(32_000);
             int written = 0;
-            long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
-            while (written < 600 && System.nanoTime() < end) {
-                try {
-                    write(g, AudioChunk.of(AudioFormat.MONO_16K, pcm));
-                    written++;
-                } catch (ControlPoint.Rejected e) {
-                    Thread.sleep(1);
-                }
+            while (method(g, "d").path("placement").path("dropped").asLong() == 0) {
+                assertThat(written).as("the placement drops before %d chunks", MAX_CHUNKS).isLessThan(MAX_CHUNKS);
+                write(g, AudioChunk.of(AudioFormat.MONO_16K, pcm));
+                written++;
+                Sample s = local.poll(10, TimeUnit.SECONDS);
+                assertThat(s).as("chunk %d digested by the local branch", written).isNotNull();
+                assertThat(s.payload()).isEqualTo(new TextValue(pcm.length + " " + crc(pcm) + " 16000"));
             }
-            assertThat(written).isEqualTo(600);
-            // The local branch goes on: every chunk comes out of it, except the ones its own bounded queue
-            // and the sink's dropped and counted when this test wrote faster than they keep up (on a loaded machine).
-            long dropped = 0;
-            int received = 0;
-            long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(20);
-            while (System.nanoTime() < until) {
-                dropped = 0;
-                for (String id : List.of("here", "out")) {
-                    for (JsonNode in : method(g, id).path("inputs")) {
-                        dropped += in.path("dropped").asLong() + in.path("conflated").asLong();
-                    }
-                }
-                if (received + dropped >= written) {
-                    break;
-                }
-                if (local.poll(100, TimeUnit.MILLISECONDS) != null) {
-                    received++;
-                }
-            }
-            assertThat(received + dropped).as("local digests %d + counted drops %d", received, dropped).isEqualTo(written);
-            assertThat(received).as("most chunks digested locally").isGreaterThan(written / 2);
-            await(() -> method(g, "d").path("placement").path("dropped").asLong() > 0,
-                    "samples the silent worker cannot take are dropped and counted");
             assertThat(method(g, "d").path("placement").path("up").asBoolean()).as("heartbeats keep it up").isTrue();
         }
     }
@@ -314,7 +294,7 @@ class WorkerPlacementTest {
         assertThat(next(staleness, "fresh")).isEqualTo("fresh: all links up");
         assertThat(placement(g).path("connects").asLong()).isEqualTo(2);
         write(g, new NumberValue(2));
-        Sample s = seen.poll(5, TimeUnit.SECONDS);
+        Sample s = seen.poll(15, TimeUnit.SECONDS);
         assertThat(s).isNotNull();
         assertThat(s.payload()).isEqualTo(new NumberValue(6));
         assertThat(s.stale()).isFalse();
@@ -327,7 +307,7 @@ class WorkerPlacementTest {
         BlockingQueue<Sample> seen = listen(point(g, "out"));
         await(() -> placement(g).path("failures").asLong() >= 1, "the first connect fails");
         write(g, new NumberValue(5));
-        Sample local = seen.poll(5, TimeUnit.SECONDS);
+        Sample local = seen.poll(15, TimeUnit.SECONDS);
         assertThat(local).isNotNull();
         assertThat(local.payload()).isEqualTo(new NumberValue(15));
         assertThat(local.stale()).as("the fallback's outputs are fresh").isFalse();
@@ -336,7 +316,7 @@ class WorkerPlacementTest {
         WorkerServer worker = worker(WorkerTestMethods.all(), port);
         await(() -> placement(g).path("up").asBoolean(), "the daemon reaches the worker");
         write(g, new NumberValue(7));
-        Sample remote = seen.poll(5, TimeUnit.SECONDS);
+        Sample remote = seen.poll(15, TimeUnit.SECONDS);
         assertThat(remote).isNotNull();
         assertThat(remote.payload()).isEqualTo(new NumberValue(21));
         assertThat(placement(g).path("received").asLong()).as("now the worker computes it").isEqualTo(1);
@@ -441,16 +421,16 @@ class WorkerPlacementTest {
         }
     }
 
-    /** The next notice starting with {@code prefix}, skipping others; fails after 5 s. */
+    /** The next notice starting with {@code prefix}, skipping others; fails after 15 s. */
     private static String next(BlockingQueue<String> notices, String prefix) throws InterruptedException {
-        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(5);
+        long end = System.nanoTime() + TimeUnit.SECONDS.toNanos(15);
         while (System.nanoTime() < end) {
             String n = notices.poll(100, TimeUnit.MILLISECONDS);
             if (n != null && n.startsWith(prefix)) {
                 return n;
             }
         }
-        throw new AssertionError("no '" + prefix + "' notice within 5 s");
+        throw new AssertionError("no '" + prefix + "' notice within 15 s");
     }
 
     private static int freePort() throws Exception {

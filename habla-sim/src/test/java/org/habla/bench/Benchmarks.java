@@ -5,7 +5,10 @@ import java.util.List;
 
 /**
  * Runs the engine benchmarks and prints their figures: {@code bench/run [latency] [throughput] [fanout] [monitor]
- * [vision] [worker] [mqtt] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up).
+ * [vision] [worker] [mqtt] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up), and the
+ * reliability runs of docs/reliability.md with {@code bench/run chaos} (only when named: they take minutes), or
+ * its parts {@code hostile} and {@code soak} ({@code --hostile N}, {@code --attack-seconds S},
+ * {@code --soak-minutes M}).
  */
 public final class Benchmarks {
 
@@ -20,7 +23,8 @@ public final class Benchmarks {
             seconds = Integer.parseInt(list.get(at + 1));
         }
         boolean all = list.stream().noneMatch(a -> a.equals("latency") || a.equals("throughput") || a.equals("fanout")
-                || a.equals("vision") || a.equals("worker") || a.equals("monitor") || a.equals("recording") || a.equals("mqtt"));
+                || a.equals("vision") || a.equals("worker") || a.equals("monitor") || a.equals("recording") || a.equals("mqtt")
+                || a.equals("chaos") || a.equals("hostile") || a.equals("soak"));
         System.out.printf("HABLA engine benchmarks: %d cores, %s %s, %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name"), System.getProperty("java.version"), System.getProperty("os.name"));
         System.out.println("load average at start (1, 5, 15 min): " + loadAverage());
@@ -48,8 +52,25 @@ public final class Benchmarks {
         if (all || list.contains("mqtt")) {
             new MqttBench(1_000, 3, seconds).run();
         }
+        if (list.contains("chaos")) {
+            new WatchdogChaosBench(20).run();
+            new ReconnectChaosBench(20).run();
+            new QuietPeerChaosBench(5).run();
+        }
+        if (list.contains("chaos") || list.contains("hostile")) {
+            new HostileClientsBench(option(list, "--hostile", 1_000), option(list, "--attack-seconds", 60)).run();
+        }
+        if (list.contains("chaos") || list.contains("soak")) {
+            new SoakBench(option(list, "--soak-minutes", 10)).run();
+        }
         System.out.println("\nload average at end (1, 5, 15 min): " + loadAverage());
         System.exit(0);
+    }
+
+    /** The integer after {@code name} in the arguments, or {@code dflt}. */
+    private static int option(List<String> args, String name, int dflt) {
+        int at = args.indexOf(name);
+        return at >= 0 && at + 1 < args.size() ? Integer.parseInt(args.get(at + 1)) : dflt;
     }
 
     /** The first three fields of /proc/loadavg, or "unknown" off Linux. */

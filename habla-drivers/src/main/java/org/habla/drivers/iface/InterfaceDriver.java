@@ -6,9 +6,13 @@ import java.util.stream.Collectors;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
+import org.habla.driver.Liveness;
 
 /** A robot reached through HABLA's interface protocol: the configured channels over one connection. */
 final class InterfaceDriver implements Driver {
+
+    /** The shortest silence that means an interface program is gone. */
+    static final Duration MIN_SILENCE = Duration.ofSeconds(3);
 
     private final int port;
     private final List<ChannelDescriptor> channels;
@@ -31,6 +35,17 @@ final class InterfaceDriver implements Driver {
                 .filter(c -> c.direction() == ChannelDescriptor.Direction.COMMAND)
                 .map(ChannelDescriptor::name)
                 .collect(Collectors.toSet());
-        return List.of(new Connection("interface", port, commands, () -> new InterfaceSession(channels, keepAlive)));
+        return List.of(new Connection("interface", port, commands, liveness(keepAlive),
+                () -> new InterfaceSession(channels, keepAlive)));
+    }
+
+    /**
+     * The interface program streams its readings and answers every ping (sent each {@code keepAliveMs}) with a
+     * pong when it has nothing to report: silence for three pings, and at least {@link #MIN_SILENCE}, means it
+     * is gone.
+     */
+    static Liveness liveness(Duration pingPeriod) {
+        Duration threePings = pingPeriod.multipliedBy(3);
+        return Liveness.periodic(threePings.compareTo(MIN_SILENCE) > 0 ? threePings : MIN_SILENCE);
     }
 }

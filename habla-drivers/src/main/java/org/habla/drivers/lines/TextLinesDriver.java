@@ -6,6 +6,7 @@ import org.habla.driver.ChannelDescriptor;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.InterfaceAddress;
+import org.habla.driver.Liveness;
 import org.habla.sample.PayloadKind;
 
 /** A device that speaks in UTF-8 lines over one TCP connection: a keyboard in a terminal, a simple sensor. */
@@ -37,6 +38,7 @@ public final class TextLinesDriver implements Driver {
 
     @Override
     public List<Connection> connections() {
-        return List.of(new Connection("lines", port, Set.of(SEND), () -> new TextLinesSession(params)));
+        // A keyboard, a bumper, a door contact: silence is normal; only TCP tells that the peer is gone.
+        return List.of(new Connection("lines", port, Set.of(SEND), Liveness.quiet(), () -> new TextLinesSession(params)));
     }
 }

@@ -27,6 +27,8 @@ import org.habla.bridge.CommandRole;
 import org.habla.driver.InterfaceAddress;
 import org.habla.method.Input;
 import org.habla.method.Output;
+import org.habla.net.ClientId;
+import org.habla.net.ControlLease;
 import org.habla.net.ControlPoint;
 import org.habla.net.Frame;
 import org.habla.net.FrameException;
@@ -53,7 +55,10 @@ import org.slf4j.LoggerFactory;
  * </pre>
  *
  * A sample line is the one the control socket sends; binary samples (audio, images) are not published. Actions
- * are taken only for the sockets of the bridge's command role, through the same checks as a socket's client.
+ * are taken only for the sockets of the bridge's command role, through the same checks as a socket's client and
+ * under the same rule of one commander at a time: the bridge is one commander ({@code mqtt-bridge} and its
+ * broker), so an action while a socket client commands the socket is refused as {@code busy} on the error topic,
+ * and the bridge's leaving, when it commanded, stops the robot as a client's would.
  * Samples never wait: while the broker is away, or when more than {@link #MAX_IN_FLIGHT} messages are on their
  * way, they are dropped and counted. The connection is kept by the client library, reconnecting with a doubling
  * wait; on every (re)connection the bridge says it is online, publishes its discovery configs and subscribes again.
@@ -68,6 +73,8 @@ final class MqttBridge implements Bridge {
     private final InterfaceAddress address;
     private final MqttBridgeParams params;
     private final Map<String, ControlPoint> points = new ConcurrentHashMap<>();
+    /** The bridge as a commander of the sockets it writes to. */
+    private final ControlLease.Client commander;
     private final Map<String, Long> lastSentNanos = new ConcurrentHashMap<>();
     private final List<ControlPoint.Subscription> subscriptions = new ArrayList<>();
     private final AtomicInteger inFlight = new AtomicInteger();
@@ -84,6 +91,8 @@ final class MqttBridge implements Bridge {
     MqttBridge(InterfaceAddress address, MqttBridgeParams params) {
         this.address = address;
         this.params = params;
+        ClientId id = new ClientId("mqtt-bridge", address.toString());
+        this.commander = () -> id;
     }
 
     @Override
@@ -262,7 +271,14 @@ final class MqttBridge implements Bridge {
             return;
         }
         try {
-            p.write(input, value(input, text));
+            Input<?> in = input;
+            Payload value = value(input, text);
+            Optional<ControlLease> lease = p.lease();
+            if (lease.isPresent()) {
+                lease.get().write(commander, () -> p.write(in, value));
+            } else {
+                p.write(in, value);
+            }
             actions.increment();
         } catch (FrameException e) {
             refuse(socket, e.code(), e.getMessage(), text);
@@ -310,6 +326,7 @@ final class MqttBridge implements Bridge {
 
     @Override
     public void close() {
+        points.values().forEach(p -> p.lease().ifPresent(l -> l.left(commander)));
         subscriptions.forEach(ControlPoint.Subscription::close);
         subscriptions.clear();
         Mqtt5AsyncClient c = client;

@@ -2,6 +2,7 @@ package org.habla.drivers.mqtt;
 
 import java.io.IOException;
 import java.io.InterruptedIOException;
+import java.net.ConnectException;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
@@ -50,6 +51,15 @@ interface MqttWire {
             throw new IOException(what + " took longer than " + timeout.toMillis() + " ms");
         } catch (ExecutionException e) {
             Throwable cause = e.getCause() == null ? e : e.getCause();
+            for (Throwable c = cause; c != null; c = c.getCause()) {
+                if (c instanceof ConnectException refused) {
+                    // The broker's host answered that nothing listens: said as such, so the engine's back-off
+                    // treats it as an answer (a broker restarting) and tries again soon, without doubling.
+                    ConnectException plain = new ConnectException(what + " failed: " + refused.getMessage());
+                    plain.initCause(cause);
+                    throw plain;
+                }
+            }
             throw new IOException(what + " failed: " + (cause.getMessage() == null ? cause : cause.getMessage()), cause);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

@@ -22,8 +22,11 @@ import org.slf4j.LoggerFactory;
  *
  * <p>Handshake: SYNC0, SYNC1, SYNC2, each sent only after the robot echoed the one before; the SYNC2
  * reply names the robot. A robot that answers with SIPs still has a session open from an earlier client:
- * it gets a CLOSE and the handshake starts again. Then OPEN, PULSE, ENABLE 1 (if {@code enableMotors})
- * and SONAR 1.
+ * it gets a CLOSE and the handshake starts again. Then OPEN, STOP, PULSE, ENABLE 1 (if {@code enableMotors})
+ * and SONAR 1. The STOP comes before anything else of the new session: the controller keeps its last speed
+ * set-points through a watchdog stop and resumes them on the next packet it gets, and nothing says a new session
+ * clears them, so a robot left driving by a lost connection would otherwise drive on once its motors are
+ * enabled again.
  *
  * <p>Stopping uses STOP (#29) rather than VEL 0 + RVEL 0: one packet that zeroes translation and rotation
  * together, also ends a MOVE, HEAD or VEL2 in progress, and keeps the motors enabled. It decelerates at
@@ -60,6 +63,7 @@ final class ArcosSession implements LinkSession {
             SyncResult result = sync(in, out, sink, closedStale);
             if (result == SyncResult.DONE) {
                 send(out, ArcosCommand.OPEN.packet());
+                send(out, ArcosCommand.STOP.packet());
                 send(out, ArcosCommand.PULSE.packet());
                 if (params.enableMotors()) {
                     send(out, ArcosCommand.ENABLE.packet(1));

@@ -3,14 +3,13 @@ package org.habla.drivers.tekkotsu;
 import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
-import java.net.SocketTimeoutException;
 import org.habla.driver.LinkSession;
 import org.habla.driver.ReadingSink;
 
 /**
  * The base of sessions on Tekkotsu servers that only listen (walk, head, speaker): the robot sends
- * nothing, so silence is normal and never ends the link; bytes that do arrive are counted as
- * malformed and dropped; the robot closing the socket ends it.
+ * nothing, so their connections are declared quiet and silence never ends the link; bytes that do arrive
+ * are counted as malformed and dropped; the robot closing the socket ends it.
  */
 abstract class CommandOnlySession implements LinkSession {
 
@@ -23,12 +22,7 @@ abstract class CommandOnlySession implements LinkSession {
     @Override
     public final void readNext(InputStream in, ReadingSink sink) throws IOException {
         byte[] buffer = new byte[512];
-        int n;
-        try {
-            n = in.read(buffer);
-        } catch (SocketTimeoutException quiet) {
-            return;
-        }
+        int n = in.read(buffer);
         if (n < 0) {
             throw new EOFException("the " + server + " closed the connection");
         }

@@ -4,14 +4,13 @@ import java.io.EOFException;
 import java.io.IOException;
 import java.io.ByteArrayOutputStream;
 import java.io.InputStream;
-import java.net.SocketTimeoutException;
 import java.nio.charset.StandardCharsets;
 import java.util.Optional;
 
 /**
- * Reads {@code \n}-terminated lines of a Tekkotsu text server, at most {@link #maxBytes} a line.
- * A read time-out keeps the part of the line read so far, so a quiet server loses nothing; a longer
- * line is cut and reported through {@link Line#truncated()}.
+ * Reads {@code \n}-terminated lines of a Tekkotsu text server, at most {@link #maxBytes} a line; a longer
+ * line is cut and reported through {@link Line#truncated()}. The servers read this way (controller,
+ * emergency stop) are quiet connections: a read waits as long as the server is silent.
  */
 final class LineReader {
 
@@ -27,15 +26,10 @@ final class LineReader {
         this.maxBytes = maxBytes;
     }
 
-    /** The next line, or empty if the server was quiet until the read time-out. */
+    /** The next line. */
     Optional<Line> next(InputStream in, String server) throws IOException {
         while (true) {
-            int b;
-            try {
-                b = in.read();
-            } catch (SocketTimeoutException quiet) {
-                return Optional.empty();
-            }
+            int b = in.read();
             if (b < 0) {
                 throw new EOFException("the " + server + " closed the connection");
             }

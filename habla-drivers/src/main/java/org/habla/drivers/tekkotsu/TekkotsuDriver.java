@@ -8,6 +8,7 @@ import java.util.Set;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
+import org.habla.driver.Liveness;
 
 /**
  * The driver of a Sony Aibo ERS-7 running Tekkotsu: one connection per Tekkotsu server the params
@@ -22,10 +23,17 @@ import org.habla.driver.Driver;
  * microphone   10070  audio
  * speaker      10071  speaker (command)
  * camera       10011  camera (raw camera over TCP)
- * controller   10020  -   (switches the other servers on)
+ * controller   10020  -   (switches the other servers on; optional: the interface is up without it)
  * </pre>
  */
 final class TekkotsuDriver implements Driver {
+
+    /**
+     * World state, microphone and raw camera stream every frame (about 32 ms) without being asked: three seconds
+     * without a byte means the server is gone. The other servers speak only when spoken to, so for them silence
+     * is normal and only TCP tells that they are gone.
+     */
+    static final Liveness STREAM = Liveness.periodic(Duration.ofSeconds(3));
 
     private final List<ChannelDescriptor> channels;
     private final List<Connection> connections;
@@ -35,42 +43,45 @@ final class TekkotsuDriver implements Driver {
         List<Connection> conn = new ArrayList<>();
         if (p.worldState()) {
             ch.addAll(TekkotsuChannels.worldState());
-            conn.add(new Connection("worldstate", p.worldStatePort(), Set.of(), WorldStateSession::new));
+            conn.add(new Connection("worldstate", p.worldStatePort(), Set.of(), STREAM, WorldStateSession::new));
         }
         if (p.microphone()) {
             ch.add(TekkotsuChannels.microphone());
-            conn.add(new Connection("microphone", p.microphonePort(), Set.of(), MicrophoneSession::new));
+            conn.add(new Connection("microphone", p.microphonePort(), Set.of(), STREAM, MicrophoneSession::new));
         }
         if (p.camera()) {
             ch.add(TekkotsuChannels.camera(p.cameraSkip(), p.cameraHeightM()));
-            conn.add(new Connection("camera", p.cameraPort(), Set.of(), RawCamSession::new));
+            conn.add(new Connection("camera", p.cameraPort(), Set.of(), STREAM, RawCamSession::new));
         }
         if (p.walk()) {
             ch.add(TekkotsuChannels.walk(p));
             WalkSession.WalkLimits limits = new WalkSession.WalkLimits(p.maxForwardMps(), p.maxReverseMps(),
                     p.maxStrafeMps(), p.maxRotateRadps());
             Duration resend = Duration.ofMillis(p.walkResendMs());
-            conn.add(new Connection("walk", p.walkPort(), Set.of(TekkotsuChannels.WALK),
+            conn.add(new Connection("walk", p.walkPort(), Set.of(TekkotsuChannels.WALK), Liveness.quiet(),
                     () -> new WalkSession(limits, resend)));
         }
         if (p.head()) {
             ch.add(TekkotsuChannels.headCommand());
-            conn.add(new Connection("head", p.headPort(), Set.of(TekkotsuChannels.HEAD), HeadSession::new));
+            conn.add(new Connection("head", p.headPort(), Set.of(TekkotsuChannels.HEAD), Liveness.quiet(),
+                    HeadSession::new));
         }
         if (p.speaker()) {
             ch.add(TekkotsuChannels.speaker(p.speakerRateHz()));
             int rate = p.speakerRateHz();
-            conn.add(new Connection("speaker", p.speakerPort(), Set.of(TekkotsuChannels.SPEAKER),
+            conn.add(new Connection("speaker", p.speakerPort(), Set.of(TekkotsuChannels.SPEAKER), Liveness.quiet(),
                     () -> new SpeakerSession(rate)));
         }
         if (p.eStop()) {
             boolean release = p.releaseEStop();
-            conn.add(new Connection("estop", p.eStopPort(), Set.of(), () -> new EStopSession(release)));
+            conn.add(new Connection("estop", p.eStopPort(), Set.of(), Liveness.quiet(), () -> new EStopSession(release)));
         }
         if (p.controller()) {
             List<String> commands = ControllerSession.startCommands(p.startServers(),
                     p.camera() ? Optional.of(p.cameraSkip()) : Optional.empty());
-            conn.add(new Connection("controller", p.controllerPort(), Set.of(), () -> new ControllerSession(commands)));
+            // Optional: it only switches the other servers on, and a robot whose servers run without it still streams.
+            conn.add(new Connection("controller", p.controllerPort(), Set.of(), Liveness.quiet(),
+                    () -> new ControllerSession(commands)).asOptional());
         }
         this.channels = List.copyOf(ch);
         this.connections = List.copyOf(conn);

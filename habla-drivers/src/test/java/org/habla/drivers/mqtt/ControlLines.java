@@ -22,7 +22,7 @@ final class ControlLines implements AutoCloseable {
 
     ControlLines(int port) throws IOException {
         socket = new Socket("127.0.0.1", port);
-        socket.setSoTimeout(10_000);
+        socket.setSoTimeout(30_000);
         in = new BufferedReader(new InputStreamReader(socket.getInputStream(), StandardCharsets.UTF_8));
         out = socket.getOutputStream();
     }
@@ -34,7 +34,7 @@ final class ControlLines implements AutoCloseable {
             try {
                 line = in.readLine();
             } catch (SocketTimeoutException e) {
-                throw new AssertionError("no " + what + " within 10 s", e);
+                throw new AssertionError("no " + what + " within 30 s", e);
             }
             if (line == null) {
                 throw new AssertionError("the daemon closed the socket before " + what);

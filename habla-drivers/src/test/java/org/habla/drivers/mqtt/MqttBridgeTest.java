@@ -121,6 +121,44 @@ class MqttBridgeTest {
     }
 
     @Test
+    void anActionWhileASocketClientCommandsIsRefusedAsBusyUntilItReleasesControl(@TempDir Path tmp) throws Exception {
+        int[] ports = DaemonProcess.freePorts(3);
+        try (Mosquitto broker = Mosquitto.start(tmp)) {
+            Daemon daemon = Daemon.start(new ConfigLoader(REGISTRY).parse(config(broker, ports, "\"say\"")), REGISTRY,
+                    EngineClock.system());
+            try (ControlLines say = new ControlLines(ports[1])) {
+                assertThat(broker.client(15_000, "mosquitto_sub", "-t", "habla/bridge-test/availability", "-C", "1",
+                        "-W", "10").strip()).isEqualTo("online");
+                say.send("{\"op\":\"take\",\"id\":1}"); // commands the socket without sending anything
+                say.next(n -> n.path("id").asInt() == 1, "the answer to take");
+                broker.publish("ready", "yes", true);
+                Process seen = broker.subscriber("-t", "ready", "-t", "habla/bridge-test/say/error", "-t", "out/said",
+                        "-v", "-C", "3", "-W", "20");
+                try (BufferedReader lines = new BufferedReader(new InputStreamReader(seen.getInputStream(), UTF_8))) {
+                    assertThat(lines.readLine()).isEqualTo("ready yes");
+                    broker.publish("habla/bridge-test/say/set", "from the bridge", false);
+                    String error = lines.readLine();
+                    assertThat(error).startsWith("habla/bridge-test/say/error ");
+                    JsonNode e = JSON.readTree(error.substring(error.indexOf(' ') + 1));
+                    assertThat(e.path("code").asText()).isEqualTo("busy");
+                    assertThat(e.path("message").asText()).contains("commanded by say#1");
+                    say.send("{\"op\":\"release\",\"id\":2}");
+                    say.next(n -> n.path("id").asInt() == 2, "the answer to release");
+                    broker.publish("habla/bridge-test/say/set", "from the bridge", false);
+                    assertThat(lines.readLine()).isEqualTo("out/said from the bridge");
+                } finally {
+                    seen.destroyForcibly();
+                }
+                JsonNode control = say.next(n -> n.path("type").asText().equals("control")
+                        && n.path("holder").path("connection").asText().equals("mqtt-bridge"), "the bridge commanding");
+                assertThat(control.path("holder").path("address").asText()).isEqualTo(broker.address());
+            } finally {
+                daemon.close();
+            }
+        }
+    }
+
+    @Test
     void aBridgeNamingASocketNoMethodExposesIsAConfigErrorAtItsPath(@TempDir Path tmp) throws Exception {
         try (Mosquitto broker = Mosquitto.start(tmp)) {
             String bad = config(broker, DaemonProcess.freePorts(3), "\"say\", \"lamp\"");

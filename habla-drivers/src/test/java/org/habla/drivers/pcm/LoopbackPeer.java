@@ -21,11 +21,11 @@ public final class LoopbackPeer implements AutoCloseable {
     public LoopbackPeer() throws IOException {
         try (ServerSocket server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
             driver = new Socket(InetAddress.getLoopbackAddress(), server.getLocalPort());
-            server.setSoTimeout(2_000);
+            server.setSoTimeout(15_000);
             device = server.accept();
         }
-        driver.setSoTimeout(2_000);
-        device.setSoTimeout(2_000);
+        driver.setSoTimeout(15_000);
+        device.setSoTimeout(15_000);
         driverIn = new BufferedInputStream(driver.getInputStream());
     }
 

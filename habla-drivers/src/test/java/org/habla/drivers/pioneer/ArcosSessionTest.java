@@ -43,7 +43,7 @@ class ArcosSessionTest {
     private void connect(TinyArcosRobot r) throws IOException {
         robot = r;
         socket = new Socket(InetAddress.getLoopbackAddress(), r.port());
-        socket.setSoTimeout(2_000);
+        socket.setSoTimeout(15_000);
         in = new BufferedInputStream(socket.getInputStream());
         out = new BufferedOutputStream(socket.getOutputStream());
     }
@@ -53,13 +53,15 @@ class ArcosSessionTest {
     }
 
     @Test
-    void theHandshakeSyncsThenOpensPulsesEnablesTheMotorsAndTurnsSonarOn() throws Exception {
+    void theHandshakeSyncsThenOpensStopsPulsesEnablesTheMotorsAndTurnsSonarOn() throws Exception {
         connect(new TinyArcosRobot());
         new ArcosSession(PioneerParams.defaults()).handshake(in, out, sink);
         assertThat(robot.nextReceived()).isEqualTo(ArcosCommand.SYNC0.packet());
         assertThat(robot.nextReceived()).isEqualTo(ArcosCommand.SYNC1.packet());
         assertThat(robot.nextReceived()).isEqualTo(ArcosCommand.SYNC2.packet());
         assertThat(robot.nextReceived()).isEqualTo(ArcosCommand.OPEN.packet());
+        assertThat(robot.nextReceived()).as("set-points from an earlier session are cleared before anything else")
+                .isEqualTo(ArcosCommand.STOP.packet());
         assertThat(robot.nextReceived()).isEqualTo(ArcosCommand.PULSE.packet());
         assertThat(robot.nextReceived()).isEqualTo(ArcosCommand.ENABLE.packet(1));
         assertThat(robot.nextReceived()).isEqualTo(ArcosCommand.SONAR.packet(1));
@@ -75,7 +77,7 @@ class ArcosSessionTest {
     void withEnableMotorsOffTheHandshakeLeavesTheMotorsAlone() throws Exception {
         connect(new TinyArcosRobot());
         session("{\"enableMotors\": false}").handshake(in, out, sink);
-        for (int i = 0; i < 5; i++) {
+        for (int i = 0; i < 6; i++) {
             robot.nextReceived();
         }
         assertThat(robot.nextReceived()).isEqualTo(ArcosCommand.SONAR.packet(1));

@@ -124,6 +124,29 @@ class SipTranslatorTest {
     }
 
     @Test
+    void aP3dxNeedsBothConversionFactorsForTrueMetresOfSonarAndOdometry() throws Exception {
+        com.fasterxml.jackson.databind.ObjectMapper json = new com.fasterxml.jackson.databind.ObjectMapper();
+        PioneerParams p3dx = json.readValue("{\"distConvFactor\": 0.485, \"rangeConvFactor\": 1.0}", PioneerParams.class);
+        PioneerParams distOnly = json.readValue("{\"distConvFactor\": 0.485}", PioneerParams.class);
+        // An ARCOS P3-DX (and AMRISim's p3dx) reports sonar in millimetres and positions in 0.485 mm units.
+        SipBytes b = new SipBytes();
+        b.xPos = 2000;
+        for (int i = 0; i < 16; i++) {
+            b.sonar(i, 1500);
+        }
+
+        RecordingSink right = new RecordingSink();
+        new SipTranslator(p3dx).translate(StandardSip.parse(b.packet()), right);
+        RecordingSink wrong = new RecordingSink();
+        new SipTranslator(distOnly).translate(StandardSip.parse(b.packet()), wrong);
+
+        assertThat(((VectorValue) right.last("sonar")).get(3)).isCloseTo(1.5, within(1e-9));
+        assertThat(((RecordValue) right.last("odometry")).number("xM")).isCloseTo(0.970, within(1e-9));
+        assertThat(((VectorValue) wrong.last("sonar")).get(3)).as("the P2DX's 0.268 mm units: 0.268 × true")
+                .isCloseTo(1.5 * 0.268, within(1e-9));
+    }
+
+    @Test
     void aSonarIndexTheRobotDoesNotHaveIsCountedAsMalformed() {
         translate(new SipBytes().sonar(20, 100).sonar(0, 100));
         assertThat(sink.malformed()).singleElement().asString().contains("sonar index 20");

@@ -46,11 +46,11 @@ final class TinyArcosRobot implements AutoCloseable {
         return server.getLocalPort();
     }
 
-    /** The next packet the robot received, waiting at most 2 s. */
+    /** The next packet the robot received, waiting at most 15 s. */
     ArcosPacket nextReceived() throws InterruptedException {
-        ArcosPacket p = received.poll(2, TimeUnit.SECONDS);
+        ArcosPacket p = received.poll(15, TimeUnit.SECONDS);
         if (p == null) {
-            throw new AssertionError("the robot received nothing within 2 s");
+            throw new AssertionError("the robot received nothing within 15 s");
         }
         return p;
     }

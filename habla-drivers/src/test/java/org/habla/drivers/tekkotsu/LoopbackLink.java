@@ -15,7 +15,8 @@ import org.habla.sample.Payload;
 
 /**
  * Runs one driver connection over a real loopback socket the way the engine does — handshake,
- * a reader thread calling {@code readNext}, keep-alives on their own thread, writes under a lock —
+ * a reader thread calling {@code readNext} with the connection's silence limit, keep-alives on their own
+ * thread, writes under a lock —
  * for tests that have no engine.
  */
 final class LoopbackLink implements AutoCloseable {
@@ -29,12 +30,14 @@ final class LoopbackLink implements AutoCloseable {
 
     LoopbackLink(int port, Connection connection, ReadingSink sink) throws IOException {
         socket.connect(new InetSocketAddress("127.0.0.1", port), 2_000);
-        socket.setSoTimeout(200);
+        socket.setSoTimeout(15_000);
         InputStream in = new BufferedInputStream(socket.getInputStream());
         out = new BufferedOutputStream(socket.getOutputStream());
         session = connection.sessions().get();
         session.handshake(in, out, sink);
         out.flush();
+        // as the engine does: a periodic stream times out after its silence limit, a quiet one never
+        socket.setSoTimeout((int) connection.liveness().silenceLimit().toMillis());
         reader = Thread.ofVirtual().start(() -> {
             try {
                 while (!socket.isClosed()) {

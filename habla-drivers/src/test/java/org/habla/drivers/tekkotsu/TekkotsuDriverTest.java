@@ -74,6 +74,15 @@ class TekkotsuDriverTest {
     }
 
     @Test
+    void onlyTheControllerIsOptionalSoARobotWithoutOneIsUpWhileItsServersStream() {
+        Driver d = new TekkotsuDriver(TekkotsuParams.defaults());
+        assertThat(d.connections()).filteredOn(Connection::optional).extracting(Connection::name)
+                .containsExactly("controller");
+        assertThat(d.connections()).filteredOn(c -> !c.optional()).extracting(Connection::name)
+                .containsExactlyInAnyOrder("worldstate", "microphone", "camera", "walk", "head", "speaker", "estop");
+    }
+
+    @Test
     void aServerSwitchedOffOffersNeitherItsConnectionNorItsChannels() throws Exception {
         TekkotsuParams p = new com.fasterxml.jackson.databind.ObjectMapper().readValue(
                 "{\"head\": false, \"microphone\": false, \"camera\": false}", TekkotsuParams.class);

@@ -56,9 +56,9 @@ final class TinyServer implements AutoCloseable {
         }
     }
 
-    /** Keeps the connection open, saying nothing, until the test ends (at most 10 s). */
+    /** Keeps the connection open, saying nothing, until the test ends (at most 60 s). */
     void holdOpen() throws InterruptedException {
-        await(Duration.ofSeconds(10), () -> closing);
+        await(Duration.ofSeconds(60), () -> closing);
     }
 
     /** Drops the client, as a robot that crashes does. */

@@ -21,7 +21,9 @@ import org.habla.sample.VectorValue;
  * {@code limits} input (e.g. from {@code wheels}) — keeping its curvature; then, every {@code tickMs}, the
  * output moves towards it by no more than the acceleration limits allow ({@code maxAccelMps2} speeding up,
  * {@code maxDecelMps2} braking, {@code maxRotAccelRadps2} for the turn rate). A change of direction brakes
- * to zero first. The output is emitted on each step while it changes and is silent when steady.
+ * to zero first. The output is emitted on each step while it changes and is silent when steady. When the
+ * engine stops the robot (the motion watchdog), the ramp starts again from rest: the next motion asked for is
+ * ramped up from zero and sent, even if it is the one sent last before the stop.
  */
 public final class MotionComposition extends ProcessingMethod {
 
@@ -108,6 +110,15 @@ public final class MotionComposition extends ProcessingMethod {
         double d = target - current;
         // a hair of slack, so rounding never leaves a last step of 1e-17
         return Math.abs(d) <= maxStep * (1 + 1e-9) ? target : current + Math.signum(d) * maxStep;
+    }
+
+    @Override
+    protected void onMotionStopped() {
+        v = 0;
+        w = 0;
+        targetV = 0;
+        targetW = 0;
+        settled = true;
     }
 
     /** Motions that were not two finite numbers, since start. */

@@ -27,7 +27,9 @@ import org.habla.sample.VectorValue;
  * it lacks them, from its {@code distanceM} and {@code angleRad} and the cones of {@code coneRad}. A motion
  * being held is checked again on every nearest record, so an obstacle that comes close stops it. With no
  * nearest record for {@code maxAgeMs}, translation is vetoed too. Output {@code veto} says why, once
- * each time a veto begins.
+ * each time a veto begins; and the control clients whose values reach this method are told as a {@code veto}
+ * notice — the reason, the limit and what was measured — for every motion they ask for that is vetoed, and
+ * when a veto begins on a motion being held.
  */
 public final class MovementSafety extends ProcessingMethod {
 
@@ -117,30 +119,65 @@ public final class MovementSafety extends ProcessingMethod {
     }
 
     /** Works out the safe motion; emits it when asked for anew or when it changed. */
-    private void decide(boolean always) {
+    private void decide(boolean asked) {
         double[] vw = limits.clamp(wantedV, wantedW);
-        String why = "";
-        if (vw[0] != 0 && !fresh(nowMicros())) {
-            why = (vw[0] > 0 ? "forward" : "backward") + " motion vetoed: no fresh range data";
-        } else if (vw[0] > 0 && aheadM < params.stopDistanceM()) {
-            why = String.format(Locale.ROOT, "forward motion vetoed: obstacle %.2f m ahead (stop distance %.2f m)",
-                    aheadM, params.stopDistanceM());
-        } else if (vw[0] < 0 && behindM < params.stopDistanceM()) {
-            why = String.format(Locale.ROOT, "backward motion vetoed: obstacle %.2f m behind (stop distance %.2f m)",
-                    behindM, params.stopDistanceM());
-        }
-        if (!why.isEmpty()) {
+        Veto v = vetoOf(vw);
+        if (v != null) {
             vw[0] = 0;
             if (veto.isEmpty()) {
                 vetoes++;
-                emit(vetoOut, new TextValue(why));
+                emit(vetoOut, new TextValue(v.message()));
+            }
+            if (asked || veto.isEmpty()) {
+                tellControl("veto", v.message(), v.detail());
             }
         }
-        veto = why;
-        if (always || lastSent == null || lastSent[0] != vw[0] || lastSent[1] != vw[1]) {
+        veto = v == null ? "" : v.message();
+        if (asked || lastSent == null || lastSent[0] != vw[0] || lastSent[1] != vw[1]) {
             lastSent = vw;
             emit(out, VectorValue.wrap(vw.clone()));
         }
+    }
+
+    /** Why the translation of {@code vw} may not be made now, or null when it may. */
+    private Veto vetoOf(double[] vw) {
+        double v = vw[0];
+        if (v == 0) {
+            return null;
+        }
+        String direction = v > 0 ? "forward" : "backward";
+        RecordValue.Builder detail = RecordValue.builder().put("askedMps", v).put("askedRadps", vw[1]);
+        long now = nowMicros();
+        if (!fresh(now)) {
+            detail.put("reason", "no_range_data").put("maxAgeMs", params.maxAgeMs());
+            if (nearestMicros != Long.MIN_VALUE) {
+                detail.put("ageMs", (now - nearestMicros) / 1_000);
+            }
+            return new Veto(String.format(Locale.ROOT, "%s motion vetoed: no fresh range data (none in the last %d ms)",
+                    direction, params.maxAgeMs()), detail.build());
+        }
+        double obstacle = v > 0 ? aheadM : behindM;
+        if (obstacle >= params.stopDistanceM()) {
+            return null;
+        }
+        detail.put("reason", v > 0 ? "obstacle_ahead" : "obstacle_behind").put("obstacleM", obstacle)
+                .put("stopDistanceM", params.stopDistanceM());
+        return new Veto(String.format(Locale.ROOT, "%s motion vetoed: obstacle %.2f m %s (stop distance %.2f m)",
+                direction, obstacle, v > 0 ? "ahead" : "behind", params.stopDistanceM()), detail.build());
+    }
+
+    /** A veto: the sentence for people and the fields for programs. */
+    private record Veto(String message, RecordValue detail) {
+    }
+
+    /** The engine stopped the robot: nothing is wanted any more, and the next motion is decided afresh. */
+    @Override
+    protected void onMotionStopped() {
+        wanted = false;
+        wantedV = 0;
+        wantedW = 0;
+        lastSent = null;
+        veto = "";
     }
 
     /** Vetoes begun since start. */

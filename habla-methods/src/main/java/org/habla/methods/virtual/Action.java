@@ -19,7 +19,9 @@ import org.habla.sample.VectorValue;
  * {@code stop}; each becomes a motion {@code [vMps, wRadps]} on output {@code motion} (turn rate positive
  * counter-clockwise) that is held for {@code durationMs} and then returns to zero. {@code stop} zeros the
  * motion at once; a new label replaces the one being held and starts its time again. Output {@code action}
- * echoes every accepted label, so every client of the socket sees what the robot was told.
+ * echoes every accepted label, so every client of the socket sees what the robot was told. When the engine
+ * stops the robot (the motion watchdog), the label being held is dropped and {@code motion} says zero at once:
+ * the socket never shows a motion the robot is not making.
  *
  * <p>A control client that writes anything else gets an error line naming the labels: the value is refused
  * before it is queued. A label from a wired method that is not known is counted and ignored.
@@ -79,6 +81,14 @@ public final class Action extends VirtualMethod {
     @Override
     protected void onTick(long nowMicros) {
         if (holding && nowMicros >= holdUntilMicros) {
+            holding = false;
+            emit(motion, VectorValue.of(0, 0));
+        }
+    }
+
+    @Override
+    protected void onMotionStopped() {
+        if (holding) {
             holding = false;
             emit(motion, VectorValue.of(0, 0));
         }

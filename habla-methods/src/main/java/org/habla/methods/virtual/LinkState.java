@@ -1,6 +1,7 @@
 package org.habla.methods.virtual;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import java.time.Duration;
 import org.habla.method.Delivery;
 import org.habla.method.Layer;
@@ -14,21 +15,23 @@ import org.habla.sample.Sample;
 /**
  * The link-state method, type {@code link-state}: whether the robot is connected, for the control
  * architecture. Input {@code link} takes the record the engine publishes on every interface's {@code link}
- * channel ({@code {"up", "interface", "detail"}}, on every change and once a second), carried up by a
- * {@code channel} and a {@code pass-through} method. Output {@code link} is the record
+ * channel ({@code {"up", "interface", "detail", "connections"}}, on every change and once a second), carried up
+ * by a {@code channel} and a {@code pass-through} method. Output {@code link} is the record
  *
- * <pre>{@code {"connected": true, "stale": false, "sinceMs": 5300, "interface": "robot", "detail": "all connections up"}}</pre>
+ * <pre>{@code {"connected": true, "stale": false, "sinceMs": 5300, "interface": "robot", "detail": "all connections up",
+ *  "connections": {"arcos": true}}}</pre>
  *
  * where {@code sinceMs} is how long the link has been in its present state (as seen here) and {@code stale}
  * says the news is doubtful: the sample came marked stale, or no link record came for {@code staleAfterMs}.
- * It is emitted on every link record and when the records stop.
+ * It is emitted on every link record and when the records stop. {@code connections} is each of the driver's
+ * connections and whether it is up (a robot with several servers may stream on some while another is down).
  */
 public final class LinkState extends VirtualMethod {
 
     private final LinkStateParams params;
     private final Output<RecordValue> out = output("link", RecordValue.class, Shape.record(
             "whether the robot's link is up, whether that news is stale, and for how long it has been so",
-            "connected", "stale", "sinceMs", "interface", "detail"));
+            "connected", "stale", "sinceMs", "interface", "detail", "connections"));
 
     private boolean known;
     private boolean connected;
@@ -38,6 +41,7 @@ public final class LinkState extends VirtualMethod {
     private long lastRecordMicros;
     private String iface = "";
     private String detail = "";
+    private JsonNode connections = JsonNodeFactory.instance.objectNode();
     private long malformed;
 
     LinkState(LinkStateParams params) {
@@ -65,6 +69,7 @@ public final class LinkState extends VirtualMethod {
         lastRecordMicros = now;
         iface = value.get("interface").isTextual() ? value.get("interface").asText() : "";
         detail = value.get("detail").isTextual() ? value.get("detail").asText() : "";
+        connections = value.get("connections").isObject() ? value.get("connections") : JsonNodeFactory.instance.objectNode();
         publish(now);
     }
 
@@ -79,7 +84,8 @@ public final class LinkState extends VirtualMethod {
     private void publish(long now) {
         emit(out, RecordValue.builder().put("connected", connected).put("stale", staleSample || silent)
                 .put("sinceMs", (now - changedMicros) / 1000).put("interface", iface)
-                .put("detail", silent ? "no link news for " + params.staleAfterMs() + " ms" : detail).build());
+                .put("detail", silent ? "no link news for " + params.staleAfterMs() + " ms" : detail)
+                .set("connections", connections.deepCopy()).build());
     }
 
     /** Records without a boolean {@code up}, since start. */

@@ -50,9 +50,10 @@ class PioneerChainTest {
               {"id": "action", "type": "action", "layer": "virtual", "inputs": {"action": "control"},
                "params": {"forwardMps": 0.5, "durationMs": 30000}, "expose": {"port": %d, "name": "action"}},
               {"id": "safety", "type": "movement-safety", "layer": "processing",
-               "inputs": {"motion": "action.motion", "nearest": "nearest.nearest", "limits": "wheels.limits"}},
+               "inputs": {"motion": "action.motion", "nearest": "nearest.nearest", "limits": "wheels.limits"},
+               "feedback": ["limits"]},
               {"id": "compose", "type": "motion-composition", "layer": "processing",
-               "inputs": {"motion": "safety.motion", "limits": "wheels.limits"}},
+               "inputs": {"motion": "safety.motion", "limits": "wheels.limits"}, "feedback": ["limits"]},
               {"id": "wheels", "type": "wheels", "layer": "sensors_actuators",
                "inputs": {"motion": "compose.motion"}, "commands": {"motion": "@robot.motion"}}]}
             """;
@@ -123,8 +124,10 @@ class PioneerChainTest {
             BufferedReader in = new BufferedReader(new InputStreamReader(link.getInputStream(), UTF_8));
             JsonNode up = nextLink(in, true);
             assertThat(up.path("interface").asText()).isEqualTo("robot");
+            assertThat(up.path("stale").asBoolean()).as("the first record saying connected is fresh").isFalse();
             robot.close();
             JsonNode down = nextLink(in, false);
+            assertThat(down.path("stale").asBoolean()).as("the first record saying not connected is stale").isTrue();
             assertThat(down.path("sinceMs").asLong()).isLessThan(5_000);
             assertThat(down.path("detail").asText()).isNotEmpty();
         }

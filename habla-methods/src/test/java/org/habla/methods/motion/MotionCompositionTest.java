@@ -37,6 +37,18 @@ class MotionCompositionTest {
     }
 
     @Test
+    void afterAMotionStopTheSameMotionIsRampedUpAgainFromRest() {
+        MethodHarness h = MethodHarness.started("compose", new MotionComposition(MotionCompositionParams.defaults()));
+        h.push("motion", VectorValue.of(0.2, 0)).advanceMillis(1000).clear();
+        h.motionStopped().advanceMillis(500);
+        assertThat(h.values("motion")).as("the stop itself is the engine's; nothing is emitted").isEmpty();
+        h.push("motion", VectorValue.of(0.2, 0));
+        assertThat(v(h.last("motion"))).isCloseTo(0.025, within(1e-12));
+        h.advanceMillis(1000);
+        assertThat(v(h.last("motion"))).isEqualTo(0.2);
+    }
+
+    @Test
     void brakingIsFasterAndAReversalStopsFirst() {
         MethodHarness h = MethodHarness.started("compose", new MotionComposition(MotionCompositionParams.defaults()));
         h.push("motion", VectorValue.of(0.2, 0)).advanceMillis(1000).clear();

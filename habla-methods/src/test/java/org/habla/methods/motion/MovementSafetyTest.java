@@ -68,6 +68,53 @@ class MovementSafetyTest {
     }
 
     @Test
+    void afterAMotionStopTheOldMotionNeverComesBackAndTheSameOneAskedAgainGoesOut() {
+        MethodHarness h = safety();
+        h.push("nearest", nearest(1.0, 3.0)).push("motion", VectorValue.of(0.2, 0)).clear();
+        h.motionStopped();
+        h.push("nearest", nearest(0.2, 3.0)).push("nearest", nearest(1.0, 3.0)).advanceMillis(500);
+        assertThat(h.values("motion")).as("nothing wanted since the stop").isEmpty();
+        h.push("nearest", nearest(1.0, 3.0)).push("motion", VectorValue.of(0.2, 0));
+        assertThat(h.values("motion")).containsExactly(VectorValue.of(0.2, 0));
+    }
+
+    @Test
+    void everyVetoedMotionAskedForIsToldToControlWithTheReasonAndTheLimit() {
+        MethodHarness h = safety();
+        h.push("nearest", nearest(0.2, 3.0)).push("motion", VectorValue.of(0.25, 0), 1_700_000_000_123_456L);
+        assertThat(h.notices()).singleElement().satisfies(n -> {
+            assertThat(n.notice()).isEqualTo("veto");
+            assertThat(n.methodId()).isEqualTo("safety");
+            assertThat(n.sourceMicros()).as("the time of the motion asked for").isEqualTo(1_700_000_000_123_456L);
+            assertThat(n.message()).isEqualTo("forward motion vetoed: obstacle 0.20 m ahead (stop distance 0.30 m)");
+            assertThat(n.detail().get("reason").asText()).isEqualTo("obstacle_ahead");
+            assertThat(n.detail().number("obstacleM")).isEqualTo(0.2);
+            assertThat(n.detail().number("stopDistanceM")).isEqualTo(0.3);
+            assertThat(n.detail().number("askedMps")).isEqualTo(0.25);
+        });
+        h.push("motion", VectorValue.of(0.25, 0));
+        assertThat(h.notices()).as("asked again, told again").hasSize(2);
+        h.push("motion", VectorValue.of(0, 0.5));
+        assertThat(h.notices()).as("turning is not vetoed").hasSize(2);
+    }
+
+    @Test
+    void aHeldMotionThatMeetsAnObstacleIsToldOnceAndMissingRangeDataNamesItsLimit() {
+        MethodHarness h = safety();
+        h.push("nearest", nearest(1.0, 3.0)).push("motion", VectorValue.of(-0.2, 0));
+        assertThat(h.notices()).isEmpty();
+        h.push("nearest", nearest(1.0, 0.2)).push("nearest", nearest(1.0, 0.1));
+        assertThat(h.notices()).singleElement().satisfies(n ->
+                assertThat(n.detail().get("reason").asText()).isEqualTo("obstacle_behind"));
+        h.clear().push("nearest", nearest(1.0, 3.0)).advanceMillis(1_500);
+        assertThat(h.notices()).singleElement().satisfies(n -> {
+            assertThat(n.detail().get("reason").asText()).isEqualTo("no_range_data");
+            assertThat(n.detail().number("maxAgeMs")).isEqualTo(1000);
+            assertThat(n.message()).contains("none in the last 1000 ms");
+        });
+    }
+
+    @Test
     void theLimitsInputScalesTheMotion() {
         MethodHarness h = safety();
         h.push("limits", RecordValue.builder().put("maxVelMps", 0.1).build());

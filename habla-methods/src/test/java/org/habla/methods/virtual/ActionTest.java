@@ -60,6 +60,17 @@ class ActionTest {
     }
 
     @Test
+    void aMotionStopDropsTheHeldLabelAndSaysZeroAtOnce() {
+        MethodHarness h = action();
+        h.write("action", new TextValue("left")).advanceMillis(300).motionStopped();
+        assertThat(h.last("motion")).isEqualTo(VectorValue.of(0, 0));
+        h.advanceMillis(3000).motionStopped();
+        assertThat(h.values("motion")).as("nothing more: no hold left to end, nothing to zero again").hasSize(2);
+        h.write("action", new TextValue("left"));
+        assertThat(h.last("motion")).isEqualTo(VectorValue.of(0, 0.6));
+    }
+
+    @Test
     void anUnknownLabelIsRefusedNamingTheActionsAndChangesNothing() {
         MethodHarness h = action();
         assertThatThrownBy(() -> h.write("action", new TextValue("jump")))

@@ -47,6 +47,20 @@ class LinkStateTest {
     }
 
     @Test
+    void theStateOfEachConnectionIsPassedOn() {
+        MethodHarness h = MethodHarness.started("link", new LinkState(LinkStateParams.defaults()));
+        com.fasterxml.jackson.databind.node.ObjectNode each =
+                com.fasterxml.jackson.databind.node.JsonNodeFactory.instance.objectNode()
+                        .put("worldstate", true).put("controller", false);
+        h.push("link", RecordValue.builder().put("up", true).put("interface", "aibo")
+                .put("detail", "controller (optional) down: Connection refused").set("connections", each).build());
+        RecordValue r = (RecordValue) h.last("link");
+        assertThat(r.get("connected").booleanValue()).isTrue();
+        assertThat(r.get("connections").get("worldstate").booleanValue()).isTrue();
+        assertThat(r.get("connections").get("controller").booleanValue()).isFalse();
+    }
+
+    @Test
     void aRecordWithoutUpIsIgnored() {
         LinkState m = new LinkState(LinkStateParams.defaults());
         MethodHarness h = MethodHarness.started("link", m);

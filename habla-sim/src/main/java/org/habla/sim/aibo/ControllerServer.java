@@ -198,14 +198,31 @@ final class ControllerServer implements TekkotsuSocket.Client {
                 return;
             }
             boolean running = item.toggle();
-            if (item.guiClass() != null) {
+            MenuItem.Gui gui = item.gui();
+            if (gui != null) {
                 if (running) {
-                    send("load", item.guiClass(), item.name(), Integer.toString(item.server().port()),
-                            "\"" + item.server().port() + "\"");
+                    send("load", gui.javaClass(), gui.instance(), Integer.toString(item.server().port()),
+                            quoted(gui.args()));
                 } else {
-                    send("close", item.name());
+                    send("close", gui.instance());
                 }
             }
+        }
+
+        /** Launch arguments as Tekkotsu writes them: each in double quotes ({@code \\ " newline} escaped) and a space. */
+        private static String quoted(List<String> args) {
+            StringBuilder b = new StringBuilder();
+            for (String a : args) {
+                b.append('"');
+                for (char c : a.toCharArray()) {
+                    if (c == '\\' || c == '"' || c == '\n') {
+                        b.append('\\');
+                    }
+                    b.append(c);
+                }
+                b.append("\" ");
+            }
+            return b.toString();
         }
 
         private void dumpStack() {

@@ -47,6 +47,7 @@ public final class Ers7Body {
     private float strafeFraction;
     private float rotateFraction;
     private long lastWalkCommandMs = Long.MIN_VALUE / 2;
+    private long walkCommands;
     private final double[] headTarget = new double[3];
     private final double[] head = new double[3];
     private final float[] ir = {500f, 1500f, 900f};
@@ -90,6 +91,12 @@ public final class Ers7Body {
             }
         }
         lastWalkCommandMs = nowMs;
+        walkCommands++;
+    }
+
+    /** The walk commands received since boot (whether the emergency stop let them move the body or not). */
+    public synchronized long walkCommands() {
+        return walkCommands;
     }
 
     /** The walk at {@code nowMs}: still while the emergency stop is on or the remote control has gone quiet. */

@@ -13,16 +13,29 @@ final class MenuItem {
     private final String description;
     private final List<MenuItem> children;
     private final TekkotsuSocket server;
-    private final String guiClass;
+    private final Gui gui;
     private boolean everStarted;
 
-    private MenuItem(String name, String description, List<MenuItem> children, TekkotsuSocket server,
-            String guiClass) {
+    /**
+     * The viewer a behaviour asks the Controller's client to open when it starts ({@code load}) and to close when
+     * it stops ({@code close}), as Tekkotsu's {@code Controller::loadGUI}/{@code closeGUI} name it.
+     *
+     * @param javaClass the TekkotsuMon class ({@code org.tekkotsu.mon.WalkGUI})
+     * @param instance  the viewer's instance name, also what {@code close} names ({@code WalkGUI})
+     * @param args      the launch arguments, each sent quoted on the fourth line (none: an empty line)
+     */
+    record Gui(String javaClass, String instance, List<String> args) {
+        Gui {
+            args = List.copyOf(args);
+        }
+    }
+
+    private MenuItem(String name, String description, List<MenuItem> children, TekkotsuSocket server, Gui gui) {
         this.name = name;
         this.description = description;
         this.children = List.copyOf(children);
         this.server = server;
-        this.guiClass = guiClass;
+        this.gui = gui;
         this.everStarted = server != null && server.isOn();
     }
 
@@ -30,9 +43,9 @@ final class MenuItem {
         return new MenuItem(name, description, children, null, null);
     }
 
-    /** A behaviour that runs a server socket; {@code guiClass} is the viewer the robot asks a GUI to open, or null. */
-    static MenuItem behavior(String name, String description, TekkotsuSocket server, String guiClass) {
-        return new MenuItem(name, description, List.of(), server, guiClass);
+    /** A behaviour that runs a server socket; {@code gui} is the viewer the robot asks a GUI to open, or null. */
+    static MenuItem behavior(String name, String description, TekkotsuSocket server, Gui gui) {
+        return new MenuItem(name, description, List.of(), server, gui);
     }
 
     String name() {
@@ -55,8 +68,8 @@ final class MenuItem {
         return server;
     }
 
-    String guiClass() {
-        return guiClass;
+    Gui gui() {
+        return gui;
     }
 
     synchronized String displayedName() {

@@ -9,7 +9,6 @@ import java.net.Socket;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
-import java.util.Locale;
 import java.util.function.LongFunction;
 import javax.imageio.IIOImage;
 import javax.imageio.ImageIO;
@@ -146,15 +145,18 @@ final class RawCamServer implements TekkotsuSocket.Client {
 
     /** The {@code #POS} sensor string in Tekkotsu's condensed posture form, as a LoadSave string. */
     private byte[] sensorString(long timeMs) {
-        Ers7Layout.Snapshot s = body.snapshot(timeMs);
-        String text = "#POS\ncondensed " + Ers7Layout.MODEL + "\nmeta-info = " + timeMs + " "
-                + timeMs / WorldStateServer.SENSOR_PERIOD_MS * 4 + "\n"
-                + "outputs = " + numbers(s.outputs()) + "\nbuttons = " + numbers(s.buttons()) + "\nsensors = "
-                + numbers(s.sensors()) + "\npidduties = " + numbers(s.duties()) + "\n#END\n";
-        byte[] chars = text.getBytes(StandardCharsets.US_ASCII);
+        byte[] chars = posture(body.snapshot(timeMs), timeMs).getBytes(StandardCharsets.US_ASCII);
         ByteBuffer b = ByteBuffer.allocate(chars.length + 5).order(ByteOrder.LITTLE_ENDIAN);
         b.putInt(chars.length).put(chars).put((byte) 0);
         return b.array();
+    }
+
+    /** The text of a {@code #POS} sensor string: one item a line, every number as C's {@code %g} prints it. */
+    static String posture(Ers7Layout.Snapshot s, long timeMs) {
+        return "#POS\ncondensed " + Ers7Layout.MODEL + "\nmeta-info = " + timeMs + " "
+                + timeMs / WorldStateServer.SENSOR_PERIOD_MS * 4 + "\n"
+                + "outputs = " + numbers(s.outputs()) + "\nbuttons = " + numbers(s.buttons()) + "\nsensors = "
+                + numbers(s.sensors()) + "\npidduties = " + numbers(s.duties()) + "\n#END\n";
     }
 
     private static String numbers(float[] values) {
@@ -163,7 +165,7 @@ final class RawCamServer implements TekkotsuSocket.Client {
             if (!b.isEmpty()) {
                 b.append(' ');
             }
-            b.append(v == 0f ? "0" : String.format(Locale.ROOT, "%.3g", v));
+            b.append(PrintfG.of(v));
         }
         return b.toString();
     }

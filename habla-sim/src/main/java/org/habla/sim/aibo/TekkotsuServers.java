@@ -68,12 +68,15 @@ public final class TekkotsuServers implements AutoCloseable {
     private MenuItem menu() {
         MenuItem mon = MenuItem.menu("TekkotsuMon", "Servers for remote monitoring and control", List.of(
                 MenuItem.behavior("Head Remote Control", "Listens for head angles", head,
-                        "org.tekkotsu.mon.HeadPointGUI"),
-                MenuItem.behavior("Walk Remote Control", "Listens for walk speeds", walk, "org.tekkotsu.mon.WalkGUI"),
+                        new MenuItem.Gui("org.tekkotsu.mon.HeadPointGUI", "HeadPointGUI", List.of())),
+                MenuItem.behavior("Walk Remote Control", "Listens for walk speeds", walk,
+                        new MenuItem.Gui("org.tekkotsu.mon.WalkGUI", "WalkGUI", List.of())),
                 MenuItem.behavior("EStopControllerBehavior", "Emergency stop control", eStop, null),
                 MenuItem.behavior("World State Serializer", "Sends joints, sensors, buttons and duties", worldState,
                         null),
-                MenuItem.behavior("Raw Cam Server", "Sends camera images", rawCam, null),
+                // The simulator serves the camera over TCP only (it refuses !set vision.rawcam.transport=UDP).
+                MenuItem.behavior("Raw Cam Server", "Sends camera images", rawCam, new MenuItem.Gui(
+                        "org.tekkotsu.mon.VisionGUI", "RawVisionGUI", List.of("raw", Integer.toString(rawCam.port()), "tcp"))),
                 MenuItem.behavior("Microphone Server", "Sends microphone audio", microphone, null),
                 MenuItem.behavior("Speaker Server", "Plays audio it receives", speaker, null)));
         List<MenuItem> rootItems = new ArrayList<>();

@@ -21,7 +21,11 @@ import org.slf4j.LoggerFactory;
  * into the body's set-points, fires its sonar ring, and every 100 ms of sim time sends a SIP with the odometry
  * (15-bit positions that roll over), wheel speeds, battery, stall and bumper bits and the sonar readings fired
  * since the last SIP. If no packet arrives for 2 s the watchdog stops the robot; the next packet resumes the last
- * set-points. CLOSE stops the motors and sonar and waits for a new handshake. A robot put elsewhere by a reset
+ * set-points. CLOSE stops the motors and sonar and waits for a new handshake. The speed set-points are the
+ * controller's memory, not the session's: only VEL, RVEL, VEL2, STOP and E_STOP change them, so after CLOSE and a
+ * new handshake the robot stands only while its motors are disabled, and ENABLE 1 drives the old set-points again
+ * unless a STOP came first — the firmware's "resume the last set-points", which a client must not rely on being
+ * forgotten. A robot put elsewhere by a reset
  * keeps its odometry, as a robot carried by hand does. Like a real robot on a serial bridge it does not notice a
  * client that just vanishes: it stays open (the watchdog stops it), and a new client finds it streaming SIPs and
  * must CLOSE it first.
@@ -166,10 +170,8 @@ final class PioneerController implements SimClock.Stepper {
     private void open() {
         double now = scene.nowS();
         phase = Phase.OPEN;
-        motorsEnabled = false;
+        motorsEnabled = false; // on every new connection; the set-points stay
         sonarOn = true;
-        vMps = 0;
-        wRadps = 0;
         eStopped = false;
         watchdogTripped = false;
         lastPacketS = now;
@@ -184,8 +186,6 @@ final class PioneerController implements SimClock.Stepper {
         phase = Phase.WAITING;
         motorsEnabled = false;
         sonarOn = false;
-        vMps = 0;
-        wRadps = 0;
         body.command(0, 0, 0);
         LOG.info("ARCOS session closed by the client");
     }

@@ -119,7 +119,7 @@ class TekkotsuServersTest {
         assertThat(DriverLink.await(LIMIT, () -> servers.ports() != null && links.get("walk").up()
                 && links.get("walk").sessionCount() > 0 && sink.on("ir").size() > 2)).isTrue();
         assertThat(DriverLink.await(LIMIT, () -> writeWalk(0.09, 0.07, -0.9))).isTrue();
-        Thread.sleep(100);
+        assertThat(DriverLink.await(LIMIT, () -> body.walkCommands() >= 3)).as("the walk arrived").isTrue();
         assertThat(body.walk(time.nowMs())).as("e-stop on at boot").isEqualTo(Ers7Body.Walk.STILL);
 
         try (Socket s = new Socket("127.0.0.1", servers.ports().eStop())) {
@@ -132,8 +132,9 @@ class TekkotsuServersTest {
             assertThat(w.strafeMps()).isCloseTo(0.07, within(1e-6));
             assertThat(w.rotateRadps()).isCloseTo(-0.9, within(1e-6));
 
-            s.getOutputStream().write("stop\r\n".getBytes(StandardCharsets.US_ASCII));
-            Thread.sleep(100);
+            // The answer to the refresh after it says the line before was taken, and not as a stop.
+            s.getOutputStream().write("stop\r\nrefresh\n".getBytes(StandardCharsets.US_ASCII));
+            assertThat(new String(in.readNBytes(4), StandardCharsets.US_ASCII)).isEqualTo("off\n");
             assertThat(body.eStopped()).as("'stop\\r' is not 'stop'").isFalse();
             s.getOutputStream().write("stop\n".getBytes(StandardCharsets.US_ASCII));
             assertThat(new String(in.readNBytes(3), StandardCharsets.US_ASCII)).isEqualTo("on\n");
@@ -290,6 +291,28 @@ class TekkotsuServersTest {
     }
 
     @Test
+    void startingAServerAsksTheGuiToLoadItsViewerAsTekkotsuDoesByteForByte() throws Exception {
+        servers = new TekkotsuServers(TekkotsuPorts.ANY_FREE, time, body, mic, said, at -> view());
+        open.add(servers);
+        TekkotsuPorts p = servers.ports();
+        try (Socket s = new Socket("127.0.0.1", p.controller())) {
+            s.setSoTimeout(5_000);
+            s.getOutputStream().write(("!select \"Walk Remote Control\"\n!select \"Head Remote Control\"\n"
+                    + "!select \"Raw Cam Server\"\n!select \"#Walk Remote Control\"\n!select \"#Raw Cam Server\"\n")
+                    .getBytes(StandardCharsets.US_ASCII));
+            String said = readUntil(s.getInputStream(), "close\nRawVisionGUI\n");
+
+            // Controller::loadGUI: load, class, instance, port, then each argument quoted and followed by a space.
+            assertThat(said).contains("load\norg.tekkotsu.mon.WalkGUI\nWalkGUI\n" + p.walk() + "\n\n")
+                    .contains("load\norg.tekkotsu.mon.HeadPointGUI\nHeadPointGUI\n" + p.head() + "\n\n")
+                    .contains("load\norg.tekkotsu.mon.VisionGUI\nRawVisionGUI\n" + p.rawCam() + "\n\"raw\" \""
+                            + p.rawCam() + "\" \"tcp\" \n")
+                    .contains("close\nWalkGUI\n")
+                    .endsWith("close\nRawVisionGUI\n");
+        }
+    }
+
+    @Test
     void garbageAndVanishingClientsLeaveTheRobotServing() throws Exception {
         start("");
         assertThat(DriverLink.await(LIMIT, () -> sink.on("ir").size() >= 2)).isTrue();
@@ -309,17 +332,17 @@ class TekkotsuServersTest {
         }
         // a second speaker client is turned away while the driver holds the port
         try (Socket s = new Socket("127.0.0.1", p.speaker())) {
-            s.setSoTimeout(5_000);
+            s.setSoTimeout((int) LIMIT.toMillis());
             assertThat(s.getInputStream().read()).isEqualTo(-1);
         }
         // a world-state client that connects and vanishes
         new Socket("127.0.0.1", p.worldState()).close();
         String reply = "";
-        for (int attempt = 0; attempt < 50 && reply.isEmpty(); attempt++) {
+        for (long end = System.nanoTime() + LIMIT.toNanos(); reply.isEmpty() && System.nanoTime() < end; ) {
             // one client at a time: the last hostile client may not have been let go yet
             try (Socket s = new Socket("127.0.0.1", p.controller())) {
                 s.getOutputStream().write("!hello\n".getBytes(StandardCharsets.US_ASCII));
-                s.setSoTimeout(5_000);
+                s.setSoTimeout((int) LIMIT.toMillis());
                 reply = readUntil(s.getInputStream(), "hello\n");
             } catch (IOException e) {
                 reply = "";

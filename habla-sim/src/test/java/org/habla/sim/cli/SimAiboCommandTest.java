@@ -43,7 +43,7 @@ class SimAiboCommandTest {
                 Integer.toString(base), "--truth-port", "0", "--speed", "4", "--world", "aibo-arena.json",
                 "--teacher", "off")) {
             assertThat(DaemonProcess.awaitPort(base + 20, 20_000)).as(sim.output()).isTrue();
-            long end = System.nanoTime() + 10_000_000_000L;
+            long end = System.nanoTime() + 30_000_000_000L;
             Matcher m = Pattern.compile("ground truth (\\d+)").matcher("");
             while (System.nanoTime() < end && !m.reset(sim.output()).find()) {
                 Thread.sleep(50);
@@ -52,7 +52,8 @@ class SimAiboCommandTest {
             int truthPort = Integer.parseInt(m.group(1));
 
             List<String> lines = new ArrayList<>();
-            for (int attempt = 0; attempt < 50 && !lines.contains("#World State Serializer"); attempt++) {
+            end = System.nanoTime() + 30_000_000_000L;
+            while (System.nanoTime() < end && !lines.contains("#World State Serializer")) {
                 // one client at a time: the probe above may not have been let go yet
                 lines.clear();
                 try (Socket c = new Socket(InetAddress.getLoopbackAddress(), base + 20)) {
@@ -75,7 +76,8 @@ class SimAiboCommandTest {
             }
             assertThat(lines).contains("#World State Serializer", "hello");
             byte[] packet = new byte[0];
-            for (int attempt = 0; attempt < 50 && packet.length < 374; attempt++) {
+            end = System.nanoTime() + 30_000_000_000L;
+            while (System.nanoTime() < end && packet.length < 374) {
                 // the server may still be switching on, or still busy with a client that just left
                 try (Socket ws = new Socket(InetAddress.getLoopbackAddress(), base + 31)) {
                     ws.setSoTimeout(5_000);

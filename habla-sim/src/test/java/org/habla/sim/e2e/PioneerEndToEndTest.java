@@ -99,6 +99,10 @@ class PioneerEndToEndTest {
         // The client writes forward (held 20 s by this test's config) and stays connected but silent.
         Process client = rig.probeAsync("act", "" + rig.port("action"), "forward", "30");
         try {
+            // Measured from the write, not from the start of a Python process on a busy machine.
+            String wrote = new java.io.BufferedReader(new java.io.InputStreamReader(client.getInputStream(),
+                    java.nio.charset.StandardCharsets.UTF_8)).readLine();
+            assertThat(wrote).as("the client says it wrote").contains("\"wrote\"");
             JsonNode moving = rig.after(1.0);
             double x1 = moving.path("robot").path("xM").asDouble();
             JsonNode later = rig.after(0.5);

@@ -137,7 +137,7 @@ final class SimulatedDeployment implements AutoCloseable {
         reset.putObject("robot").put("xM", x).put("yM", y).put("thetaRad", theta);
         double t = truth.latest().path("t").asDouble();
         truth.send(reset);
-        return truth.awaitTime(t + 0.2, 5_000);
+        return truth.awaitTime(t + 0.2, 30_000);
     }
 
     /** The ground truth at least {@code seconds} of simulated time after now. */

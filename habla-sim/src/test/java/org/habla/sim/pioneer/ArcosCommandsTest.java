@@ -121,6 +121,28 @@ class ArcosCommandsTest {
     }
 
     @Test
+    void speedSetPointsOutliveCloseAndDriveAgainOnceTheMotorsAreEnabledUnlessStoppedFirst() throws IOException {
+        client.connect();
+        client.send(4, 1);
+        client.send(11, 300);
+        client.sip(s -> s.leftVel() == 300, 100);
+        client.send("02"); // CLOSE: motors off, the robot brakes to a stand
+        client.connect();
+        client.sip(s -> s.leftVel() == 0, 100); // motors disabled on a new connection
+        client.send(4, 1); // ENABLE 1: the old set-point drives again
+        client.sip(s -> s.leftVel() == 300, 100);
+        client.send("1D");
+        client.sip(s -> s.leftVel() == 0, 100);
+        client.send("02");
+        client.connect();
+        client.send("1D"); // STOP before ENABLE: nothing left to resume
+        client.send(4, 1);
+        for (int i = 0; i < 10; i++) {
+            assertThat(client.sip(s -> true, 5).leftVel()).isZero();
+        }
+    }
+
+    @Test
     void sonarZeroTurnsTheRingOffAndOneBackOn() throws IOException {
         client.connect();
         client.sip(s -> !s.sonar().isEmpty(), 5);

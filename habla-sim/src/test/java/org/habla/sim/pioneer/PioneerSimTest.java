@@ -244,6 +244,31 @@ class PioneerSimTest {
     }
 
     @Test
+    void aRobotLeftDrivingByAVanishedClientStaysStillWhenTheDriverConnectsAgain() throws Exception {
+        DriverHarness first = connect();
+        first.command("motion", VectorValue.of(-0.2, 0.3));
+        first.await("odometry", RecordValue.class, o -> o.number("vMps") < -0.15, WAIT_MS);
+        first.vanish();
+        waitSim(2.5); // the controller's watchdog has stopped it; its set-points are still there
+        try (DriverHarness second = connect()) {
+            // The handshake's SYNC0 itself resumes the old set-points until the CLOSE a moment later (as the
+            // firmware does); what is left of that brakes within 0.3 s. From then on nothing may move.
+            JsonNode connected = truthAt(sim.clock().nowS() + 0.3);
+            JsonNode later = truthAt(connected.get("t").doubleValue() + 1.5);
+            assertThat(Math.hypot(later.at("/robot/xM").asDouble() - connected.at("/robot/xM").asDouble(),
+                    later.at("/robot/yM").asDouble() - connected.at("/robot/yM").asDouble()))
+                    .as("the driver's STOP came before its ENABLE: the old motion did not resume").isLessThan(0.002);
+            assertThat(Math.abs(later.at("/robot/thetaRad").asDouble() - connected.at("/robot/thetaRad").asDouble()))
+                    .isLessThan(0.002);
+        }
+    }
+
+    /** The first ground-truth line at or after sim time {@code t}. */
+    private JsonNode truthAt(double t) throws IOException {
+        return truth.next(n -> n.has("t") && n.get("t").doubleValue() >= t, 100_000);
+    }
+
+    @Test
     void aNewClientConnectsAfterOneVanishesAndGarbageHurtsNothing() throws Exception {
         DriverHarness first = connect();
         first.command("motion", VectorValue.of(0.2, 0));

@@ -58,11 +58,25 @@ public final class TruthClient implements AutoCloseable {
         return next(n -> n.has("t"), 100);
     }
 
-    /** Sends an operation and returns its reply (the next line without a {@code t}). */
+    /**
+     * Sends an operation and returns its reply (the next line without a {@code t}). The state lines the server
+     * streamed meanwhile are skipped however many there are: a test that waited long before asking (a busy
+     * machine) has many unread; the wait for the reply is bounded in time instead, {@value #REPLY_MS} ms.
+     */
     public JsonNode op(String json) throws IOException {
         send(json);
-        return next(n -> !n.has("t"), 200);
+        long end = System.nanoTime() + REPLY_MS * 1_000_000L;
+        while (System.nanoTime() < end) {
+            JsonNode n = next(x -> true, 1);
+            if (!n.has("t")) {
+                return n;
+            }
+        }
+        throw new AssertionError("no reply to " + json + " within " + REPLY_MS + " ms");
     }
+
+    /** How long {@link #op} waits for its reply. */
+    static final long REPLY_MS = 30_000;
 
     @Override
     public void close() throws IOException {

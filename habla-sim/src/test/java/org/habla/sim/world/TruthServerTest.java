@@ -58,11 +58,11 @@ class TruthServerTest {
             JsonNode a = client.truth();
             JsonNode b = client.truth();
             assertThat(b.get("t").doubleValue() - a.get("t").doubleValue()).isCloseTo(0.1, within(0.011));
-            assertThat(b.at("/robot/xM").doubleValue()).isEqualTo(1.5);
+            assertThat(b.at("/robot/xM").doubleValue()).isEqualTo(3.0);
             assertThat(b.at("/target/radiusM").doubleValue()).isEqualTo(0.15);
-            double centre = Math.hypot(4.5 - 1.5, 4.0 - 1.5);
+            double centre = Math.hypot(4.5 - 3.0, 4.0 - 3.0);
             assertThat(b.get("distanceM").doubleValue()).isCloseTo(centre - 0.15 - 0.25, within(1e-3));
-            assertThat(b.get("angleRad").doubleValue()).isCloseTo(Math.atan2(2.5, 3.0), within(1e-3));
+            assertThat(b.get("angleRad").doubleValue()).isCloseTo(Math.atan2(1.0, 1.5), within(1e-3));
             assertThat(b.get("stalled").booleanValue()).isFalse();
             assertThat(b.at("/teacher/present").booleanValue()).isFalse();
             assertThat(b.at("/teacher/lastCommand").isNull()).isTrue();

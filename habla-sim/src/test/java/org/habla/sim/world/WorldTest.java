@@ -27,6 +27,20 @@ class WorldTest {
     }
 
     @Test
+    void fromTheRoomsStartPoseTheObjectIsTheNearestThingByAMetre() {
+        // On the Pioneer, distance_angle is the nearest sonar echo: from the default start it must be the object.
+        Pose2 start = room.robotStart();
+        Target t = room.target();
+        double toObject = t.surfaceDistance(start.xM(), start.yM());
+        double toWalls = room.walls().stream().mapToDouble(w -> w.distanceTo(start.xM(), start.yM())).min().orElseThrow();
+
+        assertThat(room.clearance(start.xM(), start.yM(), t)).isEqualTo(toObject);
+        assertThat(toWalls - toObject).isGreaterThan(1.0);
+        assertThat(room.directionToNearest(start.xM(), start.yM(), t))
+                .isCloseTo(Math.atan2(t.yM() - start.yM(), t.xM() - start.xM()), within(1e-9));
+    }
+
+    @Test
     void aRayStopsAtTheNearestWallOrTheTargetAndIsCappedAtMaxRange() {
         // Towards the west wall from (1.5, 1.5): 1.5 m.
         assertThat(room.rangeAlong(1.5, 1.5, Math.PI, 5)).isCloseTo(1.5, within(1e-9));

@@ -1,0 +1,242 @@
+package org.habla.net;
+
+import static java.nio.charset.StandardCharsets.UTF_8;
+import static org.assertj.core.api.Assertions.assertThat;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.IOException;
+import java.net.Socket;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
+import org.habla.config.Expose;
+import org.habla.config.Limits;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
+
+/** Idle and slow connections are closed on their deadlines, and a full port still admits a good client. */
+@Timeout(60)
+class ControlSocketAvailabilityTest {
+
+    private final List<AutoCloseable> open = new ArrayList<>();
+
+    /** Small framing limits, {@code cap} clients and pending connections each, and the three deadlines in ms. */
+    private static Limits limits(int cap, long idleMs, long frameMs, long evictableMs) {
+        return new Limits(4_096, 1 << 20, cap, 64).withCaps(cap, cap).withDeadlines(idleMs, frameMs, evictableMs);
+    }
+
+    private ControlServer serve(Limits limits) throws IOException {
+        ControlServer server = new ControlServer(FakeControlPoint.twoWay(), new Expose("tracker", "127.0.0.1", 0), limits);
+        server.start();
+        open.add(server);
+        return server;
+    }
+
+    private TestClient connect(ControlServer server) throws IOException {
+        TestClient c = new TestClient(server.port());
+        open.add(c);
+        assertThat(c.next().type()).isEqualTo("hello");
+        return c;
+    }
+
+    @AfterEach
+    void closeAll() throws Exception {
+        for (AutoCloseable c : open.reversed()) {
+            c.close();
+        }
+    }
+
+    private static void await(String what, BooleanSupplier condition) throws InterruptedException {
+        long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        while (!condition.getAsBoolean()) {
+            if (System.nanoTime() > until) {
+                throw new AssertionError("timed out waiting until " + what);
+            }
+            Thread.sleep(5);
+        }
+    }
+
+    private static ObjectNode assertError(TestClient c, String code) throws IOException {
+        Frame f = c.next();
+        assertThat(f).as("an error line before the end of the stream").isNotNull();
+        ObjectNode e = f.header();
+        assertThat(e.path("type").asText()).as(e.toString()).isEqualTo("error");
+        assertThat(e.path("code").asText()).as(e.toString()).isEqualTo(code);
+        return e;
+    }
+
+    @Test
+    void aConnectionThatSendsAndTakesNothingIsClosedAtTheIdleDeadline() throws Exception {
+        ControlServer server = serve(limits(4, 300, 10_000, 10_000));
+        TestClient idle = connect(server);
+        assertThat(assertError(idle, "idle_timeout").path("message").asText()).contains("limits.idleTimeoutMs=300");
+        assertThat(idle.next()).isNull();
+        await("the idle client is gone", () -> server.clientCount() == 0);
+        assertThat(server.stats().path("idleTimeouts").asLong()).isEqualTo(1);
+    }
+
+    @Test
+    void aClientThatKeepsTalkingOutlivesTheIdleDeadline() throws Exception {
+        ControlServer server = serve(limits(4, 300, 10_000, 10_000));
+        TestClient idle = connect(server);
+        TestClient talker = connect(server);
+        int pongs = 0;
+        while (server.stats().path("idleTimeouts").asLong() == 0 && pongs < 100_000) {
+            talker.send("{\"op\":\"ping\"}");
+            talker.next("pong");
+            pongs++;
+        }
+        assertError(idle, "idle_timeout");
+        talker.send("{\"op\":\"ping\",\"id\":1}");
+        assertThat(talker.next().header().toString()).isEqualTo("{\"type\":\"pong\",\"id\":1}");
+    }
+
+    @Test
+    void aFirstLineNeverFinishedIsClosedAtTheFrameDeadline() throws Exception {
+        ControlServer server = serve(limits(4, 60_000, 300, 10_000));
+        TestClient c = connect(server);
+        c.sendRaw("{\"op\":\"pi".getBytes(UTF_8));
+        assertThat(assertError(c, "frame_timeout").path("message").asText()).contains("limits.frameTimeoutMs=300");
+        assertThat(c.next()).isNull();
+    }
+
+    @Test
+    void aSlowlorisTricklingALineIsClosedAtTheFrameDeadline() throws Exception {
+        ControlServer server = serve(limits(4, 60_000, 300, 10_000));
+        TestClient c = connect(server);
+        c.send("{\"op\":\"ping\"}");
+        c.next("pong");
+        byte[] line = "{\"op\":\"write\",\"input\":\"action\",\"value\":\"forward and on and on\"}".getBytes(UTF_8);
+        Socket raw = c.socket();
+        int sent = 0;
+        // One byte every 50 ms (the slowloris itself, not a wait); bounded by the line's length.
+        while (raw.getInputStream().available() == 0 && sent < line.length) {
+            c.sendRaw(new byte[] {line[sent++]});
+            Thread.sleep(50);
+        }
+        assertThat(sent).as("closed before the line could be finished").isLessThan(line.length);
+        assertError(c, "frame_timeout");
+        assertThat(server.stats().path("frameTimeouts").asLong()).isEqualTo(1);
+    }
+
+    @Test
+    void aNewcomerToAPortFullOfSilentConnectionsIsAdmittedAndTheOldestEvicted() throws Exception {
+        ControlServer server = serve(limits(2, 60_000, 10_000, 10_000));
+        TestClient first = connect(server);
+        TestClient second = connect(server);
+        await("both holders are registered", () -> server.clientCount() == 2);
+        TestClient newcomer = connect(server);
+        newcomer.send("{\"op\":\"ping\",\"id\":1}");
+        assertThat(newcomer.next("pong")).isNotNull();
+        ObjectNode evicted = assertError(first, "evicted");
+        assertThat(evicted.path("message").asText()).contains("limits.maxPendingPerPort=2", "no request");
+        assertThat(first.next()).isNull();
+        second.send("{\"op\":\"ping\",\"id\":2}");
+        assertThat(second.next("pong")).isNotNull();
+        assertThat(server.stats().path("evicted").asLong()).isEqualTo(1);
+        assertThat(server.stats().path("refused").asLong()).isZero();
+    }
+
+    @Test
+    void aNewClientEvictsAClientThatOnlyHoldsItsPlace() throws Exception {
+        ControlServer server = serve(limits(2, 60_000, 10_000, 200));
+        TestClient first = connect(server);
+        TestClient second = connect(server);
+        for (TestClient c : List.of(first, second)) {
+            c.send("{\"op\":\"ping\"}");
+            c.next("pong");
+        }
+        TestClient newcomer = connect(server);
+        // Both clients are working for 200 ms after their ping: until then the newcomer is refused; then the
+        // one idle longest gives way. Each refused newcomer is a fresh connection.
+        Frame answer = null;
+        for (int i = 0; i < 1_000 && (answer == null || !answer.type().equals("pong")); i++) {
+            if (answer != null) {
+                assertThat(answer.header().path("code").asText()).isEqualTo("too_many_clients");
+                newcomer = connect(server);
+            }
+            newcomer.send("{\"op\":\"ping\"}");
+            answer = newcomer.next();
+        }
+        assertThat(answer.type()).isEqualTo("pong");
+        ObjectNode evicted = assertError(first, "evicted");
+        assertThat(evicted.path("message").asText()).contains("limits.maxClientsPerPort=2", "limits.evictableIdleMs=200");
+        second.send("{\"op\":\"ping\",\"id\":2}");
+        assertThat(second.next("pong")).isNotNull();
+    }
+
+    @Test
+    void aFloodOfConnectionsNeverEvictsWorkingClientsAndAGoodNewcomerStillGetsIn() throws Exception {
+        ControlServer server = serve(limits(4, 60_000, 10_000, 60_000));
+        TestClient a = connect(server);
+        TestClient b = connect(server);
+        for (TestClient c : List.of(a, b)) {
+            c.send("{\"op\":\"ping\"}");
+            c.next("pong");
+        }
+        List<Socket> flood = new ArrayList<>();
+        try {
+            for (int i = 0; i < 300; i++) {
+                flood.add(new Socket("127.0.0.1", server.port()));
+            }
+            TestClient newcomer = connect(server);
+            newcomer.send("{\"op\":\"ping\",\"id\":\"new\"}");
+            assertThat(newcomer.next("pong").header().path("id").asText()).isEqualTo("new");
+            for (TestClient c : List.of(a, b)) {
+                c.send("{\"op\":\"ping\",\"id\":\"still\"}");
+                assertThat(c.next().header().toString()).isEqualTo("{\"type\":\"pong\",\"id\":\"still\"}");
+            }
+            await("every flooding connection but the last four evicted",
+                    () -> server.stats().path("evicted").asLong() >= 296);
+            assertThat(server.stats().path("refused").asLong()).isZero();
+        } finally {
+            for (Socket s : flood) {
+                s.close();
+            }
+        }
+    }
+
+    @Test
+    void aBlockOverThePortsBudgetIsRefusedWithTheLimitAndItsMemoryComesBack() throws Exception {
+        ControlServer server = serve(new Limits(4_096, 1 << 20, 4, 64).withBlockBudgets(1 << 20, 8 << 20));
+        TestClient holder = connect(server);
+        TestClient late = connect(server);
+        holder.send("{\"op\":\"write\",\"input\":\"action\",\"kind\":\"text\",\"bytes\":1048576,\"id\":1}");
+        holder.sendRaw(new byte[600_000]);
+        await("the first block holds the port's budget", () -> server.blockBytesInFlight() == 1 << 20);
+        late.send("{\"op\":\"write\",\"input\":\"action\",\"kind\":\"text\",\"bytes\":100000,\"id\":2}");
+        late.sendRaw(new byte[100_000]);
+        ObjectNode refused = assertError(late, "block_budget");
+        assertThat(refused.path("message").asText()).contains("limits.socketBlockBudgetBytes=1048576");
+        late.send("{\"op\":\"ping\",\"id\":3}");
+        assertThat(late.next("pong").header().path("id").asInt()).isEqualTo(3);
+        holder.sendRaw(new byte[1_048_576 - 600_000]);
+        assertThat(holder.next().header().path("id").asInt()).as("the first block was taken whole").isEqualTo(1);
+        await("the memory is back", () -> server.blockBytesInFlight() == 0);
+    }
+
+    @Test
+    void everyPortOfTheProcessSharesOneBlockBudget() throws Exception {
+        BlockBudget process = BlockBudget.of("limits.processBlockBudgetBytes", 1 << 20);
+        Limits limits = new Limits(4_096, 1 << 20, 4, 64).withBlockBudgets(1 << 20, 1 << 20);
+        ControlServer one = new ControlServer(FakeControlPoint.twoWay(), new Expose("one", "127.0.0.1", 0), limits, process);
+        ControlServer two = new ControlServer(FakeControlPoint.twoWay(), new Expose("two", "127.0.0.1", 0), limits, process);
+        one.start();
+        two.start();
+        open.add(one);
+        open.add(two);
+        TestClient holder = connect(one);
+        holder.send("{\"op\":\"write\",\"input\":\"action\",\"kind\":\"text\",\"bytes\":1048576}");
+        holder.sendRaw(new byte[600_000]);
+        await("the block on port one holds the process's budget", () -> process.reserved() == 1 << 20);
+        TestClient other = connect(two);
+        other.send("{\"op\":\"write\",\"input\":\"action\",\"kind\":\"text\",\"bytes\":1000}");
+        other.sendRaw(new byte[1_000]);
+        assertThat(assertError(other, "block_budget").path("message").asText())
+                .contains("limits.processBlockBudgetBytes=1048576");
+        holder.close();
+        await("the memory is back", () -> process.reserved() == 0);
+    }
+}
