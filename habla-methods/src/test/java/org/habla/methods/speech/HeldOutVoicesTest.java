@@ -43,7 +43,7 @@ class HeldOutVoicesTest {
 
     /**
      * What the chain reached (10 of 18 and 1 of 8 when this test was written; 11 and 5 with the garbage
-     * words and the early endpoint), less a margin: a regression shows.
+     * words), less a margin: a regression shows.
      */
     static final int MIN_RIGHT = 9;
     static final int MIN_SILENT = 4;

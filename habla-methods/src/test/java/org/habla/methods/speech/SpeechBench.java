@@ -48,8 +48,11 @@ public final class SpeechBench {
         int enrolVoices = Integer.parseInt(option(a, "--enrol-voices", "8"));
         List<EvalSet.Voice> voices = EvalSet.read(set);
         List<EvalSet.Voice> heldOut = voices.stream().filter(EvalSet.Voice::heldOut).toList();
-        System.out.printf("Speech recognition, the chain of %s (audio-processing -> speech-recognition), on %d held-out "
-                + "voices (%s)%nnever used for tuning; %d tune voices not reported here.%n%n", config, heldOut.size(),
+        boolean direct = SpeechChain.direct(new ConfigLoader(PluginRegistry.discover()).load(config).method("speech")
+                .orElseThrow());
+        System.out.printf("Speech recognition, the chain of %s (%s), on %d held-out voices (%s)%nnever used for tuning; "
+                + "%d tune voices not reported here.%n%n", config, direct ? "microphone -> speech-recognition"
+                : "audio-processing -> speech-recognition", heldOut.size(),
                 String.join(", ", heldOut.stream().map(v -> v.name() + " (" + v.engine() + ")").toList()),
                 voices.size() - heldOut.size());
         if (a.contains("--latency-only")) {
@@ -185,6 +188,7 @@ public final class SpeechBench {
         Daemon d = Daemon.start(new ConfigLoader(registry).parse(json, config.toAbsolutePath().getParent()), registry,
                 EngineClock.system());
         Histogram h = new Histogram(60_000_000L, 3);
+        java.util.Map<String, Histogram> byCondition = new java.util.LinkedHashMap<>();
         int right = 0;
         int items = 0;
         double audioS = 0;
@@ -239,7 +243,9 @@ public final class SpeechBench {
                         }
                         if (last != null && last.inGrammar() && last.text().equals(arrival[1])) {
                             right++;
-                            h.recordValue(Math.max(0, Math.round((atS - last.endS()) * 1e6)));
+                            long micros = Math.max(0, Math.round((atS - last.endS()) * 1e6));
+                            h.recordValue(micros);
+                            byCondition.computeIfAbsent(condition, k -> new Histogram(60_000_000L, 3)).recordValue(micros);
                         }
                     }
                     items += (int) its.stream().filter(EvalSet.Item::inGrammar).count();
@@ -256,6 +262,9 @@ public final class SpeechBench {
                 h.getValueAtPercentile(99) / 1e3, h.getMaxValue() / 1e3,
                 SpeechChain.direct(speech) ? "the microphone's stream, its own endpointing" : "audio-processing's segments",
                 loadAverage());
+        byCondition.forEach((condition, hc) -> System.out.printf("  %-8s %3d phrases right: p50 %.0f ms   p90 %.0f ms   "
+                + "max %.0f ms%n", condition, hc.getTotalCount(), hc.getValueAtPercentile(50) / 1e3,
+                hc.getValueAtPercentile(90) / 1e3, hc.getMaxValue() / 1e3));
     }
 
     /** The machine's load averages (1, 5, 15 min), as /proc/loadavg gives them. */
