@@ -11,10 +11,19 @@ line describing the method; then it streams one JSON object per line. A line may
         print(sample["value"])
     with ControlSocket("127.0.0.1", 7004) as action:
         action.write("forward")
+
+Where the daemon requires authentication (its hello says "auth": "required"), the client sends its name and
+token first: give client= and token=, or set HABLA_CLIENT and HABLA_TOKEN. For a socket that speaks TLS give
+tls= the lab's certificate file (or an ssl.SSLContext) (docs/security.md):
+
+    with ControlSocket("robot.lab", 7002, client="mdb", token=TOKEN, tls="lab.crt") as s:
+        print(s.next_sample())
 """
 
 import json
+import os
 import socket
+import ssl
 import threading
 import time
 
@@ -67,11 +76,23 @@ def _invalid(code, message, raw):
 class ControlSocket:
     """One connection to one method's control socket."""
 
-    def __init__(self, host, port, timeout=5.0, max_line=1 << 20, announce=True):
+    def __init__(self, host, port, timeout=5.0, max_line=1 << 20, announce=True, client=None, token=None,
+                 tls=None):
         """Connects and reads the hello. With announce (the default) it sends one ping at once: a connection
         that has sent no request is only "pending" for the daemon, which closes it after limits.idleTimeoutMs
-        and lets newcomers push it out when the port is crowded (docs/protocol.md)."""
+        and lets newcomers push it out when the port is crowded (docs/protocol.md).
+
+        Where the hello says authentication is required, it authenticates as client with token (default: the
+        HABLA_CLIENT and HABLA_TOKEN environment variables) and self.hello is the full hello that follows. tls
+        is None for plain TCP, a certificate file to trust, or an ssl.SSLContext."""
         self._sock = socket.create_connection((host, port), timeout=timeout)
+        if tls is not None:
+            context = tls if isinstance(tls, ssl.SSLContext) else ssl.create_default_context(cafile=tls)
+            try:
+                self._sock = context.wrap_socket(self._sock, server_hostname=host)
+            except BaseException:
+                self._sock.close()
+                raise
         self._buf = b""
         self._max_line = max_line
         self._send_lock = threading.Lock()
@@ -85,11 +106,29 @@ class ControlSocket:
                 raise ControlError(self.hello)
             if self.hello.get("type") != "hello":
                 raise ConnectionError("expected a hello line, got %r" % (self.hello,))
-            if announce:
+            if self.hello.get("auth") == "required":
+                self._authenticate(client or os.environ.get("HABLA_CLIENT"),
+                                   token or os.environ.get("HABLA_TOKEN"), timeout)
+            elif announce:
                 self.send({"op": "ping"})
         except BaseException:
             self.close()
             raise
+
+    def _authenticate(self, client, token, timeout):
+        """Sends the auth line and reads the full hello that answers it, or raises the daemon's error."""
+        if not client or not token:
+            raise ControlError({"code": "auth_required", "message": "socket %r requires authentication: give "
+                                "client= and token= (or HABLA_CLIENT and HABLA_TOKEN)" % self.hello.get("socket")})
+        self.send({"op": "auth", "client": client, "token": token})
+        answer = self.read_line(timeout)
+        if answer is None:
+            raise ConnectionError("the daemon closed the connection instead of answering the auth line")
+        if answer.get("type") == "error":
+            raise ControlError(answer)
+        if answer.get("type") != "hello":
+            raise ConnectionError("expected the full hello after authenticating, got %r" % (answer,))
+        self.hello = answer
 
     def __enter__(self):
         return self

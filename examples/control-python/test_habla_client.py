@@ -174,6 +174,27 @@ class ControlSocketTest(unittest.TestCase):
             s.request({"op": "rate", "maxHz": -1})
         self.assertEqual("bad_value", caught.exception.code)
 
+    def test_a_client_with_a_token_authenticates_first_and_keeps_the_full_hello(self):
+        full = dict(HELLO, auth="ok", client="mdb", role="command")
+        daemon = ScriptedDaemon(
+            json.dumps({"type": "hello", "protocol": "habla-control/1", "socket": "ranges",
+                        "auth": "required"}).encode() + b"\n",
+            answer=lambda req: (json.dumps(full) + "\n").encode() if req.get("op") == "auth" else b"")
+        self.addCleanup(daemon.close)
+        with ControlSocket("127.0.0.1", daemon.port, timeout=5, client="mdb", token="t" * 20) as s:
+            self.assertEqual(s.hello["client"], "mdb")
+            self.assertEqual(daemon.received[0], {"op": "auth", "client": "mdb", "token": "t" * 20})
+
+    def test_a_refused_token_raises_the_daemons_error(self):
+        daemon = ScriptedDaemon(
+            json.dumps({"type": "hello", "protocol": "habla-control/1", "socket": "ranges",
+                        "auth": "required"}).encode() + b"\n",
+            answer=lambda req: b'{"type":"error","code":"auth_failed","message":"no"}\n')
+        self.addCleanup(daemon.close)
+        with self.assertRaises(ControlError) as caught:
+            ControlSocket("127.0.0.1", daemon.port, timeout=5, client="mdb", token="wrong-token-wrong")
+        self.assertEqual(caught.exception.code, "auth_failed")
+
     def test_end_of_stream_gives_none(self):
         daemon = ScriptedDaemon(line(HELLO), sample(1, [1.0]))
         s = self.connect(daemon)

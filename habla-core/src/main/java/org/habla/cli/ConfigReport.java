@@ -58,7 +58,8 @@ final class ConfigReport {
                 .map(e -> e.getValue() + " " + e.getKey().configName()).collect(Collectors.joining(", ")) + ")");
         List<String> sockets = cfg.methods().stream().filter(m -> m.expose().isPresent())
                 .sorted((a, b) -> Integer.compare(a.expose().get().port(), b.expose().get().port()))
-                .map(m -> m.expose().get().name() + " on " + m.expose().get().bind() + ":" + m.expose().get().port())
+                .map(m -> m.expose().get().name() + " on " + m.expose().get().bind() + ":" + m.expose().get().port()
+                        + guard(cfg, m.expose().get()))
                 .toList();
         parts.add(count(sockets.size(), "control socket") + list(sockets));
         List<String> remote = cfg.methods().stream().filter(m -> m.host().isPresent())
@@ -68,9 +69,27 @@ final class ConfigReport {
         }
         parts.add(cfg.status().port() == 0 ? "no status endpoint"
                 : "status on " + cfg.status().bind() + ":" + cfg.status().port());
+        var sec = cfg.security();
+        if (sec.credentials() != null) {
+            parts.add(count(sec.credentials().clientNames().size(), "client") + " in "
+                    + sec.credentialsFile().getFileName() + (sec.credentials().workerSecret().isPresent()
+                            ? " with a worker secret" : "") + (sec.auditLog() == null ? ""
+                            : "; audit log " + sec.auditLog().getFileName()));
+        }
+        if (sec.insecure()) {
+            parts.add("INSECURE: ports beyond loopback may be open");
+        }
         parts.add(cfg.safety().watchdogMs() == 0 ? "motion watchdog on disconnect only"
                 : "motion watchdog " + cfg.safety().watchdogMs() + " ms");
         return wrap(String.join("; ", parts) + ".");
+    }
+
+    /** How a socket is guarded, where the config says anything about it: " (authenticated, TLS)", " (open)". */
+    private static String guard(HablaConfig cfg, org.habla.config.Expose x) {
+        if (cfg.security().credentials() == null && !x.tls()) {
+            return "";
+        }
+        return (cfg.security().authenticates(x.bind()) ? " (authenticated" : " (open") + (x.tls() ? ", TLS)" : ")");
     }
 
     private static String describe(InterfaceConfig i) {

@@ -33,16 +33,50 @@ public final class StatusCommand implements Callable<Integer> {
     @Option(names = "--json", description = "Print the raw JSON snapshot.")
     private boolean json;
 
+    @Option(names = "--client", paramLabel = "NAME", defaultValue = "${env:HABLA_CLIENT}",
+            description = "The client name to authenticate as, where the endpoint requires it (or HABLA_CLIENT).")
+    private String client;
+
+    @Option(names = "--tls-trust", paramLabel = "PEM",
+            description = "The endpoint speaks TLS: trust this certificate (the lab's, see docs/security.md).")
+    private java.nio.file.Path tlsTrust;
+
+    @Option(names = "--token-file", paramLabel = "FILE",
+            description = "A file whose first line is the client's token (else the HABLA_TOKEN environment variable).")
+    private java.nio.file.Path tokenFile;
+
     @Override
     public Integer call() {
         PrintWriter out = spec.commandLine().getOut();
         PrintWriter err = spec.commandLine().getErr();
         JsonNode status;
-        try (Socket s = new Socket()) {
-            s.connect(new InetSocketAddress(host, port), 2_000);
-            s.setSoTimeout(5_000);
+        try (Socket plain = new Socket()) {
+            plain.connect(new InetSocketAddress(host, port), 2_000);
+            plain.setSoTimeout(5_000);
+            Socket s = tlsTrust == null ? plain
+                    : org.habla.security.Tls.client(tlsTrust).connect(plain, host, port, 5_000);
             BufferedReader in = new BufferedReader(new InputStreamReader(s.getInputStream(), StandardCharsets.UTF_8));
             String line = in.readLine();
+            JsonNode first = line == null ? null : new ObjectMapper().readTree(line);
+            if (first != null && first.path("type").asText().equals("hello")
+                    && first.path("auth").asText().equals("required")) {
+                String token = token();
+                if (client == null || client.isBlank() || token == null) {
+                    err.println("habla status: the status endpoint at " + host + ":" + port + " requires "
+                            + "authentication: give --client NAME and --token-file FILE (or HABLA_CLIENT, HABLA_TOKEN)");
+                    return ExitCodes.RUNTIME_FAILURE;
+                }
+                s.getOutputStream().write((new ObjectMapper().createObjectNode().put("op", "auth")
+                        .put("client", client).put("token", token).toString() + "\n").getBytes(StandardCharsets.UTF_8));
+                s.getOutputStream().flush();
+                line = in.readLine();
+                JsonNode answer = line == null ? null : new ObjectMapper().readTree(line);
+                if (answer != null && answer.path("type").asText().equals("error")) {
+                    err.println("habla status: refused: " + answer.path("code").asText() + ": "
+                            + answer.path("message").asText());
+                    return ExitCodes.RUNTIME_FAILURE;
+                }
+            }
             if (line == null) {
                 err.println("habla status: the daemon at " + host + ":" + port + " closed without a status line");
                 return ExitCodes.RUNTIME_FAILURE;
@@ -59,6 +93,15 @@ public final class StatusCommand implements Callable<Integer> {
         }
         out.flush();
         return ExitCodes.OK;
+    }
+
+    /** The token from --token-file, or HABLA_TOKEN; null when neither is given. */
+    private String token() throws IOException {
+        if (tokenFile != null) {
+            return java.nio.file.Files.readString(tokenFile).lines().findFirst().orElse("").strip();
+        }
+        String env = System.getenv("HABLA_TOKEN");
+        return env == null || env.isBlank() ? null : env.strip();
     }
 
     static void print(JsonNode st, PrintWriter out) {
@@ -115,6 +158,18 @@ public final class StatusCommand implements Callable<Integer> {
                         s.path("dropped").asLong(), s.path("evicted").asLong(),
                         s.path("idleTimeouts").asLong() + s.path("frameTimeouts").asLong(), commander(s.path("control")));
             }
+            long failures = 0;
+            java.util.List<String> guarded = new java.util.ArrayList<>();
+            for (JsonNode s : st.path("sockets")) {
+                if (s.path("auth").asText().equals("required")) {
+                    guarded.add(s.path("socket").asText() + (s.path("tls").asBoolean() ? " (TLS)" : ""));
+                    failures += s.path("authFailures").asLong();
+                }
+            }
+            if (!guarded.isEmpty()) {
+                out.printf(Locale.ROOT, "authentication required on %s; %d failed attempts%n",
+                        String.join(", ", guarded), failures);
+            }
             if (st.has("blocks")) {
                 out.printf(Locale.ROOT, "blocks in flight: %d of %d bytes%n", st.path("blocks").path("bytesInFlight")
                         .asLong(), st.path("blocks").path("budgetBytes").asLong());
@@ -132,7 +187,9 @@ public final class StatusCommand implements Callable<Integer> {
         if (h.isNull() || h.isMissingNode()) {
             return "nobody";
         }
-        return String.format(Locale.ROOT, "%s %s since %s (silent %d ms)", h.path("connection").asText(),
+        String client = h.path("client").asText("anonymous");
+        return String.format(Locale.ROOT, "%s%s %s since %s (silent %d ms)",
+                client.equals("anonymous") ? "" : client + " ", h.path("connection").asText(),
                 h.path("address").asText(), control.path("since").asText(), control.path("silentMs").asLong());
     }
 }

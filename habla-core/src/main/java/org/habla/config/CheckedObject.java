@@ -102,6 +102,19 @@ final class CheckedObject {
         return value;
     }
 
+    /** An optional boolean; {@code dflt} when absent or wrong (after an error). */
+    boolean bool(String key, boolean dflt) {
+        JsonNode v = node.get(key);
+        if (v == null) {
+            return dflt;
+        }
+        if (!v.isBoolean()) {
+            errors.add(path.field(key), "must be true or false, not " + describe(v));
+            return dflt;
+        }
+        return v.booleanValue();
+    }
+
     /** An optional nested object; empty when absent, or after an error when not an object. */
     Optional<CheckedObject> object(String key) {
         JsonNode v = node.get(key);

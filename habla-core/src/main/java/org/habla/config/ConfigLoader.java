@@ -29,31 +29,34 @@ import org.habla.plugin.PluginRegistry;
 public final class ConfigLoader {
 
     static final Set<String> ROOT_KEYS =
-            Set.of("$schema", "description", "system", "limits", "safety", "status", "interfaces", "methods", "bridges");
+            Set.of("$schema", "description", "system", "limits", "safety", "status", "interfaces", "methods", "bridges",
+                    "security");
     static final Set<String> LIMITS_KEYS =
             Set.of("maxLineBytes", "maxBinaryBytes", "maxClientsPerPort", "clientQueueSamples", "maxPendingPerPort", "idleTimeoutMs",
                     "frameTimeoutMs", "evictableIdleMs", "socketBlockBudgetBytes", "processBlockBudgetBytes");
     static final Set<String> SAFETY_KEYS = Set.of("watchdogMs");
-    static final Set<String> STATUS_KEYS = Set.of("bind", "port", "monitorPort");
+    static final Set<String> STATUS_KEYS = Set.of("bind", "port", "monitorPort", "tls");
     static final Set<String> INTERFACE_KEYS = Set.of("id", "driver", "address", "params", "reconnect");
     static final Set<String> RECONNECT_KEYS = Set.of("initialMs", "maxMs", "connectTimeoutMs", "readTimeoutMs",
             "tcpKeepAliveIdleS", "tcpKeepAliveIntervalS", "tcpKeepAliveCount");
     static final Set<String> METHOD_KEYS =
             Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host", "fallback", "feedback");
-    static final Set<String> EXPOSE_KEYS = Set.of("port", "name", "bind");
+    static final Set<String> EXPOSE_KEYS = Set.of("port", "name", "bind", "tls");
     static final Set<String> BRIDGE_KEYS = Set.of("id", "type", "address", "params");
 
     /** The keys of each fixed object of the format, by where it sits ({@code []} stands for any element). */
-    static final Map<String, Set<String>> KEYS_BY_OBJECT = Map.of(
-            "$", ROOT_KEYS,
-            "$.limits", LIMITS_KEYS,
-            "$.safety", SAFETY_KEYS,
-            "$.status", STATUS_KEYS,
-            "$.interfaces[]", INTERFACE_KEYS,
-            "$.interfaces[].reconnect", RECONNECT_KEYS,
-            "$.methods[]", METHOD_KEYS,
-            "$.methods[].expose", EXPOSE_KEYS,
-            "$.bridges[]", BRIDGE_KEYS);
+    static final Map<String, Set<String>> KEYS_BY_OBJECT = Map.ofEntries(
+            Map.entry("$", ROOT_KEYS),
+            Map.entry("$.limits", LIMITS_KEYS),
+            Map.entry("$.safety", SAFETY_KEYS),
+            Map.entry("$.status", STATUS_KEYS),
+            Map.entry("$.interfaces[]", INTERFACE_KEYS),
+            Map.entry("$.interfaces[].reconnect", RECONNECT_KEYS),
+            Map.entry("$.methods[]", METHOD_KEYS),
+            Map.entry("$.methods[].expose", EXPOSE_KEYS),
+            Map.entry("$.bridges[]", BRIDGE_KEYS),
+            Map.entry("$.security", SecurityReader.SECURITY_KEYS),
+            Map.entry("$.security.tls", SecurityReader.TLS_KEYS));
 
     /** The largest JSON line a socket may be allowed: 16 MiB. */
     static final int MAX_LINE_BYTES = 16 * 1024 * 1024;
@@ -162,6 +165,12 @@ public final class ConfigLoader {
         java.util.Set<String> sockets = new java.util.HashSet<>();
         methods.forEach(m -> m.expose().ifPresent(x -> sockets.add(x.name())));
         List<BridgeConfig> bridges = new BridgeReader(registry, errors, baseDir).read(root.array("bridges"), sockets);
+        SecurityReader securityReader = new SecurityReader(errors, baseDir);
+        SecurityConfig security = securityReader.read(root.object("security"), sockets);
+        securityReader.checkPolicy(security, status, methods);
+        if (security.credentials() != null) {
+            checkBridgeRoles(root.array("bridges"), bridges, security, errors);
+        }
 
         if (!errors.isEmpty() || system.isEmpty()
                 || !interfaces.stream().allMatch(InterfaceEntry::complete)
@@ -170,7 +179,34 @@ public final class ConfigLoader {
         }
         return Optional.of(new HablaConfig(system.get(), limits, safety, status,
                 interfaces.stream().map(InterfaceEntry::toConfig).toList(),
-                methods.stream().map(MethodEntry::toConfig).toList(), bridges));
+                methods.stream().map(MethodEntry::toConfig).toList(), bridges, security));
+    }
+
+    /** With a credentials file, a bridge may take actions only for the sockets the file gives it. */
+    private void checkBridgeRoles(List<JsonNode> nodes, List<BridgeConfig> bridges, SecurityConfig security,
+            ConfigErrors errors) {
+        for (BridgeConfig b : bridges) {
+            int index = -1;
+            for (int i = 0; i < nodes.size(); i++) {
+                if (b.id().equals(nodes.get(i).path("id").asText())) {
+                    index = i;
+                }
+            }
+            Set<String> actions = new java.util.TreeSet<>(actions(b));
+            actions.removeAll(security.credentials().bridgeCommands(b.id()));
+            if (!actions.isEmpty() && index >= 0) {
+                errors.add(JsonPath.ROOT.field("bridges").index(index), "bridge '" + b.id() + "' takes actions for "
+                        + actions + ", which the credentials file does not give it: add \"bridges\": {\"" + b.id()
+                        + "\": {\"" + actions.iterator().next() + "\": \"command\"}} to "
+                        + security.credentialsFile().getFileName());
+            }
+        }
+    }
+
+    @SuppressWarnings("unchecked")
+    private <P extends Record> Set<String> actions(BridgeConfig b) {
+        var provider = (org.habla.plugin.BridgeProvider<P>) registry.bridge(b.type()).orElseThrow();
+        return provider.actionSockets((P) b.params());
     }
 
     private Limits limits(CheckedObject o, ConfigErrors errors) {
@@ -211,6 +247,7 @@ public final class ConfigLoader {
         o.allowOnly(STATUS_KEYS);
         StatusConfig d = StatusConfig.DEFAULTS;
         return new StatusConfig(o.optionalString("bind").orElse(d.bind()),
-                (int) o.integer("port", d.port(), 0, 65_535), (int) o.integer("monitorPort", d.monitorPort(), 0, 65_535));
+                (int) o.integer("port", d.port(), 0, 65_535), (int) o.integer("monitorPort", d.monitorPort(), 0, 65_535),
+                o.bool("tls", false));
     }
 }

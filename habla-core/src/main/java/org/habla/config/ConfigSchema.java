@@ -54,13 +54,16 @@ public final class ConfigSchema {
                 "bind", string("The address to listen on.").put("default", StatusConfig.DEFAULTS.bind()),
                 "port", integer(0, 65_535, StatusConfig.DEFAULTS.port(), "The TCP port; 0 turns the endpoint off."),
                 "monitorPort", integer(0, 65_535, StatusConfig.DEFAULTS.monitorPort(),
-                        "The live monitor's port: a web page and the Foxglove WebSocket protocol; 0: no monitor."))));
+                        "The live monitor's port: a web page and the Foxglove WebSocket protocol; 0: no monitor."),
+                "tls", bool(false, "The status endpoint speaks TLS with the certificate of security.tls."))));
         p.set("interfaces", NODES.objectNode().put("description", "The robot's interface servers.")
                 .put("type", "array").set("items", ref("interface")));
         p.set("methods", NODES.objectNode().put("description", "The methods of the graph.")
                 .put("type", "array").set("items", ref("method")));
         p.set("bridges", NODES.objectNode().put("description", "Bridges that carry exposed methods to another "
                 + "transport (an MQTT broker) beside their sockets.").put("type", "array").set("items", bridge(registry)));
+
+        p.set("security", security());
 
         ObjectNode defs = root.putObject("$defs");
         defs.set("id", string("A letter, then up to 63 letters, digits, '_' or '-'.").put("pattern", ID_PATTERN));
@@ -86,6 +89,30 @@ public final class ConfigSchema {
         } catch (JsonProcessingException e) {
             throw new IllegalStateException("the schema cannot be written", e);
         }
+    }
+
+    private static ObjectNode security() {
+        return object("Who may use the daemon's ports: credentials, the audit log, TLS (docs/security.md).")
+                .set("properties", props(
+                        "credentials", string("The credentials file, beside the config: named clients, their tokens "
+                                + "and roles per socket, the worker secret. Readable by its owner only."),
+                        "auditLog", string("The append-only audit log of every accepted and refused command; "
+                                + "with credentials it defaults to " + SecurityReader.DEFAULT_AUDIT_LOG
+                                + " beside the config."),
+                        "insecure", bool(false, "Allow ports beyond loopback without authentication (a warning at "
+                                + "every start)."),
+                        "loopback", string("Whether ports bound to loopback are open or require authentication too.")
+                                .put("default", "open").set("enum", strings("open", "authenticated")),
+                        "tls", withRequired(object("The certificate and key of TLS sockets (\"tls\": true)."),
+                                "certificate", "key").set("properties", props(
+                                        "certificate", string("The PEM certificate (chain)."),
+                                        "key", string("Its unencrypted PKCS#8 PEM key, readable by its owner only."))),
+                        "workerTrust", string("The PEM certificate workers must present: the worker link speaks "
+                                + "TLS.")));
+    }
+
+    private static ObjectNode bool(boolean dflt, String description) {
+        return NODES.objectNode().put("type", "boolean").put("default", dflt).put("description", description);
     }
 
     private static ObjectNode limits() {
@@ -179,7 +206,9 @@ public final class ConfigSchema {
                         .set("properties", props(
                                 "port", integer(1, 65_535, "The TCP port; unique in the config."),
                                 "name", ref("id").put("description", "The socket's name; defaults to the method id."),
-                                "bind", string("The address to listen on.").put("default", "127.0.0.1"))),
+                                "bind", string("The address to listen on; beyond loopback it needs "
+                                        + "security.credentials or security.insecure.").put("default", "127.0.0.1"),
+                                "tls", bool(false, "Speak TLS with the certificate of security.tls."))),
                 "host", string("The worker that runs the method, host:port; absent means the daemon itself.")
                         .put("pattern", "^.+:[0-9]{1,5}$"),
                 "fallback", string("What the daemon does while the method's worker is lost: none (its outputs are "

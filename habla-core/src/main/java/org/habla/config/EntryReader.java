@@ -212,7 +212,8 @@ final class EntryReader {
         if (port < 0 || socketName == null) {
             return Optional.empty();
         }
-        return Optional.of(new Expose(socketName, bind, (int) port));
+        boolean tls = o.bool("tls", false);
+        return Optional.of(new Expose(socketName, bind, (int) port, tls));
     }
 
     private Fallback fallback(CheckedObject o) {

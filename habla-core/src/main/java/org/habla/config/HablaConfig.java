@@ -9,12 +9,20 @@ import java.util.Set;
  * Only {@link ConfigLoader} makes these, after every check has passed.
  */
 public record HablaConfig(String system, Limits limits, Safety safety, StatusConfig status,
-        List<InterfaceConfig> interfaces, List<MethodConfig> methods, List<BridgeConfig> bridges) {
+        List<InterfaceConfig> interfaces, List<MethodConfig> methods, List<BridgeConfig> bridges,
+        SecurityConfig security) {
 
     public HablaConfig {
         interfaces = List.copyOf(interfaces);
         methods = List.copyOf(methods);
         bridges = List.copyOf(bridges);
+        security = security == null ? SecurityConfig.DEFAULTS : security;
+    }
+
+    /** A config without security settings: loopback only, no credentials. */
+    public HablaConfig(String system, Limits limits, Safety safety, StatusConfig status,
+            List<InterfaceConfig> interfaces, List<MethodConfig> methods, List<BridgeConfig> bridges) {
+        this(system, limits, safety, status, interfaces, methods, bridges, SecurityConfig.DEFAULTS);
     }
 
     /** A config without bridges. */

@@ -49,6 +49,7 @@ public final class Daemon implements AutoCloseable {
     private final BlockBudget blockBudget;
     private final Map<String, Bridge> bridges = new LinkedHashMap<>();
     private StatusServer statusServer;
+    private PortGuards guards;
     private Monitor monitor;
     private volatile boolean closed;
 
@@ -122,9 +123,11 @@ public final class Daemon implements AutoCloseable {
         }
         Daemon d = new Daemon(config, graph, clock);
         try {
+            d.guards = PortGuards.of(config);
+            d.guards.audit().addListener(graph::audit);
             for (ControlPoint point : d.graph.controlPoints()) {
                 ControlServer server = new ControlServer(point, d.graph.exposeOf(point), config.limits(),
-                        d.blockBudget);
+                        d.blockBudget, d.guards.socket(d.graph.exposeOf(point)));
                 d.servers.put(point.name(), server);
                 try {
                     server.bind();
@@ -133,7 +136,8 @@ public final class Daemon implements AutoCloseable {
                 }
             }
             if (config.status().port() > 0) {
-                d.statusServer = new StatusServer(config.status(), config.limits(), d::status);
+                d.statusServer = new StatusServer(config.status(), config.limits(), d::status,
+                        d.guards.status(config.status().bind()), d.guards.statusTls(config.status()));
                 try {
                     d.statusServer.bind();
                 } catch (IOException e) {
@@ -160,7 +164,8 @@ public final class Daemon implements AutoCloseable {
                 for (BridgeConfig bc : config.bridges()) {
                     Bridge bridge = Bridges.create(registry, bc);
                     d.bridges.put(bc.id(), bridge);
-                    bridge.start(config.system(), d.graph.controlPoints(), Bridges.role(registry, bc));
+                    bridge.start(config.system(), d.graph.controlPoints(),
+                            Bridges.role(registry, bc).auditedIn(d.guards.audit()));
                 }
             }
             d.graph.start();
@@ -239,6 +244,9 @@ public final class Daemon implements AutoCloseable {
         ObjectNode st = graph.status();
         ArrayNode sockets = st.putArray("sockets");
         servers.values().forEach(s -> sockets.add(s.stats()));
+        if (statusServer != null) {
+            statusServer.access().putStats(st.putObject("statusEndpoint"));
+        }
         st.putObject("blocks")
                 .put("bytesInFlight", blockBudget.reserved())
                 .put("budgetBytes", blockBudget.limitBytes());
@@ -272,6 +280,9 @@ public final class Daemon implements AutoCloseable {
             statusServer.close();
         }
         graph.close();
+        if (guards != null) {
+            guards.close();
+        }
         clock.close();
     }
 }

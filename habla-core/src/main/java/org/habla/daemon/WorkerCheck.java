@@ -32,19 +32,28 @@ final class WorkerCheck {
     /** One sentence per method placed on a worker that cannot run it; empty when all is well. */
     static List<String> refusals(HablaConfig config, int timeoutMillis) {
         Map<String, WorkerProtocol.Hello> hellos = new HashMap<>();
+        boolean anyPlaced = config.methods().stream().anyMatch(m -> m.host().isPresent());
+        org.habla.security.WorkerLink link = anyPlaced ? config.security().workerLink()
+                : org.habla.security.WorkerLink.PLAIN;
         List<String> refusals = new ArrayList<>();
         for (MethodConfig mc : config.methods()) {
             if (mc.host().isEmpty()) {
                 continue;
             }
             String host = mc.host().get();
-            WorkerProtocol.Hello hello = hellos.computeIfAbsent(host, h -> hello(h, timeoutMillis));
+            WorkerProtocol.Hello hello = hellos.computeIfAbsent(host, h -> hello(h, link, timeoutMillis));
             if (hello == null) {
                 LOG.warn("worker {} of method {} does not answer; its outputs are {} until it does", host, mc.id(),
                         mc.fallback() == org.habla.config.Fallback.LOCAL ? "computed in the daemon" : "stale");
                 continue;
             }
             String refusal = hello.refusal(mc.type());
+            if (refusal == null && hello.asksForSecret() && link.secret() == null) {
+                refusal = "the worker requires the shared secret and the credentials file gives no \"workerSecret\"";
+            } else if (refusal == null && !hello.asksForSecret() && link.secret() != null) {
+                refusal = "the worker does not ask for the shared secret, so it cannot prove it is the trusted worker "
+                        + "(start it with --secret-file)";
+            }
             if (refusal != null) {
                 refusals.add("method '" + mc.id() + "' is placed on worker " + host + ", but " + refusal);
             }
@@ -52,11 +61,12 @@ final class WorkerCheck {
         return refusals;
     }
 
-    private static WorkerProtocol.Hello hello(String host, int timeoutMillis) {
+    private static WorkerProtocol.Hello hello(String host, org.habla.security.WorkerLink link, int timeoutMillis) {
         InterfaceAddress a = InterfaceAddress.parse(host);
-        try (Socket s = new Socket()) {
-            s.connect(new InetSocketAddress(a.host(), a.port().orElseThrow()), timeoutMillis);
-            s.setSoTimeout(timeoutMillis);
+        try (Socket plain = new Socket()) {
+            plain.connect(new InetSocketAddress(a.host(), a.port().orElseThrow()), timeoutMillis);
+            plain.setSoTimeout(timeoutMillis);
+            Socket s = link.secure(plain, a.host(), a.port().orElseThrow(), timeoutMillis);
             FrameReader reader = new FrameReader(new BufferedInputStream(s.getInputStream()), 1 << 20, 0);
             var frame = reader.read();
             return frame == null ? null : WorkerProtocol.Hello.of(frame);

@@ -13,7 +13,7 @@ import java.util.Map;
  * sensing arrows (blue, solid) run up, actuation arrows (red, dashed) run down, wires inside a layer
  * arc above it in grey. Where several arrows meet one side of a box their ends are spread along it. Each
  * arrow carries a {@code <title>} (output → input) that viewers show on hover. Methods placed on a
- * worker are drawn dashed. The output depends only on the picture.
+ * worker are drawn dashed. The output depends only on the picture; the markup is written by {@link SvgDocument}.
  */
 public final class SvgWriter {
 
@@ -36,97 +36,94 @@ public final class SvgWriter {
 
     public static String write(GraphPicture picture) {
         Layout layout = Layout.of(picture);
-        StringBuilder s = new StringBuilder();
-        s.append("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
-        s.append("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"").append(n(layout.width())).append("\" height=\"")
-                .append(n(layout.height())).append("\" viewBox=\"0 0 ").append(n(layout.width())).append(' ')
-                .append(n(layout.height())).append("\" font-family=\"").append(FONT).append("\" font-size=\"12\">\n");
+        SvgDocument svg = new SvgDocument(layout.width(), layout.height())
+                .rootAttribute("font-family", FONT).rootAttribute("font-size", "12");
         String title = "HABLA graph of '" + picture.system() + "'";
-        s.append("  <title>").append(esc(title)).append("</title>\n");
-        s.append("  <defs>\n");
-        marker(s, "sensing", DotWriter.SENSING_COLOUR);
-        marker(s, "actuation", DotWriter.ACTUATION_COLOUR);
-        marker(s, "lateral", DotWriter.LATERAL_COLOUR);
-        s.append("  </defs>\n");
-        s.append("  <rect x=\"0\" y=\"0\" width=\"").append(n(layout.width())).append("\" height=\"")
-                .append(n(layout.height())).append("\" fill=\"white\"/>\n");
-        s.append("  <text x=\"").append(n(Layout.MARGIN)).append("\" y=\"26\" font-size=\"15\" font-weight=\"bold\">")
-                .append(esc(title)).append("</text>\n");
+        svg.element("title").text(title);
+        svg.element("defs").open();
+        marker(svg, "sensing", DotWriter.SENSING_COLOUR);
+        marker(svg, "actuation", DotWriter.ACTUATION_COLOUR);
+        marker(svg, "lateral", DotWriter.LATERAL_COLOUR);
+        svg.close();
+        svg.element("rect").attr("x", 0).attr("y", 0).attr("width", layout.width()).attr("height", layout.height())
+                .attr("fill", "white").end();
+        svg.element("text").attr("x", Layout.MARGIN).attr("y", 26).attr("font-size", "15")
+                .attr("font-weight", "bold").text(title);
         for (Row row : Row.values()) {
             Box b = layout.bands().get(row);
-            s.append("  <rect class=\"band\" x=\"").append(n(b.x())).append("\" y=\"").append(n(b.y()))
-                    .append("\" width=\"").append(n(b.w())).append("\" height=\"").append(n(b.h()))
-                    .append("\" rx=\"6\" fill=\"").append(bandColour(row)).append("\" stroke=\"#bbbbbb\"/>\n");
-            s.append("  <text class=\"band-title\" x=\"").append(n(b.x() + Layout.BAND_PAD)).append("\" y=\"")
-                    .append(n(b.y() + b.h() / 2 + 4)).append("\" fill=\"#555555\" font-weight=\"bold\">")
-                    .append(esc(row.title().toUpperCase(Locale.ROOT))).append("</text>\n");
+            svg.element("rect").attr("class", "band").attr("x", b.x()).attr("y", b.y()).attr("width", b.w())
+                    .attr("height", b.h()).attr("rx", "6").attr("fill", bandColour(row)).attr("stroke", "#bbbbbb")
+                    .end();
+            svg.element("text").attr("class", "band-title").attr("x", b.x() + Layout.BAND_PAD)
+                    .attr("y", b.y() + b.h() / 2 + 4).attr("fill", "#555555").attr("font-weight", "bold")
+                    .text(row.title().toUpperCase(Locale.ROOT));
         }
         for (InterfaceGroup g : picture.groups()) {
             Box f = layout.frames().get(g.id());
-            s.append("  <rect class=\"interface\" x=\"").append(n(f.x())).append("\" y=\"").append(n(f.y()))
-                    .append("\" width=\"").append(n(f.w())).append("\" height=\"").append(n(f.h()))
-                    .append("\" rx=\"4\" fill=\"white\" stroke=\"#888888\"/>\n");
-            s.append("  <text x=\"").append(n(f.centerX())).append("\" y=\"").append(n(f.bottom() - 7))
-                    .append("\" text-anchor=\"middle\" fill=\"#333333\">").append(esc(g.title())).append("</text>\n");
+            svg.element("rect").attr("class", "interface").attr("x", f.x()).attr("y", f.y()).attr("width", f.w())
+                    .attr("height", f.h()).attr("rx", "4").attr("fill", "white").attr("stroke", "#888888").end();
+            svg.element("text").attr("x", f.centerX()).attr("y", f.bottom() - 7).attr("text-anchor", "middle")
+                    .attr("fill", "#333333").text(g.title());
         }
         Map<String, double[]> ends = anchors(picture, layout);
         for (int i = 0; i < picture.edges().size(); i++) {
-            edge(s, picture.edges().get(i), ends.get("from" + i), ends.get("to" + i));
+            edge(svg, picture.edges().get(i), ends.get("from" + i), ends.get("to" + i));
         }
         for (Node node : picture.nodes()) {
-            box(s, node, layout.nodes().get(node.key()));
+            box(svg, node, layout.nodes().get(node.key()));
         }
-        legend(s, layout);
-        s.append("</svg>\n");
-        return s.toString();
+        legend(svg, layout);
+        return svg.render();
     }
 
-    private static void marker(StringBuilder s, String id, String colour) {
-        s.append("    <marker id=\"").append(id).append("\" viewBox=\"0 0 10 10\" refX=\"10\" refY=\"5\" ")
-                .append("markerWidth=\"7\" markerHeight=\"7\" orient=\"auto-start-reverse\">")
-                .append("<path d=\"M0,0 L10,5 L0,10 z\" fill=\"").append(colour).append("\"/></marker>\n");
+    private static void marker(SvgDocument svg, String id, String colour) {
+        svg.element("marker").attr("id", id).attr("viewBox", "0 0 10 10").attr("refX", "10").attr("refY", "5")
+                .attr("markerWidth", "7").attr("markerHeight", "7").attr("orient", "auto-start-reverse")
+                .around(svg.element("path").attr("d", "M0,0 L10,5 L0,10 z").attr("fill", colour));
     }
 
-    private static void box(StringBuilder s, Node node, Box b) {
+    private static void box(SvgDocument svg, Node node, Box b) {
         boolean control = node.row() == Row.CONTROL;
         boolean channel = node.row() == Row.INTERFACES;
-        s.append("  <g class=\"node\" id=\"").append(esc(node.key())).append("\">\n");
-        s.append("    <rect class=\"node\" x=\"").append(n(b.x())).append("\" y=\"").append(n(b.y()))
-                .append("\" width=\"").append(n(b.w())).append("\" height=\"").append(n(b.h())).append("\" rx=\"")
-                .append(channel ? n(b.h() / 2) : control ? "2" : "6").append("\" fill=\"")
-                .append(control ? "#fffbe6" : "white").append("\" stroke=\"#333333\"")
-                .append(node.remote() ? " stroke-dasharray=\"5 3\"" : "").append("/>\n");
+        svg.element("g").attr("class", "node").attr("id", node.key()).open();
+        SvgDocument.Element rect = svg.element("rect").attr("class", "node").attr("x", b.x()).attr("y", b.y())
+                .attr("width", b.w()).attr("height", b.h())
+                .attr("rx", channel ? SvgDocument.number(b.h() / 2) : control ? "2" : "6")
+                .attr("fill", control ? "#fffbe6" : "white").attr("stroke", "#333333");
+        if (node.remote()) {
+            rect.attr("stroke-dasharray", "5 3");
+        }
+        rect.end();
         for (int i = 0; i < node.lines().size(); i++) {
             double y = b.y() + Layout.PAD_Y + Layout.LINE * (i + 1) - 4;
-            s.append("    <text x=\"").append(n(b.centerX())).append("\" y=\"").append(n(y))
-                    .append("\" text-anchor=\"middle\"").append(i == 0 ? " font-weight=\"bold\"" : " fill=\"#555555\"")
-                    .append('>').append(esc(node.lines().get(i))).append("</text>\n");
+            SvgDocument.Element text = svg.element("text").attr("x", b.centerX()).attr("y", y)
+                    .attr("text-anchor", "middle");
+            if (i == 0) {
+                text.attr("font-weight", "bold");
+            } else {
+                text.attr("fill", "#555555");
+            }
+            text.text(node.lines().get(i));
         }
-        s.append("  </g>\n");
+        svg.close();
     }
 
-    private static void edge(StringBuilder s, Edge e, double[] from, double[] to) {
+    private static void edge(SvgDocument svg, Edge e, double[] from, double[] to) {
         String kind = e.flow().name().toLowerCase(Locale.ROOT);
         String colour = switch (e.flow()) {
             case SENSING -> DotWriter.SENSING_COLOUR;
             case ACTUATION -> DotWriter.ACTUATION_COLOUR;
             case LATERAL -> DotWriter.LATERAL_COLOUR;
         };
-        String d;
-        if (e.flow() == Flow.LATERAL) {
-            double top = Math.min(from[1], to[1]) - LATERAL_RISE;
-            d = "M" + n(from[0]) + "," + n(from[1]) + " C" + n(from[0]) + "," + n(top) + " " + n(to[0]) + "," + n(top)
-                    + " " + n(to[0]) + "," + n(to[1]);
-        } else {
-            double mid = (from[1] + to[1]) / 2;
-            d = "M" + n(from[0]) + "," + n(from[1]) + " C" + n(from[0]) + "," + n(mid) + " " + n(to[0]) + "," + n(mid)
-                    + " " + n(to[0]) + "," + n(to[1]);
+        double bend = e.flow() == Flow.LATERAL ? Math.min(from[1], to[1]) - LATERAL_RISE : (from[1] + to[1]) / 2;
+        String d = "M" + n(from[0]) + "," + n(from[1]) + " C" + n(from[0]) + "," + n(bend) + " " + n(to[0]) + ","
+                + n(bend) + " " + n(to[0]) + "," + n(to[1]);
+        SvgDocument.Element path = svg.element("path").attr("class", "edge " + kind).attr("d", d)
+                .attr("fill", "none").attr("stroke", colour).attr("stroke-width", "1.4");
+        if (e.flow() == Flow.ACTUATION) {
+            path.attr("stroke-dasharray", "6 3");
         }
-        s.append("  <path class=\"edge ").append(kind).append("\" d=\"").append(d).append("\" fill=\"none\" stroke=\"")
-                .append(colour).append("\" stroke-width=\"1.4\"")
-                .append(e.flow() == Flow.ACTUATION ? " stroke-dasharray=\"6 3\"" : "")
-                .append(" marker-end=\"url(#").append(kind).append(")\"><title>")
-                .append(esc(e.from() + " → " + e.to() + " (" + e.label() + ")")).append("</title></path>\n");
+        path.attr("marker-end", "url(#" + kind + ")").title(e.from() + " → " + e.to() + " (" + e.label() + ")");
     }
 
     /**
@@ -164,38 +161,32 @@ public final class SvgWriter {
         return at;
     }
 
-    private static void legend(StringBuilder s, Layout layout) {
+    private static void legend(SvgDocument svg, Layout layout) {
         double y = layout.height() - 16;
         double x = Layout.MARGIN;
-        s.append("  <g class=\"legend\" font-size=\"11\" fill=\"#333333\">\n");
-        legendItem(s, x, y, "sensing", DotWriter.SENSING_COLOUR, false, "sensing (up)");
-        legendItem(s, x + 170, y, "actuation", DotWriter.ACTUATION_COLOUR, true, "actuation (down)");
-        legendItem(s, x + 355, y, "lateral", DotWriter.LATERAL_COLOUR, false, "within a layer");
-        s.append("    <rect x=\"").append(n(x + 530)).append("\" y=\"").append(n(y - 9))
-                .append("\" width=\"24\" height=\"12\" fill=\"white\" stroke=\"#333333\" stroke-dasharray=\"5 3\"/>\n");
-        s.append("    <text x=\"").append(n(x + 560)).append("\" y=\"").append(n(y + 1))
-                .append("\">method on a worker</text>\n");
-        s.append("  </g>\n");
+        svg.element("g").attr("class", "legend").attr("font-size", "11").attr("fill", "#333333").open();
+        legendItem(svg, x, y, "sensing", DotWriter.SENSING_COLOUR, false, "sensing (up)");
+        legendItem(svg, x + 170, y, "actuation", DotWriter.ACTUATION_COLOUR, true, "actuation (down)");
+        legendItem(svg, x + 355, y, "lateral", DotWriter.LATERAL_COLOUR, false, "within a layer");
+        svg.element("rect").attr("x", x + 530).attr("y", y - 9).attr("width", "24").attr("height", "12")
+                .attr("fill", "white").attr("stroke", "#333333").attr("stroke-dasharray", "5 3").end();
+        svg.element("text").attr("x", x + 560).attr("y", y + 1).text("method on a worker");
+        svg.close();
     }
 
-    private static void legendItem(StringBuilder s, double x, double y, String kind, String colour, boolean dashed,
+    private static void legendItem(SvgDocument svg, double x, double y, String kind, String colour, boolean dashed,
             String text) {
-        s.append("    <path d=\"M").append(n(x)).append(',').append(n(y - 3)).append(" L").append(n(x + 36)).append(',')
-                .append(n(y - 3)).append("\" stroke=\"").append(colour).append("\" stroke-width=\"1.4\"")
-                .append(dashed ? " stroke-dasharray=\"6 3\"" : "").append(" marker-end=\"url(#").append(kind)
-                .append(")\"/>\n");
-        s.append("    <text x=\"").append(n(x + 44)).append("\" y=\"").append(n(y + 1)).append("\">").append(esc(text))
-                .append("</text>\n");
+        SvgDocument.Element path = svg.element("path")
+                .attr("d", "M" + n(x) + "," + n(y - 3) + " L" + n(x + 36) + "," + n(y - 3))
+                .attr("stroke", colour).attr("stroke-width", "1.4");
+        if (dashed) {
+            path.attr("stroke-dasharray", "6 3");
+        }
+        path.attr("marker-end", "url(#" + kind + ")").end();
+        svg.element("text").attr("x", x + 44).attr("y", y + 1).text(text);
     }
 
-    /** A coordinate with at most one decimal, the same on every machine. */
     private static String n(double v) {
-        double r = Math.round(v * 10) / 10.0;
-        return r == Math.rint(r) ? Long.toString((long) r) : String.format(Locale.ROOT, "%.1f", r);
-    }
-
-    private static String esc(String text) {
-        return text.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;").replace("\"", "&quot;")
-                .replace("'", "&apos;");
+        return SvgDocument.number(v);
     }
 }

@@ -33,6 +33,13 @@ public interface GraphTap {
     default void periodic(String task, long micros, long handled) {
     }
 
+    /**
+     * A command was accepted or refused, or an authentication refused, on a control socket (the audit log's
+     * entry), so a recording shows who drove the robot.
+     */
+    default void audit(org.habla.security.AuditEntry entry) {
+    }
+
     /** An interface link went up or down. */
     void link(String interfaceId, boolean up, long micros);
 

@@ -91,10 +91,13 @@ public final class MethodGraph implements AutoCloseable {
             runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc), clock, backgroundPool,
                     work, tap, config.cycleInputs(mc.id())));
         }
+        var workerLink = config.methods().stream().anyMatch(m -> m.host().isPresent())
+                ? config.security().workerLink() : org.habla.security.WorkerLink.PLAIN;
         for (MethodConfig mc : config.methods()) {
             if (mc.host().isPresent()) {
                 MethodRunner runner = runners.get(mc.id());
-                RemotePlacement p = new RemotePlacement(mc, runner, config.limits(), Reconnect.DEFAULTS, linkStates);
+                RemotePlacement p = new RemotePlacement(mc, runner, config.limits(), Reconnect.DEFAULTS, linkStates,
+                        workerLink);
                 runner.placeOn(p);
                 placements.put(mc.id(), p);
             }
@@ -117,6 +120,11 @@ public final class MethodGraph implements AutoCloseable {
     /** Builds the graph of a checked config. Nothing runs until {@link #start()}. */
     public static MethodGraph build(HablaConfig config, PluginRegistry registry, EngineClock clock) {
         return new MethodGraph(config, registry, clock, GraphTap.NONE, null);
+    }
+
+    /** Hands an audit log's entry to the graph's tap (a recording). */
+    public void audit(org.habla.security.AuditEntry entry) {
+        tap.audit(entry);
     }
 
     /** Builds the graph with a tap that sees everything crossing its edges (for recording). */

@@ -53,6 +53,7 @@ final class RemotePlacement {
     private final MethodRunner runner;
     private final Limits limits;
     private final Reconnect reconnect;
+    private final org.habla.security.WorkerLink link;
     private final BackOff backOff;
     private final OutageLog outages;
     private final LinkStates states;
@@ -70,6 +71,13 @@ final class RemotePlacement {
     private Thread thread;
 
     RemotePlacement(MethodConfig config, MethodRunner runner, Limits limits, Reconnect reconnect, LinkStates states) {
+        this(config, runner, limits, reconnect, states, org.habla.security.WorkerLink.PLAIN);
+    }
+
+    /** @param link the secret the daemon proves to the worker, and the TLS it speaks to it */
+    RemotePlacement(MethodConfig config, MethodRunner runner, Limits limits, Reconnect reconnect, LinkStates states,
+            org.habla.security.WorkerLink link) {
+        this.link = link;
         this.config = config;
         String text = config.host().orElseThrow();
         int colon = text.lastIndexOf(':');
@@ -167,14 +175,16 @@ final class RemotePlacement {
     }
 
     private void runOnce() throws IOException {
-        Socket s = LinkSocket.create(reconnect.tcpKeepAlive());
-        socket = s;
+        Socket plain = LinkSocket.create(reconnect.tcpKeepAlive());
+        socket = plain;
         if (!running) {
-            s.close();
+            plain.close();
             return;
         }
-        s.connect(new InetSocketAddress(host, port), (int) reconnect.connectTimeoutMs());
-        s.setSoTimeout((int) reconnect.connectTimeoutMs());
+        plain.connect(new InetSocketAddress(host, port), (int) reconnect.connectTimeoutMs());
+        plain.setSoTimeout((int) reconnect.connectTimeoutMs());
+        Socket s = link.secure(plain, host, port, (int) reconnect.connectTimeoutMs());
+        socket = s;
         FrameReader reader = new FrameReader(new BufferedInputStream(s.getInputStream(), 65_536),
                 limits.maxLineBytes(), limits.maxBinaryBytes());
         FrameWriter writer = new FrameWriter(s.getOutputStream());
@@ -183,6 +193,7 @@ final class RemotePlacement {
         if (refusal != null) {
             throw new IOException(refusal);
         }
+        WorkerProtocol.prove(hello, link.secret(), reader, writer, host());
         writer.send(WorkerProtocol.place(config.id(), config.type(), config.layer().configName(),
                 ParamsJson.write(config.params()), runner.channelsByInput(), runner.commandChannelsByOutput()));
         Frame answer = next(reader);

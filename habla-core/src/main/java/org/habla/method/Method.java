@@ -21,15 +21,31 @@ import org.slf4j.LoggerFactory;
  * {@link ProcessingMethod} or {@link VirtualMethod} — declare ports as fields, and handle samples:
  *
  * <pre>{@code
- * public final class NearestDistance extends ProcessingMethod {
- *     private final Output<NumberValue> nearest = output("nearest", NumberValue.class, Shape.number("m", "closest range"));
- *     private final Input<VectorValue> ranges = input("ranges", VectorValue.class, Delivery.latest(), this::onRanges);
+ * public final class Threshold extends ProcessingMethod {
+ *     private final Output<TextValue> label = output("label", TextValue.class,
+ *             Shape.text("near or far, emitted when it changes"));
+ *     private final Input<RecordValue> nearest = input("nearest", RecordValue.class, Delivery.latest(),
+ *             this::onNearest);
+ *     private final ThresholdParams params;
+ *     private String current = "";
  *
- *     private void onRanges(VectorValue r, Sample s) {
- *         emit(nearest, new NumberValue(Arrays.stream(r.toArray()).min().orElse(Double.NaN)));
+ *     public Threshold(ThresholdParams params) {
+ *         this.params = params;
+ *     }
+ *
+ *     private void onNearest(RecordValue obstacle, Sample s) {
+ *         double d = obstacle.number("distanceM");
+ *         String next = d < params.nearM() ? "near" : d > params.farM() ? "far" : current;
+ *         if (!next.equals(current)) {
+ *             current = next;
+ *             emit(label, new TextValue(next));
+ *         }
  *     }
  * }
  * }</pre>
+ *
+ * (the whole plugin, with its params record, provider and test, is {@code examples/custom-method};
+ * docs/writing-a-method.md walks through it).
  *
  * <h2>Threading contract</h2>
  * The engine hands a method one message at a time — a sample, a tick or the result of background

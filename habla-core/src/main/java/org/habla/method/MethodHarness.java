@@ -17,9 +17,10 @@ import org.habla.sample.Sample;
  * step its clock, read what it emitted. Shipped in the main sources so method authors test with it.
  *
  * <pre>{@code
- * MethodHarness h = MethodHarness.of("nearest", new NearestDistance());
- * h.push("ranges", VectorValue.of(2.0, 0.4, 3.0));
- * assertThat(h.last("nearest")).isEqualTo(new NumberValue(0.4));
+ * MethodHarness h = MethodHarness.started("near", new Threshold(new ThresholdParams(null, null)));
+ * h.push("nearest", RecordValue.builder().put("distanceM", 1.0).build());
+ * h.push("nearest", RecordValue.builder().put("distanceM", 0.4).build());
+ * assertThat(h.values("label")).containsExactly(new TextValue("far"), new TextValue("near"));
  * }</pre>
  *
  * Background work runs when {@link #runBackground()} is called (or at once with

@@ -41,7 +41,9 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     private final PeerActivity activity = new PeerActivity();
     private final AtomicBoolean closed = new AtomicBoolean();
     private final AtomicBoolean evicted = new AtomicBoolean();
-    private final ClientId id;
+    private volatile ClientId id;
+    /** Who the client has proved to be; null until then, where the port requires authentication. */
+    private volatile org.habla.security.PortAccess.Admitted admitted;
     private volatile Thread writer;
     private volatile Thread reader;
     private volatile FrameReader frames;
@@ -58,6 +60,7 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
         this.counters = counters;
         this.onClosed = onClosed;
         this.outbox = new Outbox(limits.clientQueueSamples(), REPLY_CAPACITY);
+        this.admitted = protocol.initialAccess();
         try {
             outbox.putReply(protocol.hello()); // first in the queue, before any sample; never waits when empty
         } catch (InterruptedException e) {
@@ -122,12 +125,39 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
         close();
     }
 
+    /** Queues a sample for the client, once it may read (it has authenticated, or the port is open). */
     void offerSample(String output, Frame frame) {
-        outbox.offerSample(output, frame);
+        if (admitted != null) {
+            outbox.offerSample(output, frame);
+        }
     }
 
     void offerNotice(Frame frame) {
-        outbox.offerNotice(frame);
+        if (admitted != null) {
+            outbox.offerNotice(frame);
+        }
+    }
+
+    @Override
+    public org.habla.security.PortAccess.Admitted admitted() {
+        return admitted;
+    }
+
+    @Override
+    public void admit(org.habla.security.PortAccess.Admitted who) {
+        id = id.named(who.principal().name());
+        admitted = who;
+        LOG.info("{}: authenticated as client '{}' (role {})", label, who.principal().name(), who.role().fileName());
+    }
+
+    @Override
+    public void refuse(Frame error, boolean delay) throws InterruptedException {
+        if (delay) {
+            Thread.sleep(org.habla.security.PortAccess.FAILURE_DELAY_MS);
+        }
+        reply(error);
+        LOG.info("{}: refused: {}", label, error.header().path("message").asText());
+        closeAfterError();
     }
 
     long dropped() {

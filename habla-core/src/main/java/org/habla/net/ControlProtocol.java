@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.time.Instant;
 import java.util.List;
 import java.util.Map;
 import org.habla.config.Limits;
@@ -11,6 +12,10 @@ import org.habla.method.Input;
 import org.habla.method.Output;
 import org.habla.sample.Payload;
 import org.habla.sample.Sample;
+import org.habla.security.AuditEntry;
+import org.habla.security.PortAccess;
+import org.habla.security.PortSecurity;
+import org.habla.security.Role;
 
 /**
  * The control protocol {@code habla-control/1} of one connection: the hello line, and the answer to each
@@ -25,9 +30,16 @@ import org.habla.sample.Sample;
  *   {"op":"ping"}                               -&gt; {"type":"pong"} (with the "id", which acknowledges it)
  *   {"op":"take"}                               -&gt; ok (if "id"); this client commands the socket now
  *   {"op":"release"}                            -&gt; ok (if "id") | error not_commander; the robot is stopped
+ *   {"op":"auth","client":NAME,"token":TOKEN}   -&gt; the full hello | error auth_failed / forbidden, then closed
  * </pre>
  *
  * On an actuating socket a write goes through the socket's {@link ControlLease}: one commander at a time.
+ *
+ * <p>Where the port requires authentication ({@link PortAccess}), the first hello says only {@code "auth":
+ * "required"}; the client's first request must be its auth line, which earns it the full hello, then its samples.
+ * Anything else first gets {@code auth_required} and the connection closes. Writing, taking and releasing need
+ * the {@code command} role on the socket, reading needs {@code read}. Every write, take and release, accepted or
+ * not, and every refused authentication goes to the port's audit log.
  */
 final class ControlProtocol {
 
@@ -40,28 +52,78 @@ final class ControlProtocol {
         void reply(Frame frame) throws InterruptedException;
 
         void rate(double maxHz);
+
+        /** Who the connection has proved to be; null until it has (never null on an open port). */
+        PortAccess.Admitted admitted();
+
+        /** The connection has proved who it is: from now on it gets samples and may use its role. */
+        void admit(PortAccess.Admitted admitted);
+
+        /**
+         * Sends {@code error} (after {@link PortAccess#FAILURE_DELAY_MS} when {@code delay}) and closes the
+         * connection.
+         */
+        void refuse(Frame error, boolean delay) throws InterruptedException;
     }
 
     private final ControlPoint point;
     private final Limits limits;
     private final ControlLease lease;
+    private final PortSecurity security;
 
     /** @param lease who commands the socket; null when its values reach no actuator */
     ControlProtocol(ControlPoint point, Limits limits, ControlLease lease) {
+        this(point, limits, lease, PortSecurity.open(point.name()));
+    }
+
+    /**
+     * @param lease    who commands the socket; null when its values reach no actuator
+     * @param security who may use the socket, and where its commands are audited
+     */
+    ControlProtocol(ControlPoint point, Limits limits, ControlLease lease, PortSecurity security) {
         this.point = point;
         this.limits = limits;
         this.lease = lease;
+        this.security = security;
     }
 
-    /** The line a client gets on connect. */
+    /** Who a new connection is before it says: anonymous with every role on an open port, nobody otherwise. */
+    PortAccess.Admitted initialAccess() {
+        return security.access().required() ? null
+                : (PortAccess.Admitted) security.access().authenticate(NODES.objectNode());
+    }
+
+    /**
+     * The line a client gets on connect: the full hello on an open port; where authentication is required, only
+     * the protocol, the socket's name and {@code "auth":"required"}.
+     */
     Frame hello() {
+        if (security.access().required()) {
+            ObjectNode h = NODES.objectNode()
+                    .put("type", "hello")
+                    .put("protocol", PROTOCOL)
+                    .put("socket", point.name())
+                    .put("auth", "required");
+            h.putObject("limits").put("maxLineBytes", limits.maxLineBytes())
+                    .put("idleTimeoutMs", limits.idleTimeoutMs());
+            return Frame.of(h);
+        }
+        return fullHello(null);
+    }
+
+    /** The whole hello; with the client's name and role once it has authenticated. */
+    private Frame fullHello(PortAccess.Admitted who) {
         ObjectNode h = NODES.objectNode()
                 .put("type", "hello")
                 .put("protocol", PROTOCOL)
                 .put("socket", point.name())
                 .put("method", point.methodId())
                 .put("layer", point.layer().configName())
-                .put("direction", direction());
+                .put("direction", direction())
+                .put("auth", who == null ? "off" : "ok");
+        if (who != null) {
+            h.put("client", who.principal().name()).put("role", who.role().fileName());
+        }
         ArrayNode outputs = h.putArray("outputs");
         for (Output<?> o : point.outputs()) {
             ObjectNode out = outputs.addObject()
@@ -99,13 +161,34 @@ final class ControlProtocol {
         ObjectNode h = request.header();
         JsonNode id = h.get("id");
         String op = h.has("op") ? h.get("op").asText() : h.has("value") || request.hasBody() ? "write" : "";
+        if (op.equals("auth")) {
+            auth(h, id, replies);
+            return;
+        }
+        PortAccess.Admitted who = replies.admitted();
+        if (who == null) {
+            String why = "socket '" + point.name() + "' requires authentication before anything else: send "
+                    + "{\"op\":\"auth\",\"client\":NAME,\"token\":TOKEN} first";
+            if (commands(op)) {
+                audit(replies, op, request, "auth_required: " + why);
+            }
+            replies.refuse(error("auth_required", why, id), false);
+            return;
+        }
+        if (commands(op) && !who.role().covers(Role.COMMAND)) {
+            String why = "client '" + who.principal().name() + "' may only read socket '" + point.name()
+                    + "' (role read); " + op + " needs the command role";
+            audit(replies, op, request, "forbidden: " + why);
+            replies.reply(error("forbidden", why, id));
+            return;
+        }
         try {
             switch (op) {
-                case "write" -> write(request, replies);
+                case "write" -> audited(replies, op, request, () -> write(request, replies));
                 case "latest" -> latest(replies);
                 case "rate" -> rate(h, replies);
-                case "take" -> commanded().take(replies);
-                case "release" -> commanded().release(replies);
+                case "take" -> audited(replies, op, request, () -> commanded().take(replies));
+                case "release" -> audited(replies, op, request, () -> commanded().release(replies));
                 case "ping" -> {
                     ObjectNode pong = NODES.objectNode().put("type", "pong");
                     if (id != null) {
@@ -116,7 +199,7 @@ final class ControlProtocol {
                 }
                 default -> throw FrameException.recoverable("unknown_op", (op.isEmpty()
                         ? "a request needs \"op\" (or a \"value\" to write)"
-                        : "unknown op '" + op + "'") + "; ops are write, latest, rate, ping");
+                        : "unknown op '" + op + "'") + "; ops are write, latest, rate, ping, take, release, auth");
             }
             if (id != null) {
                 ObjectNode ok = NODES.objectNode().put("type", "ok");
@@ -128,6 +211,74 @@ final class ControlProtocol {
         } catch (ControlPoint.Rejected e) {
             String code = e.code() == null || e.code().isBlank() ? "rejected" : e.code();
             replies.reply(error(code, e.getMessage(), id));
+        }
+    }
+
+    /** Whether {@code op} drives the robot (needs the command role, and is audited). */
+    private static boolean commands(String op) {
+        return op.equals("write") || op.equals("take") || op.equals("release");
+    }
+
+    /** A command that may be refused. */
+    @FunctionalInterface
+    private interface Command {
+        void run() throws FrameException, ControlPoint.Rejected;
+    }
+
+    /** Does {@code command} and audits it, accepted or refused with its error code. */
+    private void audited(Replies replies, String op, Frame request, Command command)
+            throws FrameException, ControlPoint.Rejected {
+        try {
+            command.run();
+        } catch (FrameException e) {
+            audit(replies, op, request, e.code() + ": " + e.getMessage());
+            throw e;
+        } catch (ControlPoint.Rejected e) {
+            audit(replies, op, request, (e.code() == null || e.code().isBlank() ? "rejected" : e.code()) + ": "
+                    + e.getMessage());
+            throw e;
+        }
+        audit(replies, op, request, null);
+    }
+
+    /** One audit entry: accepted when {@code why} is null. */
+    private void audit(Replies replies, String op, Frame request, String why) {
+        ClientId id = replies.id();
+        JsonNode value = null;
+        String input = null;
+        if (op.equals("write")) {
+            JsonNode named = request.header().get("input");
+            List<Input<?>> inputs = point.controlInputs();
+            input = named != null ? named.asText() : inputs.size() == 1 ? inputs.get(0).name() : null;
+            value = request.hasBody()
+                    ? NODES.objectNode().put("bytes", request.header().path("bytes").asLong())
+                    : request.header().get("value");
+        }
+        security.audit().add(new AuditEntry(Instant.now(), id.client(), id.address(), point.name(), op,
+                input, value, why == null, why));
+    }
+
+    private void auth(ObjectNode h, JsonNode id, Replies replies) throws InterruptedException {
+        if (replies.admitted() != null && security.access().required()) {
+            replies.reply(error("already_authenticated", "this connection is already client '"
+                    + replies.admitted().principal().name() + "'", id));
+            return;
+        }
+        if (!security.access().required()) {
+            replies.reply(fullHello(null)); // an open port: a client configured with a token still gets on
+            return;
+        }
+        switch (security.access().authenticate(h)) {
+            case PortAccess.Admitted a -> {
+                replies.admit(a);
+                replies.reply(fullHello(a));
+            }
+            case PortAccess.Refused r -> {
+                ClientId who = replies.id();
+                security.audit().add(new AuditEntry(Instant.now(), r.client(), who.address(), point.name(),
+                        "auth", null, null, false, r.code() + ": " + r.message()));
+                replies.refuse(error(r.code(), r.message(), id), r.code().equals("auth_failed"));
+            }
         }
     }
 

@@ -16,6 +16,7 @@ import org.habla.config.Limits;
 import org.habla.method.ControlNotice;
 import org.habla.method.Output;
 import org.habla.sample.Sample;
+import org.habla.security.PortSecurity;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -49,9 +50,16 @@ public final class ControlServer implements AutoCloseable {
     private final ControlLease lease;
     private final ConnectionGuard guard;
     private final BlockBudget budget;
+    private final PortSecurity security;
     private final List<ControlClient> clients = new CopyOnWriteArrayList<>();
     private final Counters counters = new Counters();
     private final AtomicLong droppedByGone = new AtomicLong();
+    /** TLS handshakes in progress, at most {@code limits.maxPendingPerPort}. */
+    private final java.util.concurrent.Semaphore handshakes;
+    private final AtomicLong guardRefused = new AtomicLong();
+    private final AtomicLong plainClients = new AtomicLong();
+    private final AtomicLong tlsFailures = new AtomicLong();
+    private final byte[] plainClientError;
     /**
      * The longest {@link #close} waits for the acceptor to leave its {@code accept}: the operating system releases
      * the port only then, so a daemon started right after this one closed can have it.
@@ -78,14 +86,28 @@ public final class ControlServer implements AutoCloseable {
 
     /** A server whose port's block budget is part of {@code processBudget}, shared by every port of the daemon. */
     public ControlServer(ControlPoint point, Expose expose, Limits limits, BlockBudget processBudget) {
+        this(point, expose, limits, processBudget, PortSecurity.open(point.name()));
+    }
+
+    /**
+     * A server whose port's block budget is part of {@code processBudget}, guarded by {@code security}: who may
+     * use it, where its commands are audited, whether it speaks TLS.
+     */
+    public ControlServer(ControlPoint point, Expose expose, Limits limits, BlockBudget processBudget,
+            PortSecurity security) {
+        this.security = Objects.requireNonNull(security, "security");
         this.point = Objects.requireNonNull(point, "point");
         this.expose = Objects.requireNonNull(expose, "expose");
         this.limits = Objects.requireNonNull(limits, "limits");
         this.lease = point.lease().orElse(null);
-        this.protocol = new ControlProtocol(point, limits, lease);
+        this.protocol = new ControlProtocol(point, limits, lease, security);
         this.guard = new ConnectionGuard("control socket '" + point.name() + "'", limits.maxClientsPerPort(),
                 "limits.maxClientsPerPort", limits);
         this.budget = processBudget.child("limits.socketBlockBudgetBytes", limits.socketBlockBudgetBytes());
+        this.handshakes = new java.util.concurrent.Semaphore(limits.maxPendingPerPort());
+        this.plainClientError = (ControlProtocol.error("tls_required", "socket '" + point.name() + "' speaks TLS "
+                + "only: connect with TLS (openssl s_client -connect HOST:PORT, Python's ssl module); see "
+                + "docs/security.md", null).header().toString() + "\n").getBytes(java.nio.charset.StandardCharsets.UTF_8);
     }
 
     /**
@@ -158,12 +180,17 @@ public final class ControlServer implements AutoCloseable {
                 .put("port", listener == null ? expose.port() : port())
                 .put("clients", clients.size())
                 .put("connections", counters.connections.get())
-                .put("refused", guard.refusedTotal())
+                .put("refused", guard.refusedTotal() + guardRefused.get())
                 .put("linesIn", counters.linesIn.get())
                 .put("linesOut", counters.linesOut.get())
                 .put("dropped", dropped)
                 .put("errors", counters.errors.get());
         guard.putStats(stats);
+        security.access().putStats(stats);
+        stats.put("tls", security.tls() != null);
+        if (security.tls() != null) {
+            stats.put("plainClientsRefused", plainClients.get()).put("tlsFailures", tlsFailures.get());
+        }
         stats.put("blockBytes", budget.reserved());
         if (lease != null) {
             stats.set("control", lease.status());
@@ -222,14 +249,53 @@ public final class ControlServer implements AutoCloseable {
                 }
                 return;
             }
+            long number = ++n;
+            if (security.tls() != null) {
+                upgradeThenAdmit(socket, number);
+                continue;
+            }
             try {
-                admit(socket, ++n);
+                admit(socket, number);
             } catch (IOException | RuntimeException e) {
                 LOG.warn("control socket '{}': could not admit {}: {}", point.name(),
                         socket.getRemoteSocketAddress(), e.toString());
                 closeQuietly(socket);
             }
         }
+    }
+
+    /**
+     * On a TLS socket, the handshake runs on a thread of the connection's own, at most
+     * {@code limits.maxPendingPerPort} at once (a connection beyond that is closed at once); a plain client gets
+     * a plain error line ({@code tls_required}) instead of a silence.
+     */
+    private void upgradeThenAdmit(Socket socket, long n) {
+        if (!handshakes.tryAcquire()) {
+            guardRefused.incrementAndGet();
+            closeQuietly(socket);
+            return;
+        }
+        Thread.ofVirtual().name("control-" + point.name() + "-" + n + "-tls").start(() -> {
+            try {
+                Socket secured = security.tls().upgrade(socket, plainClientError);
+                if (closed) {
+                    closeQuietly(secured);
+                    return;
+                }
+                admit(secured, n);
+            } catch (org.habla.security.Tls.PlainClient e) {
+                plainClients.incrementAndGet();
+                LOG.info("control socket '{}': refused a connection from {}: {}", point.name(),
+                        socket.getRemoteSocketAddress(), e.getMessage());
+            } catch (IOException | RuntimeException e) {
+                tlsFailures.incrementAndGet();
+                LOG.info("control socket '{}': TLS handshake with {} failed: {}", point.name(),
+                        socket.getRemoteSocketAddress(), e.toString());
+                closeQuietly(socket);
+            } finally {
+                handshakes.release();
+            }
+        });
     }
 
     private void admit(Socket socket, long n) throws IOException {

@@ -3,17 +3,24 @@ package org.habla.net;
 import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
+import java.nio.charset.Charset;
 import java.util.Arrays;
 import java.util.Objects;
 
 /**
- * The first stage of every HABLA socket: a bounded, blocking line reader over a byte stream. It hands out
- * one line's bytes at a time (the {@code \n}, and a {@code \r} before it, removed), and the raw block that
- * may follow a line, from the same buffer.
+ * The first stage of every HABLA socket, and the line reader of every line protocol HABLA speaks (the text-lines
+ * driver, Tekkotsu's controller and emergency stop, the simulator's line servers): a bounded, blocking line
+ * reader over a byte stream. It hands out one line's bytes at a time (the {@code \n}, and a {@code \r} before
+ * it, removed), or its text in a given charset, and the raw block that may follow a line, from the same buffer.
+ *
+ * <pre>
+ *   bytes:  h i \r \n   l o n g … (more than maxLineBytes) … \n   o k \n
+ *   lines:  "hi"        line_too_long (recoverable)              "ok"
+ * </pre>
  *
  * <p>A line longer than {@code maxLineBytes} is never held: its bytes are discarded up to and including the
  * next newline, then a recoverable {@code line_too_long} error names the limit, and the next call reads the
- * next line.
+ * next line. The limit does not count the line's end: a {@code \r} before the {@code \n} is free.
  *
  * <p>A block's memory is reserved from a {@link BlockBudget} as its bytes arrive, growing by doubling from
  * {@link #FIRST_BLOCK_BYTES}: a declared size is never allocated before the bytes are there.
@@ -38,12 +45,33 @@ public final class LineFramer {
     /** When the frame being read got its first byte ({@link System#nanoTime()}), or 0 between frames. */
     private volatile long frameSince;
 
+    /**
+     * A framer over {@code in}, which it then owns: it reads ahead into its own buffer, so every later read of
+     * the stream must go through it.
+     */
     public LineFramer(InputStream in, int maxLineBytes) {
         this.in = Objects.requireNonNull(in, "in");
-        if (maxLineBytes < 2) {
-            throw new IllegalArgumentException("maxLineBytes must be at least 2, was " + maxLineBytes);
+        if (maxLineBytes < 1) {
+            throw new IllegalArgumentException("maxLineBytes must be at least 1, was " + maxLineBytes);
         }
         this.maxLineBytes = maxLineBytes;
+    }
+
+    /** The longest line, in bytes without its end, that {@link #readLine} hands out. */
+    public int maxLineBytes() {
+        return maxLineBytes;
+    }
+
+    /**
+     * Reads the next line as text in {@code charset} (bytes it cannot map become its replacement character).
+     *
+     * @return the line without its end, or {@code null} at a clean end of stream (between lines)
+     * @throws FrameException as {@link #readLine()}
+     * @throws IOException    if the stream fails
+     */
+    public String readText(Charset charset) throws IOException {
+        byte[] line = readLine();
+        return line == null ? null : new String(line, charset);
     }
 
     /**
@@ -62,7 +90,8 @@ public final class LineFramer {
                 if (length == 0) {
                     return null;
                 }
-                throw FrameException.fatal("truncated", "the stream ended inside a line, after " + length + " bytes");
+                throw FrameException.fatal("truncated",
+                        "the stream ended inside a line: " + length + " byte(s) dropped");
             }
             if (frameSince == 0) {
                 frameSince = System.nanoTime();

@@ -34,6 +34,15 @@ import org.habla.sample.Sample;
  *     |  &lt;-- {"type":"error","code":"bad_json",...}     a bad line costs that line only
  * </pre>
  *
+ * A worker started with a secret (it must have one to listen beyond loopback) first has the daemon prove it
+ * holds the same secret, and proves it back, before any place line ({@link org.habla.security.WorkerSecret}):
+ *
+ * <pre>
+ *     |  &lt;-- {"type":"hello",...,"auth":"required","challenge":Cw}
+ *     |  --&gt; {"type":"auth","challenge":Cd,"proof":HMAC(secret, daemon Cw Cd)}
+ *     |  &lt;-- {"type":"trusted","proof":HMAC(secret, worker Cw Cd)}   or error auth_failed and the worker closes
+ * </pre>
+ *
  * {@code t} is the source time of the daemon's sample, carried through the worker unchanged, so a
  * sample's age is measured on the daemon's clock only.
  */
@@ -52,10 +61,19 @@ public final class WorkerProtocol {
     }
 
     /** What a worker says on connect: the protocol version and the method types it can run. */
-    public record Hello(String protocol, Set<String> types) {
+    public record Hello(String protocol, Set<String> types, String challenge) {
 
         public Hello {
             types = Set.copyOf(types);
+        }
+
+        public Hello(String protocol, Set<String> types) {
+            this(protocol, types, null);
+        }
+
+        /** Whether the worker asks the daemon to prove the shared secret. */
+        public boolean asksForSecret() {
+            return challenge != null;
         }
 
         /** Reads a hello line; anything else is a protocol error. */
@@ -71,7 +89,9 @@ public final class WorkerProtocol {
             }
             Set<String> names = new TreeSet<>();
             types.forEach(t -> names.add(t.asText()));
-            return new Hello(protocol.textValue(), names);
+            JsonNode challenge = frame.header().get("challenge");
+            return new Hello(protocol.textValue(), names, challenge != null && challenge.isTextual()
+                    ? challenge.textValue() : null);
         }
 
         /** Why this worker cannot run a method of {@code type}, or null when it can. */
@@ -92,6 +112,56 @@ public final class WorkerProtocol {
         ArrayNode a = h.putArray("types");
         new TreeSet<>(types).forEach(a::add);
         return h;
+    }
+
+    /** The hello of a worker that has a secret: it asks the daemon to answer {@code challenge}. */
+    public static ObjectNode hello(Collection<String> types, String challenge) {
+        return hello(types).put("auth", "required").put("challenge", challenge);
+    }
+
+    /** The daemon's proof of the secret, and its own challenge to the worker. */
+    public static ObjectNode auth(String daemonChallenge, String proof) {
+        return NODES.objectNode().put("type", "auth").put("challenge", daemonChallenge).put("proof", proof);
+    }
+
+    /** The worker trusts the daemon, and proves the secret back. */
+    public static ObjectNode trusted(String proof) {
+        return NODES.objectNode().put("type", "trusted").put("proof", proof);
+    }
+
+    /**
+     * The daemon's side of the proof: answers the worker's challenge and checks the worker's answer to its own.
+     *
+     * @param secret the daemon's worker secret, or null when it has none
+     * @throws java.io.IOException saying why the worker is not to be trusted, or why it refused the daemon
+     */
+    public static void prove(Hello hello, org.habla.security.WorkerSecret secret, FrameReader reader,
+            FrameWriter writer, String worker) throws java.io.IOException {
+        if (!hello.asksForSecret()) {
+            if (secret != null) {
+                throw new java.io.IOException("worker " + worker + " does not ask for the shared secret, so it cannot "
+                        + "prove it is the trusted worker: start it with --secret-file");
+            }
+            return;
+        }
+        if (secret == null) {
+            throw new java.io.IOException("worker " + worker + " requires the shared secret: give \"workerSecret\" "
+                    + "in the credentials file (security.credentials)");
+        }
+        String mine = org.habla.security.WorkerSecret.challenge();
+        writer.send(auth(mine, secret.proof("daemon", hello.challenge(), mine)));
+        Frame answer = reader.read();
+        if (answer == null) {
+            throw new java.io.IOException("worker " + worker + " closed the connection instead of answering the proof");
+        }
+        if (answer.type().equals("error")) {
+            throw new java.io.IOException("worker " + worker + " does not trust this daemon: "
+                    + answer.header().path("code").asText() + ": " + answer.header().path("message").asText());
+        }
+        if (!answer.type().equals("trusted") || !secret.verify(answer.header().path("proof").asText(null), "worker",
+                hello.challenge(), mine)) {
+            throw new java.io.IOException("worker " + worker + " did not prove the shared secret: it is not trusted");
+        }
     }
 
     /**

@@ -100,6 +100,7 @@ final class McapEventFile implements EventFile {
             case RecordedEvent.WriterLeft w -> "/habla/left";
             case RecordedEvent.Tick k -> "/habla/tick";
             case RecordedEvent.Dropped d -> "/habla/dropped";
+            case RecordedEvent.Audit a -> "/habla/audit";
             case RecordedEvent.End x -> "/habla/end";
         };
     }

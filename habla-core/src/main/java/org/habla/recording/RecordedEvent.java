@@ -42,6 +42,13 @@ public sealed interface RecordedEvent {
     record Tick(long t, String task, long handled) implements RecordedEvent {
     }
 
+    /**
+     * A command accepted or refused, or an authentication refused, on a control socket: the audit log's entry
+     * ({@link org.habla.security.AuditEntry#json}). A replay does not act on it: it says who drove.
+     */
+    record Audit(long t, com.fasterxml.jackson.databind.node.ObjectNode entry) implements RecordedEvent {
+    }
+
     /** The recorder had to drop events (its queue was full): {@code total} since the recording began. */
     record Dropped(long t, long total) implements RecordedEvent {
     }

@@ -139,6 +139,11 @@ public final class Recorder implements GraphTap, AutoCloseable {
     }
 
     @Override
+    public void audit(org.habla.security.AuditEntry entry) {
+        offer(new RecordedEvent.Audit(clock.nowMicros(), entry.json()), 0);
+    }
+
+    @Override
     public void link(String interfaceId, boolean up, long micros) {
         offer(new RecordedEvent.LinkChange(micros, interfaceId, up), 0);
     }

@@ -91,6 +91,7 @@ final class RecordingCodec {
             case RecordedEvent.WriterLeft w -> Frame.of(base("left", w.t()).put("socket", w.socket()));
             case RecordedEvent.Tick k -> Frame.of(base("tick", k.t()).put("task", k.task()).put("handled", k.handled()));
             case RecordedEvent.Dropped d -> Frame.of(base("dropped", d.t()).put("total", d.total()));
+            case RecordedEvent.Audit a -> Frame.of((ObjectNode) base("audit", a.t()).set("entry", a.entry()));
             case RecordedEvent.End x -> Frame.of(base("end", x.t()).put("written", x.written())
                     .put("dropped", x.dropped()));
         };
@@ -117,6 +118,8 @@ final class RecordingCodec {
                 case "left" -> new RecordedEvent.WriterLeft(t, text(h, "socket"));
                 case "tick" -> new RecordedEvent.Tick(t, text(h, "task"), h.path("handled").asLong(-1));
                 case "dropped" -> new RecordedEvent.Dropped(t, h.path("total").asLong());
+                case "audit" -> new RecordedEvent.Audit(t, h.get("entry") instanceof ObjectNode o ? o
+                        : NODES.objectNode());
                 case "end" -> new RecordedEvent.End(t, h.path("written").asLong(), h.path("dropped").asLong());
                 default -> null;
             };

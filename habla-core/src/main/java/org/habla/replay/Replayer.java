@@ -232,6 +232,7 @@ public final class Replayer {
                     }
                 }
                 case RecordedEvent.Dropped d -> recordedDrops = d.total();
+                case RecordedEvent.Audit a -> { } // who drove: nothing to run again
                 case RecordedEvent.End x -> complete = true;
                 case RecordedEvent.Reading r -> {
                     advance(r.t());

@@ -13,6 +13,11 @@ import java.util.function.Supplier;
 import org.habla.config.Limits;
 import org.habla.config.StatusConfig;
 import org.habla.net.ConnectionGuard;
+import org.habla.net.Frame;
+import org.habla.net.FrameException;
+import org.habla.net.FrameReader;
+import org.habla.security.PortAccess;
+import org.habla.security.Principal;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -24,15 +29,25 @@ import org.slf4j.LoggerFactory;
  * <p>At most {@code limits.maxPendingPerPort} answers are in flight at once; a newcomer to a full endpoint
  * is answered and the oldest answer in flight is abandoned. A client that has not taken its whole line
  * within {@code limits.frameTimeoutMs} is disconnected. See {@link ConnectionGuard}.
+ *
+ * <p>Where authentication is on ({@link PortAccess}), the endpoint first sends
+ * {@code {"type":"hello","protocol":"habla-status/1","auth":"required"}} and waits (within
+ * {@code limits.frameTimeoutMs}) for the client's auth line; a client with the {@code read} role on
+ * {@code "@status"} (or {@code "*"}) gets the snapshot, any other an error line after a short delay.
  */
 public final class StatusServer implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(StatusServer.class);
     private static final ObjectMapper JSON = new ObjectMapper();
+    /** The protocol named in the hello an endpoint that requires authentication sends. */
+    public static final String PROTOCOL = "habla-status/1";
 
     private final StatusConfig config;
     private final Supplier<ObjectNode> snapshot;
     private final ConnectionGuard guard;
+    private final Limits limits;
+    private final PortAccess access;
+    private final org.habla.security.Tls tls;
     /** The longest {@link #close} waits for the acceptor to leave {@code accept}, which is when the port is released. */
     private static final long ACCEPTOR_STOP_MILLIS = 2_000;
 
@@ -45,6 +60,20 @@ public final class StatusServer implements AutoCloseable {
     }
 
     public StatusServer(StatusConfig config, Limits limits, Supplier<ObjectNode> snapshot) {
+        this(config, limits, snapshot, PortAccess.open(Principal.STATUS));
+    }
+
+    /** An endpoint that answers only the clients {@code access} admits. */
+    public StatusServer(StatusConfig config, Limits limits, Supplier<ObjectNode> snapshot, PortAccess access) {
+        this(config, limits, snapshot, access, null);
+    }
+
+    /** An endpoint that answers only the clients {@code access} admits, over TLS unless {@code tls} is null. */
+    public StatusServer(StatusConfig config, Limits limits, Supplier<ObjectNode> snapshot, PortAccess access,
+            org.habla.security.Tls tls) {
+        this.tls = tls;
+        this.limits = Objects.requireNonNull(limits, "limits");
+        this.access = Objects.requireNonNull(access, "access");
         this.config = Objects.requireNonNull(config, "config");
         this.snapshot = Objects.requireNonNull(snapshot, "snapshot");
         this.guard = new ConnectionGuard("the status endpoint", limits.maxClientsPerPort(), "limits.maxClientsPerPort",
@@ -122,6 +151,11 @@ public final class StatusServer implements AutoCloseable {
         return s.getLocalPort();
     }
 
+    /** Who may read the endpoint, and its counts of authentications. */
+    public PortAccess access() {
+        return access;
+    }
+
     /** Answers being written now. */
     public int answering() {
         return guard.size();
@@ -168,7 +202,7 @@ public final class StatusServer implements AutoCloseable {
 
     /** One client's answer: the snapshot line, taken within the frame deadline or abandoned. */
     private final class Answer implements ConnectionGuard.Guarded {
-        private final Socket socket;
+        private volatile Socket socket;
         private final long connected = System.nanoTime();
         private volatile boolean written;
 
@@ -177,7 +211,22 @@ public final class StatusServer implements AutoCloseable {
         }
 
         void run() {
-            try (socket) {
+            if (tls != null) {
+                try {
+                    socket = tls.upgrade(socket, (JSON.createObjectNode().put("type", "error")
+                            .put("code", "tls_required").put("message", "the status endpoint speaks TLS only: "
+                                    + "habla status --tls-trust CERT, or openssl s_client; see docs/security.md")
+                            + "\n").getBytes(java.nio.charset.StandardCharsets.UTF_8));
+                } catch (IOException e) {
+                    LOG.debug("status client: {}", e.getMessage());
+                    guard.left(this);
+                    return;
+                }
+            }
+            try (Socket socket = this.socket) {
+                if (access.required() && !authenticated()) {
+                    return;
+                }
                 byte[] line;
                 try {
                     line = JSON.writeValueAsBytes(snapshot.get());
@@ -197,6 +246,55 @@ public final class StatusServer implements AutoCloseable {
             } finally {
                 guard.left(this);
             }
+        }
+
+        /** Says authentication is required, reads the auth line and checks it; false when refused. */
+        private boolean authenticated() throws IOException {
+            OutputStream out = socket.getOutputStream();
+            out.write(JSON.writeValueAsBytes(JSON.createObjectNode().put("type", "hello")
+                    .put("protocol", PROTOCOL).put("auth", "required")));
+            out.write('\n');
+            out.flush();
+            socket.setSoTimeout((int) Math.min(Integer.MAX_VALUE, limits.frameTimeoutMs()));
+            Frame request;
+            try {
+                request = new FrameReader(socket.getInputStream(), limits.maxLineBytes(), 0).read();
+            } catch (FrameException e) {
+                refuse(out, e.code(), e.getMessage(), false);
+                return false;
+            }
+            if (request == null) {
+                return false;
+            }
+            if (!request.header().path("op").asText().equals("auth")) {
+                refuse(out, "auth_required", "the status endpoint requires authentication: send "
+                        + "{\"op\":\"auth\",\"client\":NAME,\"token\":TOKEN} first", false);
+                return false;
+            }
+            return switch (access.authenticate(request.header())) {
+                case PortAccess.Admitted a -> true;
+                case PortAccess.Refused r -> {
+                    LOG.info("status client {}: refused: {}", socket.getRemoteSocketAddress(), r.message());
+                    refuse(out, r.code(), r.message(), true);
+                    yield false;
+                }
+            };
+        }
+
+        private void refuse(OutputStream out, String code, String message, boolean delay) throws IOException {
+            if (delay) {
+                try {
+                    Thread.sleep(PortAccess.FAILURE_DELAY_MS);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    return;
+                }
+            }
+            out.write(JSON.writeValueAsBytes(JSON.createObjectNode()
+                    .put("type", "error").put("code", code).put("message", message)));
+            out.write('\n');
+            out.flush();
+            socket.shutdownOutput();
         }
 
         @Override

@@ -15,7 +15,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code habla worker --port P [--bind ADDR]}: runs, on this computer, the methods a daemon's config
+ * {@code habla worker --port P [--bind ADDR] [--secret-file FILE] [--tls-cert PEM --tls-key PEM]}: runs, on this computer, the methods a daemon's config
  * places here with {@code "host": "this-computer:P"}. It needs no config: the daemon sends each method's
  * type and params, and the worker makes it from the method types it has (the same plugins as the daemon).
  */
@@ -30,9 +30,21 @@ public final class WorkerCommand implements Callable<Integer> {
             description = "The TCP port to listen on (default ${DEFAULT-VALUE}).")
     private int port;
 
-    @Option(names = "--bind", paramLabel = "ADDR", defaultValue = "0.0.0.0",
-            description = "The address to listen on (default ${DEFAULT-VALUE}: every network of this computer).")
+    @Option(names = "--bind", paramLabel = "ADDR", defaultValue = "127.0.0.1",
+            description = "The address to listen on (default ${DEFAULT-VALUE}: this computer only); beyond loopback "
+                    + "it needs --secret-file.")
     private String bind;
+
+    @Option(names = "--secret-file", paramLabel = "FILE",
+            description = "A file (readable by its owner only) whose first line is the secret a daemon must prove "
+                    + "before it may place a method: the \"workerSecret\" of the daemon's credentials file.")
+    private java.nio.file.Path secretFile;
+
+    @Option(names = "--tls-cert", paramLabel = "PEM", description = "Speak TLS with this certificate (with --tls-key).")
+    private java.nio.file.Path tlsCertificate;
+
+    @Option(names = "--tls-key", paramLabel = "PEM", description = "The TLS certificate's unencrypted PKCS#8 key.")
+    private java.nio.file.Path tlsKey;
 
     @Option(names = "--time-scale", paramLabel = "S", defaultValue = "1",
             description = "Run the methods' clock S times faster than the wall clock, as the daemon's --time-scale.")
@@ -61,9 +73,41 @@ public final class WorkerCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
         }
+        org.habla.security.WorkerSecret secret = null;
+        if (secretFile != null) {
+            try {
+                secret = org.habla.security.CredentialsFile.readWorkerSecret(secretFile);
+            } catch (org.habla.security.CredentialsFile.Invalid e) {
+                err.println("habla worker: --secret-file " + secretFile + " " + e.getMessage());
+                err.flush();
+                return ExitCodes.USAGE_OR_CONFIG;
+            }
+        }
+        if (secret == null && !org.habla.config.SecurityConfig.isLoopback(bind)) {
+            err.println("habla worker: --bind " + bind + " is beyond loopback, and without --secret-file any daemon "
+                    + "(or anyone) on that network could place methods here; give --secret-file FILE with the "
+                    + "daemon's workerSecret (docs/security.md)");
+            err.flush();
+            return ExitCodes.USAGE_OR_CONFIG;
+        }
+        if ((tlsCertificate == null) != (tlsKey == null)) {
+            err.println("habla worker: --tls-cert and --tls-key go together");
+            err.flush();
+            return ExitCodes.USAGE_OR_CONFIG;
+        }
+        org.habla.security.Tls tls = null;
+        if (tlsCertificate != null) {
+            try {
+                tls = org.habla.security.Tls.server(tlsCertificate, tlsKey);
+            } catch (IOException e) {
+                err.println("habla worker: " + e.getMessage());
+                err.flush();
+                return ExitCodes.USAGE_OR_CONFIG;
+            }
+        }
         PluginRegistry registry = PluginRegistry.discover(Thread.currentThread().getContextClassLoader());
         EngineClock clock = timeScale == 1 ? EngineClock.system() : EngineClock.scaled(timeScale);
-        WorkerServer server = new WorkerServer(registry, bind, port, clock, limits(maxMethods));
+        WorkerServer server = new WorkerServer(registry, bind, port, clock, limits(maxMethods), secret, tls);
         try {
             server.start();
         } catch (IOException e) {

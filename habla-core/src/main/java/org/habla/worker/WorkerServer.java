@@ -39,11 +39,25 @@ public final class WorkerServer implements AutoCloseable {
     private final ConnectionGuard guard;
     private final BlockBudget budget;
     private final ExecutorService backgroundPool;
+    private final org.habla.security.WorkerSecret secret;
+    private final org.habla.security.Tls tls;
+    private final java.util.concurrent.atomic.AtomicLong authFailures = new java.util.concurrent.atomic.AtomicLong();
     private volatile boolean running;
     private ServerSocket server;
     private Thread acceptor;
 
     public WorkerServer(PluginRegistry registry, String bind, int port, EngineClock clock, Limits limits) {
+        this(registry, bind, port, clock, limits, null, null);
+    }
+
+    /**
+     * A worker that, with a {@code secret}, places methods only for a daemon that proves it holds the same secret
+     * (and proves it back), and with {@code tls} speaks TLS only.
+     */
+    public WorkerServer(PluginRegistry registry, String bind, int port, EngineClock clock, Limits limits,
+            org.habla.security.WorkerSecret secret, org.habla.security.Tls tls) {
+        this.secret = secret;
+        this.tls = tls;
         this.registry = registry;
         this.bind = bind;
         this.requestedPort = port;
@@ -76,7 +90,8 @@ public final class WorkerServer implements AutoCloseable {
         running = true;
         guard.start();
         acceptor = Thread.ofPlatform().daemon().name("habla-worker-accept").start(this::acceptLoop);
-        LOG.info("HABLA worker listening on {}:{}; method types: {}", bind, port(),
+        LOG.info("HABLA worker listening on {}:{}{}{}; method types: {}", bind, port(),
+                secret == null ? "" : ", daemons must prove the shared secret", tls == null ? "" : ", TLS",
                 String.join(", ", registry.methods().keySet()));
     }
 
@@ -95,6 +110,11 @@ public final class WorkerServer implements AutoCloseable {
         return budget.reserved();
     }
 
+    /** Daemons refused because they did not prove the shared secret, so far. */
+    public long authFailures() {
+        return authFailures.get();
+    }
+
     /** Connections evicted to admit a newcomer, and closed for a deadline, so far. */
     public long evictions() {
         return guard.evictedTotal() + guard.idleTimeoutsTotal() + guard.frameTimeoutsTotal();
@@ -111,7 +131,8 @@ public final class WorkerServer implements AutoCloseable {
                 }
                 continue;
             }
-            WorkerSession session = new WorkerSession(s, registry, clock, backgroundPool, limits, budget, guard);
+            WorkerSession session = new WorkerSession(s, registry, clock, backgroundPool, limits, budget, guard,
+                    secret, tls, authFailures);
             sessions.add(s);
             guard.admit(session);
             Thread.ofVirtual().name("habla-worker-session").start(() -> {

@@ -57,7 +57,10 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
     /** How long an evicted connection has to take its error line and close before it is closed anyway. */
     private static final long LINGER_MS = 2_000;
 
-    private final Socket socket;
+    private volatile Socket socket;
+    private final org.habla.security.WorkerSecret secret;
+    private final org.habla.security.Tls tls;
+    private final AtomicLong authFailures;
     private final PluginRegistry registry;
     private final EngineClock clock;
     private final ExecutorService backgroundPool;
@@ -77,7 +80,11 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
     private String methodId = "?";
 
     WorkerSession(Socket socket, PluginRegistry registry, EngineClock clock, ExecutorService backgroundPool,
-            Limits limits, BlockBudget budget, ConnectionGuard guard) {
+            Limits limits, BlockBudget budget, ConnectionGuard guard, org.habla.security.WorkerSecret secret,
+            org.habla.security.Tls tls, AtomicLong authFailures) {
+        this.secret = secret;
+        this.tls = tls;
+        this.authFailures = authFailures;
         this.socket = socket;
         this.registry = registry;
         this.clock = clock;
@@ -148,14 +155,26 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
         String peer = String.valueOf(socket.getRemoteSocketAddress());
         runner = Thread.currentThread();
         Thread writer = null;
-        try (socket) {
+        if (tls != null) {
+            try {
+                socket = tls.upgrade(socket, (WorkerProtocol.error("tls_required", "this worker speaks TLS only")
+                        .toString() + "\n").getBytes(java.nio.charset.StandardCharsets.UTF_8));
+            } catch (IOException e) {
+                LOG.info("connection from {} refused: {}", peer, e.getMessage());
+                open = false;
+                return;
+            }
+        }
+        try (Socket socket = this.socket) {
             socket.setTcpNoDelay(true);
             socket.setSoTimeout(PLACE_TIMEOUT_MILLIS);
             FrameReader reader = new FrameReader(new BufferedInputStream(socket.getInputStream(), 65_536),
                     limits.maxLineBytes(), limits.maxBinaryBytes(), budget);
             frames = reader;
             out = new FrameWriter(socket.getOutputStream());
-            send(WorkerProtocol.hello(registry.methods().keySet()));
+            String challenge = secret == null ? null : org.habla.security.WorkerSecret.challenge();
+            send(secret == null ? WorkerProtocol.hello(registry.methods().keySet())
+                    : WorkerProtocol.hello(registry.methods().keySet(), challenge));
             Frame place = reader.read();
             if (place == null || evicted.get()) {
                 return;
@@ -166,6 +185,15 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
                 send(WorkerProtocol.error("too_many_methods", full.get()));
                 LOG.warn("refused a method for {}: {}", peer, full.get());
                 return;
+            }
+            if (secret != null) {
+                if (!trusts(place, challenge, peer)) {
+                    return;
+                }
+                place = reader.read();
+                if (place == null || evicted.get()) {
+                    return;
+                }
             }
             Refusal refusal = place(place);
             if (refusal != null) {
@@ -194,6 +222,32 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
                 LOG.info("method {} for {} stopped ({} output samples dropped)", methodId, peer, dropped.get());
             }
         }
+    }
+
+    /**
+     * Checks the daemon's proof of the shared secret and proves it back; a daemon that does not prove it gets
+     * {@code auth_failed} after {@link org.habla.security.PortAccess#FAILURE_DELAY_MS} and no placement.
+     */
+    private boolean trusts(Frame auth, String challenge, String peer) throws IOException {
+        String theirs = auth.header().path("challenge").asText(null);
+        if (auth.type().equals("auth") && theirs != null && theirs.length() <= 256
+                && secret.verify(auth.header().path("proof").asText(null), "daemon", challenge, theirs)) {
+            send(WorkerProtocol.trusted(secret.proof("worker", challenge, theirs)));
+            LOG.info("daemon {} proved the shared secret", peer);
+            return true;
+        }
+        long n = authFailures.incrementAndGet();
+        LOG.warn("refused daemon {}: it did not prove the shared secret ({} refused so far)", peer, n);
+        try {
+            Thread.sleep(org.habla.security.PortAccess.FAILURE_DELAY_MS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        send(WorkerProtocol.error("auth_failed", auth.type().equals("auth")
+                ? "the proof of the shared secret is wrong: this worker does not trust this daemon"
+                : "this worker places methods only for a daemon that proves the shared secret first "
+                        + "({\"type\":\"auth\",...}, see docs/protocol.md)"));
+        return false;
     }
 
     /** Why a place line was refused: an error code and a sentence. */

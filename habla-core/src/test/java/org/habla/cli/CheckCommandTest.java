@@ -79,6 +79,26 @@ class CheckCommandTest {
     }
 
     @Test
+    void aSecuredConfigIsSummarisedWithHowEachSocketIsGuarded(@org.junit.jupiter.api.io.TempDir Path dir)
+            throws IOException {
+        Files.writeString(Files.createFile(dir.resolve("lab.credentials.json"),
+                java.nio.file.attribute.PosixFilePermissions.asFileAttribute(
+                        java.nio.file.attribute.PosixFilePermissions.fromString("rw-------"))),
+                "{\"clients\": [{\"name\": \"mdb\", \"token\": \"a-token-of-twenty-chars\", "
+                        + "\"roles\": {\"*\": \"command\"}}]}");
+        Path config = Files.writeString(dir.resolve("lab.json"), """
+                {"system": "t", "security": {"credentials": "lab.credentials.json"},
+                 "interfaces": [{"id": "robot", "driver": "robot-sim", "address": "127.0.0.1:8101"}],
+                 "methods": [{"id": "action", "type": "action", "layer": "virtual", "inputs": {"action": "control"},
+                              "expose": {"port": 7004, "bind": "0.0.0.0"}}]}
+                """);
+        CommandRun run = CommandRun.of(new CheckCommand(TestPlugins.registry()), config.toString());
+        assertThat(run.exitCode()).as(run.err()).isEqualTo(ExitCodes.OK);
+        assertThat(run.out().replace('\n', ' ')).contains("action on 0.0.0.0:7004 (authenticated)",
+                "1 client in lab.credentials.json", "audit log habla-audit.log");
+    }
+
+    @Test
     void aMissingFileIsAnErrorAtTheRoot() {
         Path config = dir.resolve("nowhere.json");
 

@@ -22,7 +22,13 @@ class BrokenConfigTest {
         syntax-error                      | $                               | invalid JSON at line 2, column 17
         duplicate-key                     | $                               | Duplicate field 'system'
         root-is-array                     | $                               | must be an object, not an array
-        unknown-root-key                  | $.methds                        | unknown key 'methds' (allowed: $schema, bridges, description, interfaces, limits, methods, safety, status, system)
+        unknown-root-key                  | $.methds                        | unknown key 'methds' (allowed: $schema, bridges, description, interfaces, limits, methods, safety, security, status, system)
+        socket-beyond-loopback-without-auth | $.methods[0].expose.bind      | socket 'action' binds 0.0.0.0, beyond loopback, without authentication
+        status-beyond-loopback-without-auth | $.status.bind                 | the status endpoint binds 0.0.0.0, beyond loopback, without authentication
+        monitor-beyond-loopback           | $.status.monitorPort            | the monitor has no authentication, so it may not listen on 0.0.0.0
+        tls-socket-without-certificate    | $.methods[0].expose.tls         | a TLS socket needs security.tls with a certificate and its key
+        credentials-file-missing          | $.security.credentials          | no-such.credentials.json $: no such file
+        security-loopback-unknown         | $.security.loopback             | must be "open" or "authenticated", was "closed"
         missing-system                    | $.system                        | required key 'system' is missing
         system-not-a-string               | $.system                        | must be a string, not a number (5)
         limit-not-an-integer              | $.limits.maxLineBytes           | must be an integer in 1..16777216, not a string ("64k")

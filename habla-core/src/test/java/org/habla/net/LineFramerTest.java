@@ -1,5 +1,6 @@
 package org.habla.net;
 
+import static java.nio.charset.StandardCharsets.ISO_8859_1;
 import static java.nio.charset.StandardCharsets.UTF_8;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
@@ -7,6 +8,8 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import java.io.ByteArrayInputStream;
 import java.io.EOFException;
 import java.io.InputStream;
+import java.util.ArrayList;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 
 class LineFramerTest {
@@ -75,5 +78,55 @@ class LineFramerTest {
         assertThat(new String(f.readBytes(4), UTF_8)).isEqualTo("BODY");
         assertThat(line(f)).isEqualTo("tail");
         assertThatThrownBy(() -> f.readBytes(1)).isInstanceOf(EOFException.class);
+    }
+
+    @Test
+    void eachOverlongLineIsReportedOnceAndTheLinesAroundItStillArrive() throws Exception {
+        LineFramer f = framer("12345678\n123456789\n" + "x".repeat(10_000) + "\nok\n", 8);
+        List<String> lines = new ArrayList<>();
+        int tooLong = 0;
+        for (int i = 0; i < 10; i++) {
+            try {
+                String l = line(f);
+                if (l == null) {
+                    break;
+                }
+                lines.add(l);
+            } catch (FrameException e) {
+                assertThat(e.code()).isEqualTo("line_too_long");
+                tooLong++;
+            }
+        }
+        assertThat(lines).containsExactly("12345678", "ok");
+        assertThat(tooLong).isEqualTo(2);
+    }
+
+    @Test
+    void theStreamEndingInsideAnOverlongLineIsFatalAndNamesTheLimit() throws Exception {
+        LineFramer f = new LineFramer(new TrickleInputStream(("ok\n" + "y".repeat(300)).getBytes(UTF_8)), 100);
+        assertThat(line(f)).isEqualTo("ok");
+        assertThatThrownBy(f::readLine).isInstanceOfSatisfying(FrameException.class, e -> {
+            assertThat(e.code()).isEqualTo("line_too_long");
+            assertThat(e.fatal()).isTrue();
+            assertThat(e.getMessage()).contains("maxLineBytes=100");
+        });
+    }
+
+    @Test
+    void aLimitOfOneByteAllowsOneByteLines() throws Exception {
+        LineFramer f = framer("a\r\nbc\nd\n", 1);
+        assertThat(line(f)).isEqualTo("a");
+        assertThatThrownBy(f::readLine).hasFieldOrPropertyWithValue("code", "line_too_long");
+        assertThat(line(f)).isEqualTo("d");
+        assertThatThrownBy(() -> new LineFramer(InputStream.nullInputStream(), 0))
+                .hasMessageContaining("maxLineBytes");
+    }
+
+    @Test
+    void textComesOutInTheCharsetAsked() throws Exception {
+        byte[] bytes = {'c', 'a', 'f', (byte) 0xE9, '\r', '\n'};
+        LineFramer f = new LineFramer(new ByteArrayInputStream(bytes), 10);
+        assertThat(f.readText(ISO_8859_1)).isEqualTo("café");
+        assertThat(f.readText(ISO_8859_1)).isNull();
     }
 }

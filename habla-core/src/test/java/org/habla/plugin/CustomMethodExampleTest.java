@@ -19,7 +19,7 @@ import javax.tools.ToolProvider;
 import org.habla.method.Layer;
 import org.habla.method.Method;
 import org.habla.method.MethodHarness;
-import org.habla.sample.NumberValue;
+import org.habla.sample.RecordValue;
 import org.habla.sample.TextValue;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -46,11 +46,9 @@ class CustomMethodExampleTest {
                     .newInstance(null, null);
             Method m = provider.create(Layer.PROCESSING, params);
             MethodHarness h = MethodHarness.started("near", m);
-            h.push("value", new NumberValue(1.0));
-            h.push("value", new NumberValue(0.7));
-            h.push("value", new NumberValue(0.4));
-            h.push("value", new NumberValue(0.6));
-            h.push("value", new NumberValue(0.9));
+            for (double distanceM : new double[] {1.0, 0.7, 0.4, 0.6, 0.9}) {
+                h.push("nearest", RecordValue.builder().put("distanceM", distanceM).build());
+            }
             assertThat(h.values("label")).containsExactly(new TextValue("far"), new TextValue("near"),
                     new TextValue("far"));
         }

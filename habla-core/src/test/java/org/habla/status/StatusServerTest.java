@@ -133,4 +133,37 @@ class StatusServerTest {
             assertThat(server.running()).isFalse();
         }
     }
+
+    @Test
+    void withAuthenticationOnlyAClientWithTheReadRoleGetsTheSnapshot() throws Exception {
+        var credentials = org.habla.security.Credentials.of(java.util.Map.of(
+                "viewer", java.util.Map.entry("viewer-token-0123456789", java.util.Map.of("@status",
+                        org.habla.security.Role.READ)),
+                "driver", java.util.Map.entry("driver-token-0123456789", java.util.Map.of("action",
+                        org.habla.security.Role.COMMAND))), null);
+        try (StatusServer server = new StatusServer(new StatusConfig("127.0.0.1", 7099), Limits.DEFAULTS,
+                () -> JsonNodeFactory.instance.objectNode().put("snapshot", 1),
+                org.habla.security.PortAccess.authenticated("@status", credentials))) {
+            server.startOnAnyPort();
+            assertThat(exchange(server.port(), "{\"op\":\"ping\"}")).hasSize(2)
+                    .last().asString().contains("auth_required").doesNotContain("snapshot");
+            assertThat(exchange(server.port(), "{\"op\":\"auth\",\"client\":\"viewer\",\"token\":\"wrong-wrong-wrong-wrong\"}"))
+                    .last().asString().contains("auth_failed").doesNotContain("snapshot");
+            assertThat(exchange(server.port(), "{\"op\":\"auth\",\"client\":\"driver\",\"token\":\"driver-token-0123456789\"}"))
+                    .last().asString().contains("forbidden");
+            assertThat(exchange(server.port(), "{\"op\":\"auth\",\"client\":\"viewer\",\"token\":\"viewer-token-0123456789\"}"))
+                    .containsExactly("{\"type\":\"hello\",\"protocol\":\"habla-status/1\",\"auth\":\"required\"}",
+                            "{\"snapshot\":1}");
+            assertThat(server.access().failures()).isEqualTo(2);
+        }
+    }
+
+    /** Connects, sends one line, and returns every line the server sends before it closes. */
+    private static java.util.List<String> exchange(int port, String line) throws IOException {
+        try (Socket s = new Socket("127.0.0.1", port)) {
+            s.setSoTimeout(5_000);
+            s.getOutputStream().write((line + "\n").getBytes(UTF_8));
+            return new BufferedReader(new InputStreamReader(s.getInputStream(), UTF_8)).lines().toList();
+        }
+    }
 }

@@ -325,6 +325,119 @@ class WorkerPlacementTest {
 
     // ------------------------------------------------------------------ set-up
 
+    // ------------------------------------------------------------------ the shared secret
+
+    private static final String SECRET = "the-lab-worker-secret-0123";
+
+    @Test
+    void anUntrustedDaemonCannotPlaceAMethodAndATrustedOneCan() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0, org.habla.security.WorkerSecret.of(SECRET));
+        String host = "127.0.0.1:" + worker.port();
+        MethodGraph untrusted = graph(secured("not-the-lab-secret-0123", numbers(host, Fallback.NONE)));
+        await(() -> placement(untrusted).path("lastError").asText().contains("does not trust this daemon"),
+                "the worker refuses the daemon with the wrong secret");
+        assertThat(placement(untrusted).path("up").asBoolean()).isFalse();
+        assertThat(worker.authFailures()).isPositive();
+        untrusted.close();
+
+        MethodGraph trusted = graph(secured(SECRET, numbers(host, Fallback.NONE)));
+        BlockingQueue<Sample> seen = listen(point(trusted, "out"));
+        await(() -> placement(trusted).path("up").asBoolean(), "the trusted daemon's placement comes up");
+        write(trusted, new NumberValue(2));
+        Sample s = seen.poll(15, TimeUnit.SECONDS);
+        assertThat(s).isNotNull();
+        assertThat(s.payload()).isEqualTo(new NumberValue(6));
+    }
+
+    @Test
+    void aWorkerWithASecretRefusesAPlaceLineThatCameWithoutTheProof() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0, org.habla.security.WorkerSecret.of(SECRET));
+        try (Socket s = new Socket("127.0.0.1", worker.port())) {
+            s.setSoTimeout(15_000);
+            BufferedReader in = lines(s);
+            JsonNode hello = JSON.readTree(in.readLine());
+            assertThat(hello.path("auth").asText()).isEqualTo("required");
+            assertThat(hello.path("challenge").asText()).hasSizeGreaterThan(40);
+            send(s, "{\"type\":\"place\",\"method\":\"p\",\"methodType\":\"scale\",\"layer\":\"processing\","
+                    + "\"params\":{\"factor\":3},\"channels\":{},\"commandChannels\":{}}\n");
+            JsonNode answer = JSON.readTree(in.readLine());
+            assertThat(answer.path("code").asText()).isEqualTo("auth_failed");
+            assertThat(in.readLine()).as("the worker closes without placing anything").isNull();
+        }
+        assertThat(worker.authFailures()).isEqualTo(1);
+    }
+
+    @Test
+    void aDaemonWithASecretDoesNotTrustAWorkerThatCannotProveIt() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0);
+        MethodGraph g = graph(secured(SECRET, numbers("127.0.0.1:" + worker.port(), Fallback.NONE)));
+        await(() -> placement(g).path("lastError").asText().contains("does not ask for the shared secret"),
+                "the daemon refuses a worker that asks for no secret");
+        assertThat(placement(g).path("up").asBoolean()).isFalse();
+    }
+
+    @Test
+    void theWorkerCommandRefusesToListenBeyondLoopbackWithoutASecret() {
+        java.io.StringWriter err = new java.io.StringWriter();
+        int code = new picocli.CommandLine(new WorkerCommand()).setErr(new java.io.PrintWriter(err))
+                .execute("--bind", "0.0.0.0", "--port", "0");
+        assertThat(code).isEqualTo(org.habla.cli.ExitCodes.USAGE_OR_CONFIG);
+        assertThat(err.toString()).contains("--bind 0.0.0.0 is beyond loopback", "--secret-file");
+    }
+
+    @Test
+    void aDaemonTrustingTheWorkersCertificatePlacesOverTlsAndAPlainDaemonIsToldWhy(@org.junit.jupiter.api.io.TempDir
+            java.nio.file.Path dir) throws Exception {
+        java.nio.file.Path cert = dir.resolve("worker.crt");
+        java.nio.file.Path key = dir.resolve("worker.key");
+        Process p = new ProcessBuilder("openssl", "req", "-x509", "-newkey", "ec", "-pkeyopt",
+                "ec_paramgen_curve:prime256v1", "-nodes", "-keyout", key.toString(), "-out", cert.toString(), "-days",
+                "2", "-subj", "/CN=localhost", "-addext", "subjectAltName=IP:127.0.0.1").redirectErrorStream(true)
+                .start();
+        String made = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        assertThat(p.waitFor(60, TimeUnit.SECONDS) && p.exitValue() == 0).as("openssl: %s", made).isTrue();
+        EngineClock clock = EngineClock.system();
+        WorkerServer worker = new WorkerServer(WorkerTestMethods.all(), "127.0.0.1", 0, clock, Limits.DEFAULTS,
+                org.habla.security.WorkerSecret.of(SECRET), org.habla.security.Tls.server(cert, key));
+        toClose.add(clock::close);
+        toClose.add(worker);
+        worker.start();
+        String host = "127.0.0.1:" + worker.port();
+
+        MethodGraph plain = graph(secured(SECRET, numbers(host, Fallback.NONE)));
+        await(() -> placement(plain).path("lastError").asText().contains("tls_required"),
+                "a daemon that speaks plain TCP to a TLS worker is told so");
+        plain.close();
+
+        var credentials = org.habla.security.Credentials.of(Map.of(), SECRET);
+        MethodGraph overTls = graph(new HablaConfig("worker-test", Limits.DEFAULTS, new Safety(0),
+                new StatusConfig("127.0.0.1", 0), List.of(), List.of(numbers(host, Fallback.NONE)), List.of(),
+                new org.habla.config.SecurityConfig(null, credentials, null, false, false, null, null, cert)));
+        BlockingQueue<Sample> seen = listen(point(overTls, "out"));
+        await(() -> placement(overTls).path("up").asBoolean(), "the placement comes up over TLS");
+        write(overTls, new NumberValue(5));
+        Sample s = seen.poll(15, TimeUnit.SECONDS);
+        assertThat(s).isNotNull();
+        assertThat(s.payload()).isEqualTo(new NumberValue(15));
+    }
+
+    private static HablaConfig secured(String workerSecret, MethodConfig... methods) {
+        var credentials = org.habla.security.Credentials.of(Map.of(), workerSecret);
+        return new HablaConfig("worker-test", Limits.DEFAULTS, new Safety(0), new StatusConfig("127.0.0.1", 0),
+                List.of(), List.of(methods), List.of(), new org.habla.config.SecurityConfig(null, credentials, null,
+                        false, false, null, null, null));
+    }
+
+    private WorkerServer worker(PluginRegistry registry, int port, org.habla.security.WorkerSecret secret)
+            throws Exception {
+        EngineClock clock = EngineClock.system();
+        WorkerServer w = new WorkerServer(registry, "127.0.0.1", port, clock, Limits.DEFAULTS, secret, null);
+        toClose.add(clock::close);
+        toClose.add(w);
+        w.start();
+        return w;
+    }
+
     private WorkerServer worker(PluginRegistry registry, int port) throws Exception {
         EngineClock clock = EngineClock.system();
         WorkerServer w = new WorkerServer(registry, "127.0.0.1", port, clock, Limits.DEFAULTS);

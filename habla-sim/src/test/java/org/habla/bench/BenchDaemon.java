@@ -31,23 +31,39 @@ final class BenchDaemon {
 
     /** The same, with the live monitor on a free port if {@code monitor}. */
     static Daemon start(int robotPort, String host, boolean monitor) throws IOException, ConfigException {
+        return start(robotPort, host, monitor, null, false, null);
+    }
+
+    /**
+     * The same, with {@code security} (the config's "security" object, or null) and the socket speaking TLS if
+     * {@code tls}; relative files in {@code security} are taken from {@code dir}.
+     */
+    static Daemon start(int robotPort, String security, boolean tls, java.nio.file.Path dir)
+            throws IOException, ConfigException {
+        return start(robotPort, null, false, security, tls, dir);
+    }
+
+    private static Daemon start(int robotPort, String host, boolean monitor, String security, boolean tls,
+            java.nio.file.Path dir) throws IOException, ConfigException {
         int[] ports = DaemonProcess.freePorts(2);
         int port = ports[0];
         String relay = "\"params\": {\"kind\": \"number\", \"delivery\": \"queue\", \"capacity\": 4096}";
         String json = """
-                {"system": "bench", "status": {"port": 0, "monitorPort": %d},
+                {"system": "bench", "status": {"port": 0, "monitorPort": %d},%s
                  "interfaces": [{"id": "robot", "driver": "habla", "address": "127.0.0.1:%d",
                                  "params": {"channels": %s}}],
                  "methods": [
                    {"id": "s", "type": "channel", "layer": "sensors_actuators", "inputs": {"in": "@robot.value"}, %s},
                    {"id": "p", "type": "pass-through", "layer": "processing", "inputs": {"in": "s.out"}, %s%s},
                    {"id": "v", "type": "pass-through", "layer": "virtual", "inputs": {"in": "p.out"}, %s,
-                    "expose": {"port": %d, "name": "value"}}
+                    "expose": {"port": %d, "name": "value"%s}}
                  ]}
-                """.formatted(monitor ? ports[1] : 0, robotPort, BenchRobot.CHANNELS_JSON, relay, relay,
-                        host == null ? "" : ", \"host\": \"" + host + "\"", relay, port);
+                """.formatted(monitor ? ports[1] : 0,
+                        security == null ? "" : " \"security\": " + security + ",", robotPort, BenchRobot.CHANNELS_JSON, relay, relay,
+                        host == null ? "" : ", \"host\": \"" + host + "\"", relay, port, tls ? ", \"tls\": true" : "");
         PluginRegistry registry = PluginRegistry.discover();
-        HablaConfig config = new ConfigLoader(registry).parse(json);
+        HablaConfig config = dir == null ? new ConfigLoader(registry).parse(json)
+                : new ConfigLoader(registry).parse(json, dir);
         return Daemon.start(config, registry, EngineClock.system());
     }
 }

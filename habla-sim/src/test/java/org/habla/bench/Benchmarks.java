@@ -5,7 +5,7 @@ import java.util.List;
 
 /**
  * Runs the engine benchmarks and prints their figures: {@code bench/run [latency] [throughput] [fanout] [monitor]
- * [vision] [worker] [mqtt] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up), and the
+ * [vision] [security] [worker] [mqtt] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up), and the
  * reliability runs of docs/reliability.md with {@code bench/run chaos} (only when named: they take minutes), or
  * its parts {@code hostile} and {@code soak} ({@code --hostile N}, {@code --attack-seconds S},
  * {@code --soak-minutes M}).
@@ -24,7 +24,7 @@ public final class Benchmarks {
         }
         boolean all = list.stream().noneMatch(a -> a.equals("latency") || a.equals("throughput") || a.equals("fanout")
                 || a.equals("vision") || a.equals("worker") || a.equals("monitor") || a.equals("recording") || a.equals("mqtt")
-                || a.equals("chaos") || a.equals("hostile") || a.equals("soak"));
+                || a.equals("chaos") || a.equals("hostile") || a.equals("soak") || a.equals("security"));
         System.out.printf("HABLA engine benchmarks: %d cores, %s %s, %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name"), System.getProperty("java.version"), System.getProperty("os.name"));
         System.out.println("load average at start (1, 5, 15 min): " + loadAverage());
@@ -45,6 +45,9 @@ public final class Benchmarks {
         }
         if (list.contains("monitor")) {
             new MonitorBench(3, seconds, 3).run();
+        }
+        if (all || list.contains("security")) {
+            new SecurityBench(1_000, 3, seconds).run();
         }
         if (all || list.contains("worker")) {
             new WorkerBench(1_000, 3, seconds).run();

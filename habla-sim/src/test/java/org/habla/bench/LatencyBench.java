@@ -47,11 +47,24 @@ final class LatencyBench {
         });
     }
 
-    /** What the client connects to, and how to take it down. */
-    record Path(int port, AutoCloseable closer, Daemon daemon) {
+    /** What the client connects to, how to take it down, and how the client connects (plain by default). */
+    record Path(int port, AutoCloseable closer, Daemon daemon, Connector connector) {
         Path(int port, AutoCloseable closer) {
             this(port, closer, null);
         }
+
+        Path(int port, AutoCloseable closer, Daemon daemon) {
+            this(port, closer, daemon, SampleClient::new);
+        }
+    }
+
+    /** Makes the client of a path's port. */
+    interface Connector {
+        SampleClient connect(int port) throws IOException;
+    }
+
+    /** One path's figures: the latency percentiles [µs] and the samples measured. */
+    record Figures(long samples, long p50, long p99, long p999, long max) {
     }
 
     interface PathFactory {
@@ -59,19 +72,19 @@ final class LatencyBench {
     }
 
     /** One measurement of a path; {@code during} runs once the client has had its first sample (may be null). */
-    void measure(String name, PathFactory factory) throws Exception {
-        measure(name, factory, null);
+    Figures measure(String name, PathFactory factory) throws Exception {
+        return measure(name, factory, null);
     }
 
     interface During {
         AutoCloseable start(Path path) throws Exception;
     }
 
-    void measure(String name, PathFactory factory, During during) throws Exception {
+    Figures measure(String name, PathFactory factory, During during) throws Exception {
         try (BenchRobot robot = new BenchRobot(1_000_000_000L / rateHz)) {
             Path path = factory.open(robot);
             AutoCloseable extra = null;
-            try (SampleClient client = new SampleClient(path.port())) {
+            try (SampleClient client = path.connector().connect(path.port())) {
                 await(() -> client.total() > 0, 20_000, name + ": no sample reached the client");
                 extra = during == null ? null : during.start(path);
                 Thread.sleep(warmupS * 1000L);
@@ -87,6 +100,8 @@ final class LatencyBench {
                 if (client.samples() < sent * 0.9) {
                     System.out.printf("  note: the robot sent %d readings in the window%n", sent);
                 }
+                return new Figures(client.samples(), h.getValueAtPercentile(50), h.getValueAtPercentile(99),
+                        h.getValueAtPercentile(99.9), h.getMaxValue());
             } finally {
                 if (extra != null) {
                     extra.close();

@@ -15,6 +15,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
+import org.habla.cli.DaemonJvm;
 import org.habla.sim.PortBlock;
 import org.habla.sim.scenario.DerivedConfig;
 
@@ -93,10 +94,7 @@ final class PioneerRig implements AutoCloseable {
     private Process launch(String log, String... args) throws IOException {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "--enable-native-access=ALL-UNNAMED"));
-        String opts = System.getenv("HABLA_JAVA_OPTS"); // the daemon's, as ./habla passes them
-        if (opts != null && !opts.isBlank() && args[0].equals("run")) {
-            cmd.addAll(List.of(opts.trim().split("\\s+")));
-        }
+        cmd.addAll(DaemonJvm.options(home(), args[0])); // the daemon's, as ./habla passes them
         cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "-Dhabla.home=" + home(), "org.habla.cli.Habla"));
         cmd.addAll(List.of(args));
         return new ProcessBuilder(cmd).directory(home().toFile()).redirectErrorStream(true)

@@ -30,9 +30,21 @@ final class SampleClient implements AutoCloseable {
     private volatile long total;
 
     SampleClient(int port) throws IOException {
-        socket = new Socket(InetAddress.getLoopbackAddress(), port);
+        this(new Socket(InetAddress.getLoopbackAddress(), port), null);
+    }
+
+    /**
+     * A client over {@code connected} (a plain or a TLS socket) that first sends {@code firstLine} (an auth line),
+     * if not null.
+     */
+    SampleClient(Socket connected, String firstLine) throws IOException {
+        socket = connected;
         socket.setTcpNoDelay(true);
-        reader = Thread.ofPlatform().name("bench-client-" + port).daemon().start(this::read);
+        if (firstLine != null) {
+            socket.getOutputStream().write((firstLine + "\n").getBytes(StandardCharsets.UTF_8));
+            socket.getOutputStream().flush();
+        }
+        reader = Thread.ofPlatform().name("bench-client-" + socket.getPort()).daemon().start(this::read);
     }
 
     private void read() {

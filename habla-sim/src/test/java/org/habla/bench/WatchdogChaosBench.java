@@ -74,7 +74,7 @@ final class WatchdogChaosBench {
     private static ObjectNode config(PioneerSim sim) throws IOException {
         ObjectNode c = (ObjectNode) JSON.readTree(Files.readString(Path.of("config/pioneer.json")));
         c.remove("$schema");
-        ((ObjectNode) c.path("status")).put("port", 0);
+        ((ObjectNode) c.path("status")).put("port", 0).put("monitorPort", 0);
         int[] simPorts = {sim.arcosPort(), sim.micPort(), sim.keysPort()};
         for (int i = 0; i < simPorts.length; i++) {
             ((ObjectNode) c.path("interfaces").get(i)).put("address", "127.0.0.1:" + simPorts[i]);

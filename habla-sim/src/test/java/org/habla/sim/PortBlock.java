@@ -11,7 +11,7 @@ import java.util.concurrent.ThreadLocalRandom;
  */
 public final class PortBlock {
 
-    private static final int[] DEFAULTS = {7001, 7002, 7003, 7004, 7010, 7011, 7012, 7013, 7099, 7600, 8101, 8110,
+    private static final int[] DEFAULTS = {7001, 7002, 7003, 7004, 7010, 7011, 7012, 7013, 7098, 7099, 7600, 8101, 8110,
         8111, 8199, 10011, 10020, 10031, 10050, 10052, 10053, 10070, 10071, 10199};
 
     private PortBlock() {
@@ -19,7 +19,9 @@ public final class PortBlock {
 
     public static int freeOffset() throws IOException {
         for (int attempt = 0; attempt < 50; attempt++) {
-            int offset = 100 * ThreadLocalRandom.current().nextInt(150, 500);
+            // Every port of the block below the kernel's usual ephemeral range (32768 and up), so that no
+            // connection another test opens meanwhile takes one of them as its local port.
+            int offset = 100 * ThreadLocalRandom.current().nextInt(10, 225);
             if (allFree(offset)) {
                 return offset;
             }

@@ -15,7 +15,7 @@ public final class ThresholdProvider implements MethodProvider<ThresholdParams> 
 
     @Override
     public String description() {
-        return "Labels a number near or far, with hysteresis";
+        return "Labels the nearest obstacle near or far, with hysteresis";
     }
 
     @Override

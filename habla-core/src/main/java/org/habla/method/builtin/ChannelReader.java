@@ -5,6 +5,7 @@ import org.habla.method.Input;
 import org.habla.method.Layer;
 import org.habla.method.Output;
 import org.habla.method.SensorActuatorMethod;
+import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.Payload;
 
 /**

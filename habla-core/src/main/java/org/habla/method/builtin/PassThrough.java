@@ -7,6 +7,7 @@ import org.habla.method.Output;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.VirtualMethod;
+import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.Payload;
 
 /**

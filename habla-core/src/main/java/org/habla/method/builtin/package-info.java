@@ -1,2 +1,2 @@
-/** Built-in methods: the trivial pass-through methods every config can use, and a provider base for method types. */
+/** Built-in methods: the trivial pass-through and channel-reader methods every config can use. */
 package org.habla.method.builtin;

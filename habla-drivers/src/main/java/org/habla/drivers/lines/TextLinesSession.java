@@ -11,6 +11,8 @@ import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import org.habla.driver.LinkSession;
 import org.habla.driver.ReadingSink;
+import org.habla.net.FrameException;
+import org.habla.net.LineFramer;
 import org.habla.sample.Payload;
 import org.habla.sample.TextValue;
 import org.slf4j.Logger;
@@ -18,44 +20,47 @@ import org.slf4j.LoggerFactory;
 
 /**
  * One connection to a line stream: each line read becomes a {@code lines} reading; each {@code send}
- * command is written as one line. Overlong lines are dropped and reported; bytes that are not UTF-8 are
- * replaced with U+FFFD and reported, and the line still goes out.
+ * command is written as one line. Lines are cut by HABLA's {@link LineFramer}: at {@code \n}, a {@code \r}
+ * before it removed. Overlong lines are dropped and reported; bytes that are not UTF-8 are replaced with
+ * U+FFFD and reported, and the line still goes out.
  */
 final class TextLinesSession implements LinkSession {
 
     private static final Logger LOG = LoggerFactory.getLogger(TextLinesSession.class);
 
     private final int maxLineBytes;
-    private final LineFramer framer;
-    private final byte[] readBuffer = new byte[4096];
+    /** Made on the first read, over the connection's stream, which it then reads ahead of. */
+    private LineFramer framer;
     private final CharsetDecoder strict = StandardCharsets.UTF_8.newDecoder()
             .onMalformedInput(CodingErrorAction.REPORT).onUnmappableCharacter(CodingErrorAction.REPORT);
 
     TextLinesSession(TextLinesParams params) {
         this.maxLineBytes = params.maxLineBytes();
-        this.framer = new LineFramer(maxLineBytes);
     }
 
     @Override
     public void readNext(InputStream in, ReadingSink sink) throws IOException {
-        int n = in.read(readBuffer);
-        if (n < 0) {
-            if (framer.pending() > 0) {
-                sink.malformed("the line stream ended inside a line: " + framer.pending() + " byte(s) dropped");
+        if (framer == null) {
+            framer = new LineFramer(in, maxLineBytes);
+        }
+        byte[] line;
+        try {
+            line = framer.readLine();
+        } catch (FrameException e) {
+            if (e.code().equals("line_too_long")) {
+                sink.malformed("a line longer than maxLineBytes=" + maxLineBytes + " was dropped");
+            } else {
+                sink.malformed("the line connection: " + e.getMessage());
             }
+            if (e.fatal()) {
+                throw new EOFException("the line stream ended");
+            }
+            return;
+        }
+        if (line == null) {
             throw new EOFException("the line stream ended");
         }
-        framer.push(readBuffer, 0, n, new LineFramer.Listener() {
-            @Override
-            public void line(byte[] bytes) {
-                sink.reading(TextLinesDriver.LINES, new TextValue(decode(bytes, sink)));
-            }
-
-            @Override
-            public void overlong(int max) {
-                sink.malformed("a line longer than maxLineBytes=" + max + " was dropped");
-            }
-        });
+        sink.reading(TextLinesDriver.LINES, new TextValue(decode(line, sink)));
     }
 
     private String decode(byte[] bytes, ReadingSink sink) {

@@ -256,6 +256,8 @@ final class MqttBridge implements Bridge {
         ControlPoint p = points.get(socket);
         if (p == null || !role.mayCommand(socket)) {
             refuse(socket, "not_allowed", "this bridge takes no actions for socket '" + socket + "'", text);
+            role.audit(commander.id(), socket, inputName, text, "not_allowed: this bridge takes no actions for "
+                    + "socket '" + socket + "'");
             return;
         }
         Input<?> input = null;
@@ -268,6 +270,7 @@ final class MqttBridge implements Bridge {
             refuse(socket, "unknown_input", inputName == null ? "socket '" + socket + "' has "
                     + p.controlInputs().size() + " control inputs: name one in the topic (" + root + "/" + socket
                     + "/INPUT/set)" : "socket '" + socket + "' has no control input '" + inputName + "'", text);
+            role.audit(commander.id(), socket, inputName, text, "unknown_input");
             return;
         }
         try {
@@ -280,10 +283,13 @@ final class MqttBridge implements Bridge {
                 p.write(in, value);
             }
             actions.increment();
+            role.audit(commander.id(), socket, in.name(), text, null);
         } catch (FrameException e) {
             refuse(socket, e.code(), e.getMessage(), text);
+            role.audit(commander.id(), socket, input.name(), text, e.code() + ": " + e.getMessage());
         } catch (ControlPoint.Rejected e) {
             refuse(socket, e.code(), e.getMessage(), text);
+            role.audit(commander.id(), socket, input.name(), text, e.code() + ": " + e.getMessage());
         }
     }
 

@@ -2,6 +2,7 @@ package org.habla.drivers.tekkotsu;
 
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
@@ -11,6 +12,8 @@ import java.util.List;
 import java.util.Optional;
 import org.habla.driver.LinkSession;
 import org.habla.driver.ReadingSink;
+import org.habla.net.FrameException;
+import org.habla.net.LineFramer;
 
 /**
  * The session on the Tekkotsu controller (menu server, port 10020), which switches the other
@@ -23,14 +26,16 @@ import org.habla.driver.ReadingSink;
  * already running, when X does not exist in this Tekkotsu version, and on every reconnection.
  * Replies (menu refreshes, status text) are read and ignored, except {@code hello} (the count of
  * greetings since boot, which tells a reboot) and {@code load} (a server announcing its port),
- * which go to the status.
+ * which go to the status. A reply line longer than {@link #MAX_LINE_BYTES} is reported and counts as an
+ * empty line, so the lines of a message are still counted right.
  */
 final class ControllerSession implements LinkSession {
 
     private static final int MAX_LINE_BYTES = 4_096;
 
     private final List<String> commands;
-    private final LineReader lines = new LineReader(MAX_LINE_BYTES);
+    /** Made on the first read, over the connection's stream, which it then reads ahead of. */
+    private LineFramer lines;
     private final List<String> message = new ArrayList<>();
     private int linesExpected;
 
@@ -72,11 +77,23 @@ final class ControllerSession implements LinkSession {
 
     @Override
     public void readNext(InputStream in, ReadingSink sink) throws IOException {
-        Optional<LineReader.Line> next = lines.next(in, "Tekkotsu controller");
-        if (next.isEmpty()) {
-            return;
+        if (lines == null) {
+            lines = new LineFramer(in, MAX_LINE_BYTES);
         }
-        String line = next.get().text();
+        String line;
+        try {
+            line = lines.readText(StandardCharsets.ISO_8859_1);
+        } catch (FrameException e) {
+            if (e.fatal()) {
+                throw new EOFException("the Tekkotsu controller closed the connection");
+            }
+            sink.malformed("the Tekkotsu controller sent a line longer than maxLineBytes=" + MAX_LINE_BYTES
+                    + "; discarded");
+            line = "";
+        }
+        if (line == null) {
+            throw new EOFException("the Tekkotsu controller closed the connection");
+        }
         if (linesExpected > 0) {
             message.add(line);
             if (--linesExpected == 0) {
@@ -104,7 +121,7 @@ final class ControllerSession implements LinkSession {
                 info.put("controllerHellos", Long.parseLong(message.get(1).strip()));
             } catch (NumberFormatException e) {
                 sink.malformed("the Tekkotsu controller answered hello with '"
-                        + LineReader.abbreviate(message.get(1)) + "', not a count");
+                        + WireInput.abbreviate(message.get(1)) + "', not a count");
                 return;
             }
         } else {

@@ -2,12 +2,15 @@ package org.habla.drivers.tekkotsu;
 
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import org.habla.driver.LinkSession;
 import org.habla.driver.ReadingSink;
+import org.habla.net.FrameException;
+import org.habla.net.LineFramer;
 
 /**
  * The session on the emergency-stop control (port 10053). The Aibo boots with its emergency stop
@@ -16,14 +19,16 @@ import org.habla.driver.ReadingSink;
  * sent when someone double-taps the back) are shown in the status as {@code eStop}; a stop engaged on
  * the robot is never overridden.
  *
- * <p>Lines end in a bare {@code \n}: this server does not strip {@code \r}.
+ * <p>Lines end in a bare {@code \n}: this server does not strip {@code \r}. A line longer than
+ * {@link #MAX_LINE_BYTES} is reported and discarded.
  */
 final class EStopSession implements LinkSession {
 
     private static final int MAX_LINE_BYTES = 256;
 
     private final boolean release;
-    private final LineReader lines = new LineReader(MAX_LINE_BYTES);
+    /** Made on the first read, over the connection's stream, which it then reads ahead of. */
+    private LineFramer lines;
 
     EStopSession(boolean release) {
         this.release = release;
@@ -39,17 +44,30 @@ final class EStopSession implements LinkSession {
 
     @Override
     public void readNext(InputStream in, ReadingSink sink) throws IOException {
-        var line = lines.next(in, "emergency-stop control");
-        if (line.isEmpty()) {
+        if (lines == null) {
+            lines = new LineFramer(in, MAX_LINE_BYTES);
+        }
+        String line;
+        try {
+            line = lines.readText(StandardCharsets.ISO_8859_1);
+        } catch (FrameException e) {
+            if (e.fatal()) {
+                throw new EOFException("the emergency-stop control closed the connection");
+            }
+            sink.malformed("the emergency-stop control sent a line longer than maxLineBytes=" + MAX_LINE_BYTES
+                    + "; discarded");
             return;
         }
-        String text = line.get().text().strip();
+        if (line == null) {
+            throw new EOFException("the emergency-stop control closed the connection");
+        }
+        String text = line.strip();
         if (text.equals("on") || text.equals("off")) {
             ObjectNode info = JsonNodeFactory.instance.objectNode();
             info.put("eStop", text);
             sink.robotInfo(info);
         } else if (!text.isEmpty()) {
-            sink.malformed("the emergency-stop control sent '" + LineReader.abbreviate(text)
+            sink.malformed("the emergency-stop control sent '" + WireInput.abbreviate(text)
                     + "', expected 'on' or 'off'");
         }
     }

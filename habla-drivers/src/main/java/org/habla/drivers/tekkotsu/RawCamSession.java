@@ -39,7 +39,7 @@ final class RawCamSession implements LinkSession {
                 }
                 if (!type.equals(CameraPacket.MAGIC_TEXT)) {
                     throw new WireInput.MalformedFieldException("camera packet starts with '"
-                            + LineReader.abbreviate(type) + "', not '" + CameraPacket.MAGIC_TEXT + "'");
+                            + WireInput.abbreviate(type) + "', not '" + CameraPacket.MAGIC_TEXT + "'");
                 }
             }
             CameraPacket packet = CameraPacket.readAfterMagic(wire);

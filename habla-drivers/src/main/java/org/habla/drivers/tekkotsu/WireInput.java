@@ -136,4 +136,9 @@ final class WireInput {
             super(message);
         }
     }
+
+    /** At most 60 characters of {@code text}, for messages about bad input. */
+    static String abbreviate(String text) {
+        return text.length() <= 60 ? text : text.substring(0, 60) + "…";
+    }
 }

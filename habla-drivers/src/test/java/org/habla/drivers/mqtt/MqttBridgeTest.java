@@ -7,6 +7,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.BufferedReader;
 import java.io.InputStreamReader;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import org.habla.config.ConfigException;
 import org.habla.config.ConfigLoader;
@@ -35,6 +36,10 @@ class MqttBridgeTest {
      * out/said; socket "secret" has a control input too but is not in the bridge's actions.
      */
     private static String config(Mosquitto broker, int[] ports, String actions) {
+        return config(broker.address(), ports, actions);
+    }
+
+    private static String config(String broker, int[] ports, String actions) {
         return """
             {"system": "bridge-test", "status": {"port": 0},
              "interfaces": [{"id": "dev", "driver": "mqtt", "address": "%1$s",
@@ -54,7 +59,7 @@ class MqttBridgeTest {
                 "expose": {"port": %4$d, "name": "secret"}}],
              "bridges": [{"id": "home", "type": "mqtt", "address": "%1$s",
                "params": {"publish": ["level", "say", "secret"], "actions": [%5$s]}}]}
-            """.formatted(broker.address(), ports[0], ports[1], ports[2], actions);
+            """.formatted(broker, ports[0], ports[1], ports[2], actions);
     }
 
     @Test
@@ -62,7 +67,9 @@ class MqttBridgeTest {
             throws Exception {
         int[] ports = DaemonProcess.freePorts(3);
         try (Mosquitto broker = Mosquitto.start(tmp)) {
-            Daemon daemon = Daemon.start(new ConfigLoader(REGISTRY).parse(config(broker, ports, "\"say\"")), REGISTRY,
+            Path auditLog = tmp.resolve("audit.log");
+            Daemon daemon = Daemon.start(new ConfigLoader(REGISTRY).parse(config(broker, ports, "\"say\"")
+                    .replaceFirst("\\{", "{\"security\": {\"auditLog\": \"" + auditLog + "\"},")), REGISTRY,
                     EngineClock.system());
             try {
                 // The bridge says it is online (retained) once connected.
@@ -105,6 +112,14 @@ class MqttBridgeTest {
                 }
                 JsonNode bridge = daemon.status().path("bridges").get(0);
                 assertThat(bridge.path("actions").asLong()).isEqualTo(1);
+                // The action taken is in the audit log (the bridge never listens for the other's topic).
+                long until = System.nanoTime() + 10_000_000_000L;
+                while (Files.readAllLines(auditLog).isEmpty() && System.nanoTime() < until) {
+                    Thread.sleep(10);
+                }
+                assertThat(Files.readAllLines(auditLog)).satisfiesExactly(
+                        l -> assertThat(l).contains("\"client\":\"mqtt-bridge\"", "\"socket\":\"say\"",
+                                "\"value\":\"hello room\"", "\"accepted\":true"));
                 try (ControlLines secret = new ControlLines(ports[2])) {
                     secret.send("{\"op\":\"latest\",\"id\":7}");
                     JsonNode answer = secret.next(n -> n.has("id") || n.path("type").asText().equals("sample"),
@@ -169,5 +184,26 @@ class MqttBridgeTest {
                 assertThat(e.getMessage()).contains("$.bridges[0].params").contains("[lamp]");
             }
         }
+    }
+
+    @Test
+    void withACredentialsFileABridgeTakesActionsOnlyForTheSocketsTheFileGivesIt(@TempDir Path tmp) throws Exception {
+        Path credentials = Files.createFile(tmp.resolve("lab.credentials.json"),
+                java.nio.file.attribute.PosixFilePermissions.asFileAttribute(
+                        java.nio.file.attribute.PosixFilePermissions.fromString("rw-------")));
+        String json = config("127.0.0.1:1883", new int[] {7101, 7102, 7103}, "\"say\"")
+                .replaceFirst("\\{", "{\"security\": {\"credentials\": \"lab.credentials.json\"},");
+        Files.writeString(credentials, "{\"bridges\": {}}");
+        try {
+            new ConfigLoader(REGISTRY).parse(json, tmp);
+            throw new AssertionError("the config was accepted");
+        } catch (ConfigException e) {
+            assertThat(e.errors()).singleElement().satisfies(err -> {
+                assertThat(err.path()).isEqualTo("$.bridges[0]");
+                assertThat(err.message()).contains("bridge 'home' takes actions for [say]");
+            });
+        }
+        Files.writeString(credentials, "{\"bridges\": {\"home\": {\"say\": \"command\"}}}");
+        assertThat(new ConfigLoader(REGISTRY).parse(json, tmp).bridges()).hasSize(1);
     }
 }

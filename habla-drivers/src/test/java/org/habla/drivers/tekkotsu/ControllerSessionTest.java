@@ -55,4 +55,32 @@ class ControllerSessionTest {
         assertThat(sink.info.get(1).get("lastServerStarted").asText()).isEqualTo("Walk Remote Control on port 10050");
         assertThat(sink.malformed).hasSize(1).first().asString().contains("'many'");
     }
+
+    @Test
+    void anOverlongReplyLineIsReportedNamingTheLimitAndStillTakesItsPlaceInAMessage() throws IOException {
+        String replies = "load\n" + "x".repeat(5_000) + "\nWalk Remote Control\n10050\n\"x\"\nhello\n4\n";
+        ControllerSession session = new ControllerSession(List.of());
+        RecordingSink sink = new RecordingSink();
+        InputStream in = new java.io.ByteArrayInputStream(replies.getBytes(StandardCharsets.UTF_8));
+        for (int i = 0; i < 7; i++) {
+            session.readNext(in, sink);
+        }
+
+        assertThat(sink.malformed).singleElement().asString().contains("maxLineBytes=4096");
+        assertThat(sink.info).hasSize(2);
+        assertThat(sink.info.get(0).get("lastServerStarted").asText()).isEqualTo("Walk Remote Control on port 10050");
+        assertThat(sink.info.get(1).get("controllerHellos").asLong()).isEqualTo(4);
+    }
+
+    @Test
+    void theControllerClosingTheConnectionEndsTheSession() {
+        ControllerSession session = new ControllerSession(List.of());
+        InputStream in = new java.io.ByteArrayInputStream("hello\n".getBytes(StandardCharsets.UTF_8));
+
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> {
+            for (int i = 0; i < 3; i++) {
+                session.readNext(in, new RecordingSink());
+            }
+        }).isInstanceOf(java.io.EOFException.class).hasMessageContaining("closed the connection");
+    }
 }

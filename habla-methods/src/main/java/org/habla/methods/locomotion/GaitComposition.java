@@ -5,7 +5,7 @@ import org.habla.method.Layer;
 import org.habla.method.Output;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
-import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.Sample;
 import org.habla.sample.VectorValue;
 

@@ -5,9 +5,9 @@ import org.habla.method.Layer;
 import org.habla.method.Output;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
-import org.habla.method.builtin.SimpleMethodProvider;
 import org.habla.methods.geometry.PlanarPose;
 import org.habla.methods.geometry.RangeScan;
+import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
 

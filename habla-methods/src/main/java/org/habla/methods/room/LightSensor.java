@@ -5,9 +5,9 @@ import org.habla.method.Layer;
 import org.habla.method.Output;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
-import org.habla.method.builtin.SimpleMethodProvider;
 import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
+import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
 import org.habla.sample.Sample;
 

@@ -6,8 +6,8 @@ import org.habla.method.Layer;
 import org.habla.method.Output;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
-import org.habla.method.builtin.SimpleMethodProvider;
 import org.habla.methods.locomotion.WalkLimits;
+import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.Sample;
 import org.habla.sample.VectorValue;
 

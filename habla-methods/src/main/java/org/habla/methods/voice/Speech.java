@@ -5,7 +5,7 @@ import org.habla.method.Layer;
 import org.habla.method.Output;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
-import org.habla.method.builtin.SimpleMethodProvider;
+import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.PayloadKind;
 import org.habla.sample.RecordValue;

@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import org.habla.cli.DaemonJvm;
 
 /**
  * The separate processes of a scenario — the simulated robot, the daemon, the control program — each
@@ -36,11 +37,16 @@ final class Children implements AutoCloseable {
         return c;
     }
 
-    /** The java command that runs {@code habla} in a new JVM with this JVM's classpath. */
-    static List<String> habla(String... args) {
+    /**
+     * The java command that runs {@code habla} in a new JVM with this JVM's classpath; a daemon gets the JVM
+     * options the launcher would give it ({@link DaemonJvm}).
+     */
+    static List<String> habla(String... args) throws IOException {
         String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
-        List<String> cmd = new ArrayList<>(List.of(java, "-cp", System.getProperty("java.class.path")));
+        List<String> cmd = new ArrayList<>(List.of(java));
         String home = System.getProperty("habla.home");
+        cmd.addAll(DaemonJvm.options(Path.of(home == null ? "." : home), args[0]));
+        cmd.addAll(List.of("-cp", System.getProperty("java.class.path")));
         if (home != null) {
             cmd.add("-Dhabla.home=" + home);
         }

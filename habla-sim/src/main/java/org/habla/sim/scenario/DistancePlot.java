@@ -39,16 +39,16 @@ final class DistancePlot {
             String label = "episode " + e.episode() + (e.reached()
                     ? String.format(Locale.ROOT, ": reached in %.1f s", e.timeToReachS()) : ": not reached");
             if (!points.isEmpty()) {
-                frame.svg.polyline(points, colour, label);
+                frame.polyline(points, colour, label);
                 if (e.reached()) {
                     double[] end = points.getLast();
-                    frame.svg.circle(end[0], end[1], 4, colour, label);
+                    frame.circle(end[0], end[1], 4, colour, label);
                 }
             }
             if (i < LEGEND_ROWS) {
                 frame.legend(i, colour, label.replace(": reached in ", " ✓ ").replace(": not reached", " ✗"));
             }
         }
-        return frame.svg.render();
+        return frame.render();
     }
 }

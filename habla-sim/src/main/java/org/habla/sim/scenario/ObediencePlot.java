@@ -30,15 +30,15 @@ final class ObediencePlot {
             String label = p.commands() == 0 ? "no commands"
                     : String.format(Locale.ROOT, "%.0f %% (%d of %d)", percent, p.obeyed(), p.commands());
             double top = frame.py(percent);
-            frame.svg.rect(left, top, right - left, frame.py(0) - top, BAR, p.phase() + ": " + label);
-            frame.svg.text(centre, top - 6, "middle", 11, label, false);
-            frame.svg.text(centre, frame.py(0) + 18, "middle", 12, p.phase(), false);
+            frame.rect(left, top, right - left, frame.py(0) - top, BAR, p.phase() + ": " + label);
+            frame.text(centre, top - 6, "middle", 11, label, false);
+            frame.text(centre, frame.py(0) + 18, "middle", 12, p.phase(), false);
             int k = 0;
             for (EpisodeResult e : episodes) {
                 for (PhaseObedience q : e.obedience()) {
                     if (q.phase().equals(p.phase()) && q.commands() > 0) {
                         double x = left + (right - left) * (0.1 + 0.8 * ((k++ * 0.618) % 1.0));
-                        frame.svg.circle(x, frame.py(100 * q.fraction()), 2.5, DOT, String.format(Locale.ROOT,
+                        frame.circle(x, frame.py(100 * q.fraction()), 2.5, DOT, String.format(Locale.ROOT,
                                 "episode %d: %d of %d", e.episode(), q.obeyed(), q.commands()));
                     }
                 }
@@ -46,6 +46,6 @@ final class ObediencePlot {
         }
         frame.legend(0, BAR, "all episodes");
         frame.legend(1, DOT, "one episode");
-        return frame.svg.render();
+        return frame.render();
     }
 }

@@ -71,21 +71,21 @@ final class RoomReport {
             String label = p.switches() == 0 ? "no switches"
                     : String.format(Locale.ROOT, "%.0f %% (%d of %d)", percent, p.right(), p.switches());
             double top = frame.py(percent);
-            frame.svg.rect(left, top, right - left, frame.py(0) - top, ObediencePlot.BAR, p.phase() + ": " + label);
-            frame.svg.text((left + right) / 2, top - 6, "middle", 11, label, false);
-            frame.svg.text((left + right) / 2, frame.py(0) + 18, "middle", 12, p.phase(), false);
+            frame.rect(left, top, right - left, frame.py(0) - top, ObediencePlot.BAR, p.phase() + ": " + label);
+            frame.text((left + right) / 2, top - 6, "middle", 11, label, false);
+            frame.text((left + right) / 2, frame.py(0) + 18, "middle", 12, p.phase(), false);
             int k = 0;
             for (RoomPhase q : phases) {
                 if (q.phase().equals(p.phase()) && q.switches() > 0) {
                     double x = left + (right - left) * (0.1 + 0.8 * ((k++ * 0.618) % 1.0));
-                    frame.svg.circle(x, frame.py(100 * q.rightFraction()), 2.5, ObediencePlot.DOT, String.format(
+                    frame.circle(x, frame.py(100 * q.rightFraction()), 2.5, ObediencePlot.DOT, String.format(
                             Locale.ROOT, "episode %d: %d of %d", q.episode(), q.right(), q.switches()));
                 }
             }
         }
         frame.legend(0, ObediencePlot.BAR, "all episodes");
         frame.legend(1, ObediencePlot.DOT, "one episode");
-        return frame.svg.render();
+        return frame.render();
     }
 
     private static String energy(List<RoomScenarioRunner.Trace> traces) {
@@ -103,20 +103,20 @@ final class RoomReport {
         for (int i = 0; i < traces.size(); i++) {
             RoomScenarioRunner.Trace t = traces.get(i);
             String colour = DistancePlot.PALETTE.get(i % DistancePlot.PALETTE.size());
-            frame.svg.polyline(column(frame, t, 1), colour, "episode " + t.episode() + ": the lamps");
+            frame.polyline(column(frame, t, 1), colour, "episode " + t.episode() + ": the lamps");
             frame.legend(row++, colour, "episode " + t.episode());
         }
         if (!traces.isEmpty()) {
             RoomScenarioRunner.Trace first = traces.getFirst();
-            frame.svg.polyline(column(frame, first, 2), "#999999", "just the zone that needs light (episode 1)");
-            frame.svg.polyline(column(frame, first, 3), "#cccccc", "every lamp on");
+            frame.polyline(column(frame, first, 2), "#999999", "just the zone that needs light (episode 1)");
+            frame.polyline(column(frame, first, 3), "#cccccc", "every lamp on");
             frame.legend(row++, "#999999", "needed zone only");
             frame.legend(row++, "#cccccc", "every lamp on");
             double x = frame.px(first.teacherLeftS());
-            frame.svg.line(x, PlotFrame.TOP, x, PlotFrame.TOP + PlotFrame.plotHeight(), PlotFrame.AXIS, 1);
-            frame.svg.text(x + 4, PlotFrame.TOP + 12, "start", 11, "the teacher leaves", false);
+            frame.line(x, PlotFrame.TOP, x, PlotFrame.TOP + PlotFrame.plotHeight(), PlotFrame.AXIS, 1);
+            frame.text(x + 4, PlotFrame.TOP + 12, "start", 11, "the teacher leaves", false);
         }
-        return frame.svg.render();
+        return frame.render();
     }
 
     private static List<double[]> column(PlotFrame frame, RoomScenarioRunner.Trace t, int column) {

@@ -89,7 +89,7 @@ final class ScenarioRunner {
         return episodes;
     }
 
-    private List<String> simCommand(int truthPort) {
+    private List<String> simCommand(int truthPort) throws IOException {
         ScenarioFile sc = o.scenario();
         List<String> args = new ArrayList<>(List.of("sim", sc.robot(), "--world", sc.world(), "--speed", fmt(o.speed()),
                 "--seed", "" + o.seed(), "--truth-port", "" + truthPort, "--teacher", "off"));

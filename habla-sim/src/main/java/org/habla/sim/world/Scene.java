@@ -96,8 +96,8 @@ public final class Scene implements SimClock.Stepper {
         return o;
     }
 
-    /** Where everything is now. */
-    public GroundTruth truth() {
+    /** Where everything is now; under the scene's lock, so a line never has a new episode with the old pose. */
+    public synchronized GroundTruth truth() {
         Pose2 robot = body.pose();
         Target t = target;
         double distance = Math.max(0, t.surfaceDistance(robot.xM(), robot.yM()) - body.limits().radiusM());

@@ -59,6 +59,7 @@ final class McapCheck {
             case RecordedEvent.WriterLeft w -> "/habla/left";
             case RecordedEvent.Tick k -> "/habla/tick";
             case RecordedEvent.Dropped d -> "/habla/dropped";
+            case RecordedEvent.Audit a -> "/habla/audit";
             case RecordedEvent.End x -> "/habla/end";
         };
     }

@@ -39,7 +39,7 @@ class RoomEndToEndTest {
         ObjectNode root = (ObjectNode) JSON.readTree(CONFIG.toFile());
         root.remove("$schema");
         ((ObjectNode) root.get("interfaces").get(0)).put("address", "127.0.0.1:" + brokerPort);
-        ((ObjectNode) root.get("status")).put("port", 0);
+        ((ObjectNode) root.get("status")).put("port", 0).put("monitorPort", 0); // a daemon on this machine may hold 7098
         List<String> names = List.of("occupancy", "light", "comfort", "reward", "action");
         for (JsonNode m : root.get("methods")) {
             if (m.has("expose")) {

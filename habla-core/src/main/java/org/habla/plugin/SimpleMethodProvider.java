@@ -1,4 +1,4 @@
-package org.habla.method.builtin;
+package org.habla.plugin;
 
 import java.util.EnumSet;
 import java.util.Objects;
@@ -6,7 +6,6 @@ import java.util.Set;
 import java.util.function.BiFunction;
 import org.habla.method.Layer;
 import org.habla.method.Method;
-import org.habla.plugin.MethodProvider;
 
 /**
  * A method provider made of its parts: a name, a sentence, the layers and a factory. A concrete
