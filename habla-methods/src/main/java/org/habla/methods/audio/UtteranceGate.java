@@ -21,6 +21,10 @@ public final class UtteranceGate {
     /** The detector's frame: short, so the end of speech is seen within this much. */
     public static final double FRAME_MS = 10;
 
+    /** A finished segment: its samples, its number (counting from 1) and how much of it was speech. */
+    public record Segment(double[] samples, long number, double loudMs) {
+    }
+
     /** The gate's settings, in milliseconds and dB. */
     public record Settings(VoiceActivityDetector.Settings detector, double closeBelowOpenDb, double peakRangeDb,
             double hangoverMs, double prerollMs, double minLoudMs, double maxSegmentMs) {
@@ -41,6 +45,7 @@ public final class UtteranceGate {
     private double loudMs;
     private double quietMs;
     private double openMs;
+    private long segments;
 
     public UtteranceGate(int rateHz, Settings settings) {
         this.frameLength = Math.max(1, (int) Math.round(FRAME_MS * rateHz / 1000));
@@ -62,7 +67,37 @@ public final class UtteranceGate {
 
     /** Takes the next samples of the stream (any number); returns the segments (mono samples) they finish. */
     public List<double[]> offer(double[] samples) {
-        List<double[]> done = new ArrayList<>(1);
+        return offerSegments(samples).stream().map(Segment::samples).toList();
+    }
+
+    /** The number of the segment open now or last opened (0 before the first). */
+    public long segmentNumber() {
+        return segments;
+    }
+
+    /** Speech heard so far in the open segment, in ms. */
+    public double loudMs() {
+        return isOpen ? loudMs : 0;
+    }
+
+    /** How long the open segment has been without speech, in ms (0 while speech goes on or the gate is shut). */
+    public double quietMs() {
+        return isOpen ? quietMs : 0;
+    }
+
+    /** How far the open segment's loudest frame stands above the noise floor, in dB (0 when the gate is shut). */
+    public double peakAboveFloorDb() {
+        return isOpen ? peakDb - detector.floorDb() : 0;
+    }
+
+    /** The audio of the open segment so far (pre-roll included); empty when the gate is shut. */
+    public double[] soFar() {
+        return isOpen ? joined() : new double[0];
+    }
+
+    /** As {@link #offer}, with each segment's number and speech. */
+    public List<Segment> offerSegments(double[] samples) {
+        List<Segment> done = new ArrayList<>(1);
         int at = 0;
         while (at < samples.length) {
             int take = Math.min(frameLength - fill, samples.length - at);
@@ -79,7 +114,7 @@ public final class UtteranceGate {
         return done;
     }
 
-    private Optional<double[]> offerFrame(double[] frame) {
+    private Optional<Segment> offerFrame(double[] frame) {
         double db = detector.bandLevelDb(frame);
         boolean speech = detector.isSpeech(db);
         if (!isOpen) {
@@ -91,6 +126,7 @@ public final class UtteranceGate {
                 return Optional.empty();
             }
             isOpen = true;
+            segments++;
             open.addAll(preroll);
             preroll.clear();
             openThresholdDb = detector.openThresholdDb();
@@ -115,18 +151,35 @@ public final class UtteranceGate {
         return Optional.empty();
     }
 
-    /** Ends a segment in progress (the stream stopped or changed format); empty if none or too short. */
-    public Optional<double[]> flush() {
-        return isOpen ? close() : Optional.empty();
+    /**
+     * Ends the open segment here without giving it out (its listener has already dealt with it, e.g. heard
+     * a whole phrase in it before the hangover ran out); speech after this opens a new one.
+     */
+    public void cut() {
+        if (isOpen) {
+            isOpen = false;
+            open.clear();
+            preroll.clear();
+        }
     }
 
-    private Optional<double[]> close() {
+    /** Ends a segment in progress (the stream stopped or changed format); empty if none or too short. */
+    public Optional<double[]> flush() {
+        return isOpen ? close().map(Segment::samples) : Optional.empty();
+    }
+
+    private Optional<Segment> close() {
         isOpen = false;
+        double[] joined = joined();
+        open.clear();
+        return loudMs >= settings.minLoudMs() ? Optional.of(new Segment(joined, segments, loudMs)) : Optional.empty();
+    }
+
+    private double[] joined() {
         double[] joined = new double[open.size() * frameLength];
         for (int i = 0; i < open.size(); i++) {
             System.arraycopy(open.get(i), 0, joined, i * frameLength, frameLength);
         }
-        open.clear();
-        return loudMs >= settings.minLoudMs() ? Optional.of(joined) : Optional.empty();
+        return joined;
     }
 }

@@ -111,7 +111,7 @@ public final class Enrolment {
             int frames = SphinxDecoder.writeAdaptation(settings, utterances, said, candidate);
             int before = right(SphinxDecoder.load(settings, Optional.empty()), said, params.minConfidence());
             int after = right(SphinxDecoder.load(settings, Optional.of(candidate)), said, params.minConfidence());
-            boolean write = force || after > before;
+            boolean write = force || after >= before;
             if (write) {
                 Path parent = out.toAbsolutePath().getParent();
                 if (parent != null) {

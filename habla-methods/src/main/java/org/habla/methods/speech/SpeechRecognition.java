@@ -48,8 +48,35 @@ public final class SpeechRecognition extends ProcessingMethod {
     /** Prior of each phone of the free phone loop (Sphinx's out-of-grammar branch and the confidence search). */
     static final double PHONE_INSERTION = 0.05;
 
-    /** An utterance waiting for the decoder, with the source time of its last audio. */
-    private record Pending(AudioChunk audio, long sourceMicros) {
+    /** The pause after speech at which the utterance so far is decoded, in case it is over (audio input). */
+    static final double SPECULATE_AFTER_MS = 30;
+
+    /**
+     * An utterance waiting for the decoder, with the source time of its last audio; a speculative one
+     * (the audio input's utterance so far, taken at a pause) carries its {@link Speculation}.
+     */
+    private record Pending(AudioChunk audio, long sourceMicros, Speculation speculation) {
+    }
+
+    /**
+     * The decoding of the audio input's open utterance, taken at its first pause: said as soon as the
+     * pause reaches {@code endpointMs}, dropped if speech resumes first.
+     */
+    private static final class Speculation {
+        final long segment;
+        final double loudMs;
+        boolean decoded;
+        boolean resumed;
+        boolean decided;
+        /** Set when the utterance ended before this was decoded: its end's time, and its whole audio. */
+        Pending ended;
+        double[] whole;
+        Optional<SphinxDecoder.Decoded> result = Optional.empty();
+
+        Speculation(long segment, double loudMs) {
+            this.segment = segment;
+            this.loudMs = loudMs;
+        }
     }
 
     private final SpeechRecognitionParams params;
@@ -69,6 +96,10 @@ public final class SpeechRecognition extends ProcessingMethod {
     private long rejected;
     private AudioFormat streamFormat;
     private UtteranceGate gate;
+    private Speculation speculation;
+    private long early;
+    /** The source time of the audio input's latest chunk. */
+    private long lastMicros;
 
     SpeechRecognition(SpeechRecognitionParams params) {
         this.params = params;
@@ -90,31 +121,107 @@ public final class SpeechRecognition extends ProcessingMethod {
 
     private void onSegment(AudioChunk chunk, Sample sample) {
         double[] mono = MonoAudio.resample(MonoAudio.mix(chunk), chunk.format().sampleRateHz(), SPHINX_RATE_HZ);
-        enqueue(mono, sample.sourceMicros());
+        enqueue(mono, sample.sourceMicros(), null);
     }
 
     private void onAudio(AudioChunk chunk, Sample sample) {
+        lastMicros = sample.sourceMicros();
         if (!chunk.format().equals(streamFormat)) {
             streamFormat = chunk.format();
             gate = new UtteranceGate(streamFormat.sampleRateHz(), params.gate());
+            speculation = null;
         }
-        for (double[] utterance : gate.offer(MonoAudio.mix(chunk))) {
-            enqueue(MonoAudio.resample(utterance, streamFormat.sampleRateHz(), SPHINX_RATE_HZ), sample.sourceMicros());
+        for (UtteranceGate.Segment segment : gate.offerSegments(MonoAudio.mix(chunk))) {
+            double[] whole = MonoAudio.resample(segment.samples(), streamFormat.sampleRateHz(), SPHINX_RATE_HZ);
+            Speculation s = speculation;
+            if (s != null && s.segment == segment.number()) {
+                speculation = null;
+                if (!s.resumed && s.loudMs == segment.loudMs()) {
+                    // the speculation heard the whole utterance: its result is the utterance's
+                    if (s.decided) {
+                        continue;
+                    }
+                    if (!s.decoded) {
+                        s.ended = new Pending(null, sample.sourceMicros(), null);
+                        s.whole = whole;
+                        continue;
+                    }
+                    if (decide(s, sample.sourceMicros())) {
+                        continue;
+                    }
+                } else {
+                    s.resumed = true;
+                }
+            }
+            enqueue(whole, sample.sourceMicros(), null);
+        }
+        speculate(sample.sourceMicros());
+    }
+
+    /**
+     * While the hangover runs: decodes the utterance so far at its first pause, drops that decoding if
+     * speech resumes, and says its phrase once the pause reaches {@code endpointMs}.
+     */
+    private void speculate(long sourceMicros) {
+        if (params.endpointMs() >= params.hangoverMs() || !gate.isOpen()) {
+            return;
+        }
+        Speculation s = speculation;
+        if (s != null && (s.segment != gate.segmentNumber() || gate.loudMs() > s.loudMs)) {
+            s.resumed = true;
+            speculation = null;
+            s = null;
+        }
+        if (s == null && gate.quietMs() >= SPECULATE_AFTER_MS
+                && gate.peakAboveFloorDb() >= params.endpointAboveFloorDb()) {
+            s = new Speculation(gate.segmentNumber(), gate.loudMs());
+            speculation = s;
+            double[] soFar = MonoAudio.resample(gate.soFar(), streamFormat.sampleRateHz(), SPHINX_RATE_HZ);
+            if (!enqueue(soFar, sourceMicros, s)) {
+                // nothing worth decoding yet: the utterance is decoded whole when it ends
+                s.decoded = true;
+            }
+            return;
+        }
+        if (s != null && s.decoded && !s.decided && gate.quietMs() >= params.endpointMs()) {
+            decide(s, sourceMicros);
         }
     }
 
-    private void enqueue(double[] whole, long sourceMicros) {
+    /**
+     * Says a speculation's phrase if it has one with confidence enough; returns whether it did. A
+     * speculation that heard nothing leaves the utterance to be decoded whole when it ends.
+     */
+    private boolean decide(Speculation s, long sourceMicros) {
+        if (s.result.isEmpty() || s.result.get().confidence() < params.minConfidence()) {
+            return false;
+        }
+        s.decided = true;
+        if (s == speculation && gate.isOpen() && gate.segmentNumber() == s.segment) {
+            // the phrase is over: what the speaker says next is a new utterance
+            gate.cut();
+            speculation = null;
+            early++;
+        }
+        publish(s.result.get(), s.result.get().audioMs(), sourceMicros);
+        return true;
+    }
+
+    /** Trims and checks an utterance and queues it for the decoder; false if it is not worth decoding. */
+    private boolean enqueue(double[] whole, long sourceMicros, Speculation speculation) {
         double[] mono16k = UtteranceTrim.trim(whole, SPHINX_RATE_HZ);
         if (mono16k.length < SPHINX_RATE_HZ * MIN_UTTERANCE_MS / 1000) {
-            return;
+            return false;
         }
         if (!voice.hasVoice(mono16k, SPHINX_RATE_HZ)) {
-            unvoiced++;
-            log().debug("{}: an utterance without a voice in it is not decoded ({} so far)", id(), unvoiced);
-            return;
+            if (speculation == null) {
+                unvoiced++;
+                log().debug("{}: an utterance without a voice in it is not decoded ({} so far)", id(), unvoiced);
+            }
+            return false;
         }
         AudioChunk utterance = MonoAudio.chunk(mono16k, SPHINX_RATE_HZ);
-        pending.addLast(new Pending(utterance, sourceMicros));
+        pending.addLast(new Pending(utterance, sourceMicros, speculation));
         while (pending.size() > params.maxPending()) {
             pending.removeFirst();
             dropped++;
@@ -122,10 +229,19 @@ public final class SpeechRecognition extends ProcessingMethod {
                     dropped, params.maxPending());
         }
         decodeNext();
+        return true;
     }
 
     private void decodeNext() {
-        if (decoder == null || busy || pending.isEmpty()) {
+        if (decoder == null || busy) {
+            return;
+        }
+        // a speculation overtaken by the speaker is not worth the decoder's time
+        while (!pending.isEmpty() && pending.peekFirst().speculation() != null
+                && (pending.peekFirst().speculation().resumed || pending.peekFirst().speculation().decided)) {
+            pending.removeFirst();
+        }
+        if (pending.isEmpty()) {
             return;
         }
         busy = true;
@@ -133,9 +249,28 @@ public final class SpeechRecognition extends ProcessingMethod {
         SphinxDecoder d = decoder;
         background("recognise an utterance", () -> decodeOrSkip(d, next.audio()), decoded -> {
             busy = false;
+            Speculation s = next.speculation();
+            if (s != null) {
+                s.decoded = true;
+                s.result = decoded;
+                if (!s.resumed && !s.decided) {
+                    if (s.ended != null) {
+                        // the utterance ended while this was decoded: its phrase, or else the whole utterance decoded
+                        if (!decide(s, s.ended.sourceMicros())) {
+                            s.decided = true;
+                            enqueue(s.whole, s.ended.sourceMicros(), null);
+                            return;
+                        }
+                    } else if (s == speculation && gate.quietMs() >= params.endpointMs()) {
+                        decide(s, lastMicros);
+                    }
+                }
+                decodeNext();
+                return;
+            }
             decoded.ifPresent(r -> {
                 if (r.confidence() >= params.minConfidence()) {
-                    publish(r, next);
+                    publish(r, r.audioMs(), next.sourceMicros());
                 } else {
                     rejected++;
                     log().debug("{}: '{}' heard with confidence {} < minConfidence {}: nothing said", id(), r.phrase(),
@@ -160,17 +295,21 @@ public final class SpeechRecognition extends ProcessingMethod {
         }
     }
 
-    private void publish(SphinxDecoder.Decoded r, Pending utterance) {
+    private void publish(SphinxDecoder.Decoded r, long audioMs, long sourceMicros) {
         recognised++;
-        long audioMs = utterance.audio().frameCount() * 1000L / SPHINX_RATE_HZ;
-        emit(words, new TextValue(r.phrase()), utterance.sourceMicros());
+        emit(words, new TextValue(r.phrase()), sourceMicros);
         emit(result, RecordValue.builder()
                 .put("phrase", r.phrase())
                 .put("confidence", Math.round(r.confidence() * 1000) / 1000.0)
                 .put("timeMs", r.decodeMs())
                 .put("audioMs", audioMs)
                 .put("score", r.score())
-                .build(), utterance.sourceMicros());
+                .build(), sourceMicros);
+    }
+
+    /** Phrases said at an early endpoint, before the hangover ended the utterance. */
+    public long earlyPhrases() {
+        return early;
     }
 
     /** Utterances dropped because too many waited. */
@@ -191,7 +330,8 @@ public final class SpeechRecognition extends ProcessingMethod {
     /** The decoder's settings from the params (the bundled grammar copied to a file when none is named). */
     static SphinxDecoder.Settings settings(SpeechRecognitionParams p) throws java.io.IOException {
         Path grammar = p.grammar().isEmpty() ? SphinxDecoder.bundledGrammar() : Path.of(p.grammar());
-        return new SphinxDecoder.Settings(grammar, p.denoise(), p.outOfGrammarProbability(), PHONE_INSERTION);
+        return new SphinxDecoder.Settings(grammar, p.denoise(), p.outOfGrammarProbability(), PHONE_INSERTION,
+                p.garbagePrior());
     }
 
     /** Utterances in which a phrase was recognised. */

@@ -24,6 +24,10 @@ public record SpeechRecognitionParams(
                 + "the more readily speech outside the grammar gives nothing; 0 (no branch) measured best",
                 defaultValue = "0")
         Double outOfGrammarProbability,
+        @Param(value = "Prior of each garbage word: near misses of the grammar's words from the pronouncing "
+                + "dictionary, and its words alone, searched beside the phrases; when one wins, nothing is said. "
+                + "0: no garbage words", defaultValue = "0.001")
+        Double garbagePrior,
         @Param(value = "Noise removal in Sphinx's front end (spectral noise estimate subtracted per mel band)",
                 defaultValue = "true")
         Boolean denoise,
@@ -41,6 +45,14 @@ public record SpeechRecognitionParams(
         @Param(value = "Endpointing of the audio input: how long without speech ends an utterance", unit = "ms",
                 defaultValue = "200")
         Double hangoverMs,
+        @Param(value = "Early endpoint of the audio input: a phrase decoded while the hangover runs is said once the "
+                + "pause is this long, unless speech resumed; at hangoverMs or above, only whole utterances are "
+                + "decoded", unit = "ms", defaultValue = "100")
+        Double endpointMs,
+        @Param(value = "Early endpoint of the audio input only for utterances whose loudest part stands this far above "
+                + "the noise floor: in more noise, pauses inside a phrase look like its end", unit = "dB",
+                defaultValue = "30")
+        Double endpointAboveFloorDb,
         @Param(value = "Queue length of the audio and segments inputs, in chunks", defaultValue = "256")
         Integer queue) {
 
@@ -52,42 +64,51 @@ public record SpeechRecognitionParams(
         adaptation = adaptation == null ? "" : adaptation.trim();
         minConfidence = ParamRules.within("minConfidence", minConfidence, 0.1, 0, 1);
         outOfGrammarProbability = ParamRules.within("outOfGrammarProbability", outOfGrammarProbability, 0, 0, 1);
+        garbagePrior = ParamRules.within("garbagePrior", garbagePrior, 0.001, 0, 1);
         denoise = denoise == null || denoise;
         maxPending = ParamRules.within("maxPending", maxPending, 4, 1, 1000);
         minVoicedMs = ParamRules.within("minVoicedMs", minVoicedMs, 80, 0, 5000);
         openAboveFloorDb = ParamRules.within("openAboveFloorDb", openAboveFloorDb, 10, 0, 80);
         minLevelDb = ParamRules.within("minLevelDb", minLevelDb, -55, -120, 0);
         hangoverMs = ParamRules.within("hangoverMs", hangoverMs, 200, 0, 5000);
+        endpointMs = ParamRules.within("endpointMs", endpointMs, 100, 0, 5000);
+        endpointAboveFloorDb = ParamRules.within("endpointAboveFloorDb", endpointAboveFloorDb, 30, 0, 200);
         queue = ParamRules.within("queue", queue, 256, 1, 65_536);
     }
 
     /** Every parameter at its default. */
     public static SpeechRecognitionParams defaults() {
-        return new SpeechRecognitionParams(null, null, null, null, null, null, null, null, null, null, null);
+        return new SpeechRecognitionParams(null, null, null, null, null, null, null, null, null, null, null, null, null, null);
     }
 
     /** These params with another grammar file. */
     public SpeechRecognitionParams withGrammar(String file) {
-        return new SpeechRecognitionParams(file, adaptation, minConfidence, outOfGrammarProbability, denoise,
-                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, queue);
+        return new SpeechRecognitionParams(file, adaptation, minConfidence, outOfGrammarProbability, garbagePrior, denoise,
+                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with a speaker's adaptation file. */
     public SpeechRecognitionParams withAdaptation(String file) {
-        return new SpeechRecognitionParams(grammar, file, minConfidence, outOfGrammarProbability, denoise,
-                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, queue);
+        return new SpeechRecognitionParams(grammar, file, minConfidence, outOfGrammarProbability, garbagePrior, denoise,
+                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with another confidence threshold. */
     public SpeechRecognitionParams withMinConfidence(double threshold) {
-        return new SpeechRecognitionParams(grammar, adaptation, threshold, outOfGrammarProbability, denoise,
-                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, queue);
+        return new SpeechRecognitionParams(grammar, adaptation, threshold, outOfGrammarProbability, garbagePrior, denoise,
+                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with another backlog. */
     public SpeechRecognitionParams withMaxPending(int n) {
-        return new SpeechRecognitionParams(grammar, adaptation, minConfidence, outOfGrammarProbability, denoise, n,
-                minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, queue);
+        return new SpeechRecognitionParams(grammar, adaptation, minConfidence, outOfGrammarProbability, garbagePrior, denoise, n,
+                minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
+    }
+
+    /** These params with another early endpoint (at hangoverMs or above: none). */
+    public SpeechRecognitionParams withEndpointMs(double ms) {
+        return new SpeechRecognitionParams(grammar, adaptation, minConfidence, outOfGrammarProbability, garbagePrior, denoise,
+                maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, ms, endpointAboveFloorDb, queue);
     }
 
     /** The adaptation file, if one is named. */

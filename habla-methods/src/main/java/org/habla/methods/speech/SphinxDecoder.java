@@ -1,13 +1,8 @@
 package org.habla.methods.speech;
 
-import edu.cmu.sphinx.api.SpeechResult;
-import edu.cmu.sphinx.decoder.adaptation.ClusteredDensityFileData;
-import edu.cmu.sphinx.decoder.adaptation.Stats;
-import edu.cmu.sphinx.decoder.adaptation.Transform;
 import edu.cmu.sphinx.decoder.search.Token;
 import edu.cmu.sphinx.frontend.util.StreamDataSource;
 import edu.cmu.sphinx.jsgf.JSGFGrammar;
-import edu.cmu.sphinx.linguist.acoustic.tiedstate.Loader;
 import edu.cmu.sphinx.linguist.acoustic.tiedstate.Sphinx3Loader;
 import edu.cmu.sphinx.recognizer.Recognizer;
 import edu.cmu.sphinx.result.Result;
@@ -23,6 +18,12 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Future;
+import java.util.concurrent.LinkedBlockingQueue;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.AudioFormat;
 
@@ -52,30 +53,53 @@ public final class SphinxDecoder {
     static final double DITHER_RMS = 10;
     private static final long DITHER_SEED = 16_000;
 
-    /** Regression classes of the speaker adaptation: one transform for all sounds, as few utterances support. */
-    static final int ADAPTATION_CLASSES = 1;
-
-    /** How Sphinx is set up: noise removal, the out-of-grammar branch, and the grammar. */
+    /**
+     * How Sphinx is set up: the grammar, noise removal, the out-of-grammar branch, and the prior of each
+     * garbage word ({@link GarbageWords}; 0: none).
+     */
     public record Settings(Path grammarFile, boolean denoise, double outOfGrammarProbability,
-            double phoneInsertionProbability) {
+            double phoneInsertionProbability, double garbagePrior) {
     }
 
     /** What Sphinx made of one utterance: a phrase of the grammar and its confidence. */
-    public record Decoded(String phrase, double confidence, double score, long decodeMs) {
+    public record Decoded(String phrase, double confidence, double score, long decodeMs, long audioMs) {
+    }
+
+    /**
+     * Sphinx-4's loggers named after its classes (outside its configurations' own, which the config sets
+     * to WARNING): held here so the level stays set, WARNING so decoding does not fill the log with
+     * INFO lines such as each utterance's cepstral mean.
+     */
+    private static final java.util.logging.Logger SPHINX_LOG = quiet(java.util.logging.Logger.getLogger("edu.cmu.sphinx"));
+
+    private static java.util.logging.Logger quiet(java.util.logging.Logger log) {
+        log.setLevel(java.util.logging.Level.WARNING);
+        return log;
     }
 
     private final ConfigurationManager cm;
+    private final ConfigurationManager phoneCm;
     private final Recognizer recognizer;
     private final Recognizer phoneRecognizer;
     private final StreamDataSource source;
+    private final StreamDataSource phoneSource;
     private final GrammarPhrases phrases;
     private final LogMath logMath = LogMath.getLogMath();
+    /**
+     * The free-phone search runs here while the grammar search runs on the caller's thread: one thread,
+     * ended when idle for {@link #PHONE_THREAD_IDLE_S} s, so a decoder no longer used leaves none behind.
+     */
+    private final ExecutorService phoneThread = phoneThread();
 
-    private SphinxDecoder(ConfigurationManager cm) {
+    private SphinxDecoder(ConfigurationManager cm, ConfigurationManager phoneCm) throws IOException {
         this.cm = cm;
+        this.phoneCm = phoneCm;
         this.recognizer = cm.lookup("recognizer");
-        this.phoneRecognizer = cm.lookup("phoneRecognizer");
+        // the free-phone linguist reads the model when it is made: load it first
+        phoneCm.<edu.cmu.sphinx.linguist.acoustic.AcousticModel>lookup("acousticModel").allocate();
+        this.phoneRecognizer = phoneCm.lookup("phoneRecognizer");
         this.source = cm.lookup("dataSource");
+        this.phoneSource = phoneCm.lookup("dataSource");
         recognizer.allocate();
         phoneRecognizer.allocate();
         JSGFGrammar grammar = cm.lookup("jsgfGrammar");
@@ -101,8 +125,11 @@ public final class SphinxDecoder {
     public static SphinxDecoder load(Settings settings, Optional<Path> adaptation) throws IOException {
         Path file = settings.grammarFile().toAbsolutePath().normalize();
         Map<String, String> values = values(settings);
+        Map<String, String> phoneValues = new java.util.HashMap<>(values);
+        phoneValues.put("useCDUnits", "false");
         try {
-            SphinxDecoder d = new SphinxDecoder(new ConfigurationManager(writeConfig(values).toUri().toURL()));
+            SphinxDecoder d = new SphinxDecoder(new ConfigurationManager(writeConfig(values).toUri().toURL()),
+                    new ConfigurationManager(writeConfig(phoneValues).toUri().toURL()));
             if (adaptation.isPresent()) {
                 d.adapt(adaptation.get());
             }
@@ -120,8 +147,31 @@ public final class SphinxDecoder {
         }
         String fileName = file.getFileName().toString();
         String name = fileName.endsWith(".gram") ? fileName.substring(0, fileName.length() - 5) : fileName;
+        String addenda = "";
+        if (settings.garbagePrior() > 0) {
+            // the grammar, and the grammars beside it it may import, copied with the garbage words added
+            Path copy = Files.createTempDirectory("habla-grammar");
+            copy.toFile().deleteOnExit();
+            try (var siblings = Files.list(file.getParent())) {
+                for (Path g : siblings.filter(p -> p.toString().endsWith(".gram")).toList()) {
+                    Files.copy(g, copy.resolve(g.getFileName()));
+                    copy.resolve(g.getFileName()).toFile().deleteOnExit();
+                }
+            }
+            String jsgf = Files.readString(file, StandardCharsets.UTF_8);
+            Map<String, List<String>> garbage = GarbageWords.of(GarbageWords.grammarWords(jsgf), dictionary());
+            Files.writeString(copy.resolve(fileName), GarbageWords.augment(jsgf, garbage.keySet(),
+                    settings.garbagePrior()), StandardCharsets.UTF_8);
+            Path addendum = copy.resolve("garbage.dict");
+            Files.writeString(addendum, GarbageWords.addendum(garbage), StandardCharsets.UTF_8);
+            addendum.toFile().deleteOnExit();
+            addenda = "<property name=\"addenda\" value=\"" + addendum.toUri().toURL() + "\"/>";
+            file = copy.resolve(fileName);
+        }
         String dir = file.getParent().toUri().toURL().toString();
         return Map.ofEntries(
+                Map.entry("addenda", addenda),
+                Map.entry("useCDUnits", "true"),
                 Map.entry("absoluteBeamWidth", "20000"),
                 Map.entry("relativeBeamWidth", "1e-60"),
                 Map.entry("wordInsertionProbability", "0.1"),
@@ -136,6 +186,22 @@ public final class SphinxDecoder {
                 Map.entry("acousticModel", ACOUSTIC_MODEL),
                 Map.entry("denoise", settings.denoise() ? "<item>denoise</item>" : ""),
                 Map.entry("cmn", "edu.cmu.sphinx.frontend.feature.BatchCMN"));
+    }
+
+    private static Map<String, List<List<String>>> dictionary;
+
+    /** The pronouncing dictionary of the model, read once. */
+    private static synchronized Map<String, List<List<String>>> dictionary() throws IOException {
+        if (dictionary == null) {
+            String resource = DICTIONARY.substring("resource:".length());
+            try (InputStream in = SphinxDecoder.class.getResourceAsStream(resource)) {
+                if (in == null) {
+                    throw new IOException("the pronouncing dictionary " + resource + " is missing from the class path");
+                }
+                dictionary = GarbageWords.readDictionary(in);
+            }
+        }
+        return dictionary;
     }
 
     private static Path writeConfig(Map<String, String> values) throws IOException {
@@ -157,12 +223,11 @@ public final class SphinxDecoder {
 
     /** Applies a speaker's MLLR transform (written by {@link #writeAdaptation}) to the loaded model's means. */
     private void adapt(Path transformFile) throws IOException {
-        Loader loader = cm.lookup("acousticModelLoader");
         try {
-            Transform t = new Transform((Sphinx3Loader) loader, ADAPTATION_CLASSES);
-            t.load(transformFile.toString());
-            loader.update(t, new ClusteredDensityFileData(loader, ADAPTATION_CLASSES));
-        } catch (Exception e) {
+            Mllr transform = Mllr.read(transformFile);
+            transform.apply(cm.lookup("acousticModelLoader"));
+            transform.apply(phoneCm.lookup("acousticModelLoader"));
+        } catch (IOException e) {
             throw new IOException("cannot apply the adaptation " + transformFile + ": " + e.getMessage(), e);
         }
     }
@@ -174,6 +239,11 @@ public final class SphinxDecoder {
      */
     public static int writeAdaptation(Settings settings, List<AudioChunk> utterances, List<String> phrases, Path out)
             throws IOException {
+        return writeAdaptation(settings, utterances, phrases, out, Mllr.PRIOR_FRAMES);
+    }
+
+    static int writeAdaptation(Settings settings, List<AudioChunk> utterances, List<String> phrases, Path out,
+            double priorFrames) throws IOException {
         if (utterances.size() != phrases.size()) {
             throw new IllegalArgumentException(utterances.size() + " utterances but " + phrases.size() + " phrases");
         }
@@ -181,11 +251,11 @@ public final class SphinxDecoder {
         Recognizer aligner = cm.lookup("alignRecognizer");
         edu.cmu.sphinx.linguist.language.grammar.AlignerGrammar grammar = cm.lookup("alignerGrammar");
         StreamDataSource source = cm.lookup("dataSource");
-        Loader loader = cm.lookup("acousticModelLoader");
+        Sphinx3Loader loader = cm.lookup("acousticModelLoader");
         try {
             // the grammar of each utterance is its phrase; the linguist compiles it again when it changes
             aligner.allocate();
-            Stats stats = new Stats(loader, new ClusteredDensityFileData(loader, ADAPTATION_CLASSES));
+            Mllr.Stats stats = new Mllr.Stats(loader);
             int aligned = 0;
             for (int i = 0; i < utterances.size(); i++) {
                 grammar.setWords(List.of(phrases.get(i).trim().split("\\s+")));
@@ -195,21 +265,21 @@ public final class SphinxDecoder {
                     // the rest of the stream
                 }
                 // the aligner's grammar is the phrase alone: its best path is the alignment
-                if (r != null && r.getBestToken() != null) {
-                    stats.collect(new SpeechResult(r));
+                Token end = r == null ? null : r.getBestFinalToken() != null ? r.getBestFinalToken() : r.getBestToken();
+                if (end != null) {
+                    stats.collect(end);
                     aligned++;
                 }
             }
             if (aligned == 0) {
                 throw new IOException("none of the " + utterances.size() + " utterances could be aligned to its phrase");
             }
-            Transform t = stats.createTransform();
             Path parent = out.toAbsolutePath().getParent();
             if (parent != null) {
                 Files.createDirectories(parent);
             }
-            t.store(out.toString(), 0);
-            return stats.getFrames();
+            stats.estimate(priorFrames).write(out);
+            return stats.frames();
         } catch (IOException e) {
             throw e;
         } catch (Exception e) {
@@ -240,17 +310,23 @@ public final class SphinxDecoder {
             throw new IllegalArgumentException("Sphinx needs 16 kHz mono 16-bit audio, got " + utterance.format());
         }
         long start = System.nanoTime();
-        Result r = search(recognizer, utterance);
+        Future<Result> free = phoneThread.submit(() -> search(phoneRecognizer, phoneSource, utterance));
+        Result r;
+        Result freeResult;
+        try {
+            r = search(recognizer, source, utterance);
+        } finally {
+            freeResult = await(free);
+        }
         Token best = r == null ? null : r.getBestFinalToken();
         if (best == null) {
             return Optional.empty();
         }
         List<String> words = words(best);
-        if (!phrases.accepts(words)) {
+        if (words.stream().anyMatch(GarbageWords::isGarbage) || !phrases.accepts(words)) {
             return Optional.empty();
         }
-        Result free = search(phoneRecognizer, utterance);
-        Token phones = free == null ? null : free.getBestToken();
+        Token phones = freeResult == null ? null : freeResult.getBestToken();
         double[] g = acoustic(best);
         double confidence = 1;
         if (phones != null && g[1] > 0) {
@@ -259,10 +335,45 @@ public final class SphinxDecoder {
             confidence = Math.min(1, Math.exp(perFrame));
         }
         long ms = (System.nanoTime() - start) / 1_000_000;
-        return Optional.of(new Decoded(String.join(" ", words), confidence, best.getScore(), ms));
+        return Optional.of(new Decoded(String.join(" ", words), confidence, best.getScore(), ms,
+                utterance.frameCount() * 1000L / utterance.format().sampleRateHz()));
     }
 
-    private Result search(Recognizer which, AudioChunk utterance) {
+    /** The free-phone search's result, once it is done (it always ends: its stream is in memory). */
+    private static Result await(Future<Result> search) {
+        boolean interrupted = false;
+        try {
+            while (true) {
+                try {
+                    return search.get();
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                } catch (ExecutionException e) {
+                    throw e.getCause() instanceof RuntimeException re ? re
+                            : new IllegalStateException("the free-phone search failed", e.getCause());
+                }
+            }
+        } finally {
+            if (interrupted) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    static final long PHONE_THREAD_IDLE_S = 10;
+
+    private static ExecutorService phoneThread() {
+        ThreadPoolExecutor pool = new ThreadPoolExecutor(1, 1, PHONE_THREAD_IDLE_S, TimeUnit.SECONDS,
+                new LinkedBlockingQueue<>(), r -> {
+                    Thread t = new Thread(r, "habla-sphinx-phones");
+                    t.setDaemon(true);
+                    return t;
+                });
+        pool.allowCoreThreadTimeOut(true);
+        return pool;
+    }
+
+    private static Result search(Recognizer which, StreamDataSource source, AudioChunk utterance) {
         source.setInputStream(new ByteArrayInputStream(dithered(utterance)));
         Result last = null;
         Result r;

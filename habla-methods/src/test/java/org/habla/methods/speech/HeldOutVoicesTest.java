@@ -41,7 +41,10 @@ class HeldOutVoicesTest {
         assertThat(all.outOfGrammarRejected).as("out-of-grammar words that gave nothing").isGreaterThanOrEqualTo(MIN_SILENT);
     }
 
-    /** What the chain reached when this test was written (10 of 18, 1 of 8), less a margin: a regression shows. */
+    /**
+     * What the chain reached (10 of 18 and 1 of 8 when this test was written; 11 and 5 with the garbage
+     * words), less a margin: a regression shows.
+     */
     static final int MIN_RIGHT = 9;
-    static final int MIN_SILENT = 1;
+    static final int MIN_SILENT = 4;
 }

@@ -48,8 +48,11 @@ public final class SpeechBench {
         int enrolVoices = Integer.parseInt(option(a, "--enrol-voices", "8"));
         List<EvalSet.Voice> voices = EvalSet.read(set);
         List<EvalSet.Voice> heldOut = voices.stream().filter(EvalSet.Voice::heldOut).toList();
-        System.out.printf("Speech recognition, the chain of %s (audio-processing -> speech-recognition), on %d held-out "
-                + "voices (%s)%nnever used for tuning; %d tune voices not reported here.%n%n", config, heldOut.size(),
+        boolean direct = SpeechChain.direct(new ConfigLoader(PluginRegistry.discover()).load(config).method("speech")
+                .orElseThrow());
+        System.out.printf("Speech recognition, the chain of %s (%s), on %d held-out voices (%s)%nnever used for tuning; "
+                + "%d tune voices not reported here.%n%n", config, direct ? "microphone -> speech-recognition"
+                : "audio-processing -> speech-recognition", heldOut.size(),
                 String.join(", ", heldOut.stream().map(v -> v.name() + " (" + v.engine() + ")").toList()),
                 voices.size() - heldOut.size());
         if (a.contains("--latency-only")) {
@@ -91,8 +94,16 @@ public final class SpeechBench {
         System.out.printf("%-9s %4d/%-4d %6.1f %%   %4d/%-4d %6.1f %%   %-12d%n", "all", total.inGrammarRight,
                 total.inGrammar, total.accuracy(), total.outOfGrammarRejected, total.outOfGrammar, total.rejection(),
                 total.notInGrammar);
-        adaptation(config, heldOut.subList(0, Math.min(enrolVoices, heldOut.size())));
-        latency(config, heldOut.subList(0, Math.min(latencyVoices, heldOut.size())));
+        System.out.printf("out of grammar: the grammar's own words alone or out of order (\"go\", \"go left\") %d/%d "
+                + "gave nothing, other words and phrases %d/%d; load average %s%n", total.grammarWordItemsRejected,
+                total.grammarWordItems, total.outOfGrammarRejected - total.grammarWordItemsRejected,
+                total.outOfGrammar - total.grammarWordItems, loadAverage());
+        if (enrolVoices > 0) {
+            adaptation(config, heldOut.subList(0, Math.min(enrolVoices, heldOut.size())));
+        }
+        if (latencyVoices > 0) {
+            latency(config, heldOut.subList(0, Math.min(latencyVoices, heldOut.size())));
+        }
         System.exit(0);
     }
 
@@ -108,7 +119,7 @@ public final class SpeechBench {
         HablaConfig c = new ConfigLoader(registry).load(config);
         SpeechRecognitionParams base = (SpeechRecognitionParams) c.method("speech").orElseThrow().params();
         Record audioParams = c.method("audio").orElseThrow().params();
-        SpeechChain plain = SpeechChain.of(audioParams, base);
+        SpeechChain plain = SpeechChain.of(audioParams, base, SpeechChain.direct(c.method("speech").orElseThrow()));
         StreamScore[][] scores = new StreamScore[EvalSet.CONDITIONS.size()][2];
         for (StreamScore[] row : scores) {
             row[0] = new StreamScore();
@@ -134,7 +145,8 @@ public final class SpeechBench {
             Enrolment.Outcome o = enrolment.write(base, said, file, true);
             System.out.printf("  %s: enrolment phrases right %d/%d as it comes, %d/%d adapted%n", v.name(), o.rightBefore(),
                     o.phrases(), o.rightAfter(), o.phrases());
-            SpeechChain adapted = SpeechChain.of(audioParams, base.withAdaptation(file.toString()));
+            SpeechChain adapted = SpeechChain.of(audioParams, base.withAdaptation(file.toString()),
+                    SpeechChain.direct(c.method("speech").orElseThrow()));
             List<EvalSet.Item> rest = new ArrayList<>();
             for (int k = 0; k < EvalSet.CONDITIONS.size(); k++) {
                 String condition = EvalSet.CONDITIONS.get(k);
@@ -166,14 +178,17 @@ public final class SpeechBench {
                    "params": {"kind": "audio", "delivery": "queue", "capacity": 256}, "expose": {"port": %d, "name": "mic"}},
                   {"id": "audio", "type": "audio-processing", "layer": "processing", "inputs": {"audio": "mic.out"},
                    "params": %s},
-                  {"id": "speech", "type": "speech-recognition", "layer": "processing", "inputs": {"segments": "audio.segments"},
+                  {"id": "speech", "type": "speech-recognition", "layer": "processing", "inputs": {%s},
                    "params": %s},
                   {"id": "words", "type": "pass-through", "layer": "virtual", "inputs": {"in": "speech.words"},
                    "params": {"kind": "text", "delivery": "queue"}, "expose": {"port": %d, "name": "words"}}]}
-                """.formatted(ports[0], ParamsJson.write(audio.params()), ParamsJson.write(speech.params()), ports[1]);
+                """.formatted(ports[0], ParamsJson.write(audio.params()),
+                SpeechChain.direct(speech) ? "\"audio\": \"mic.out\"" : "\"segments\": \"audio.segments\"",
+                ParamsJson.write(speech.params()), ports[1]);
         Daemon d = Daemon.start(new ConfigLoader(registry).parse(json, config.toAbsolutePath().getParent()), registry,
                 EngineClock.system());
         Histogram h = new Histogram(60_000_000L, 3);
+        java.util.Map<String, Histogram> byCondition = new java.util.LinkedHashMap<>();
         int right = 0;
         int items = 0;
         double audioS = 0;
@@ -228,7 +243,9 @@ public final class SpeechBench {
                         }
                         if (last != null && last.inGrammar() && last.text().equals(arrival[1])) {
                             right++;
-                            h.recordValue(Math.max(0, Math.round((atS - last.endS()) * 1e6)));
+                            long micros = Math.max(0, Math.round((atS - last.endS()) * 1e6));
+                            h.recordValue(micros);
+                            byCondition.computeIfAbsent(condition, k -> new Histogram(60_000_000L, 3)).recordValue(micros);
                         }
                     }
                     items += (int) its.stream().filter(EvalSet.Item::inGrammar).count();
@@ -240,8 +257,24 @@ public final class SpeechBench {
         System.out.printf("%nLatency through a daemon (sockets on loopback, %.0f s of held-out clean and noise20 speech "
                 + "played in real time in %d ms chunks): end of speech -> phrase on the socket, %d phrases right of %d%n",
                 audioS, CHUNK_MS, right, items);
-        System.out.printf("p50 %.0f ms   p90 %.0f ms   p99 %.0f ms   max %.0f ms%n", h.getValueAtPercentile(50) / 1e3,
-                h.getValueAtPercentile(90) / 1e3, h.getValueAtPercentile(99) / 1e3, h.getMaxValue() / 1e3);
+        System.out.printf("p50 %.0f ms   p90 %.0f ms   p99 %.0f ms   max %.0f ms   (speech-recognition fed by %s; "
+                + "load average %s)%n", h.getValueAtPercentile(50) / 1e3, h.getValueAtPercentile(90) / 1e3,
+                h.getValueAtPercentile(99) / 1e3, h.getMaxValue() / 1e3,
+                SpeechChain.direct(speech) ? "the microphone's stream, its own endpointing" : "audio-processing's segments",
+                loadAverage());
+        byCondition.forEach((condition, hc) -> System.out.printf("  %-8s %3d phrases right: p50 %.0f ms   p90 %.0f ms   "
+                + "max %.0f ms%n", condition, hc.getTotalCount(), hc.getValueAtPercentile(50) / 1e3,
+                hc.getValueAtPercentile(90) / 1e3, hc.getMaxValue() / 1e3));
+    }
+
+    /** The machine's load averages (1, 5, 15 min), as /proc/loadavg gives them. */
+    static String loadAverage() {
+        try {
+            String[] f = Files.readString(Path.of("/proc/loadavg")).trim().split("\\s+");
+            return f[0] + " " + f[1] + " " + f[2];
+        } catch (IOException e) {
+            return "unknown";
+        }
     }
 
     private static void drainReplies(Socket s) {

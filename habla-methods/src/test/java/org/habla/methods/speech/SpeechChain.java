@@ -25,7 +25,7 @@ import org.habla.sample.Sample;
 public final class SpeechChain {
 
     /** What the chain said, and when: the stream time (s) of the audio that ended the utterance. */
-    public record Heard(String phrase, double confidence, double atS) {
+    public record Heard(String phrase, double confidence, double atS, double decodeMs) {
     }
 
     private static final long BASE_MICROS = 1_000_000_000L;
@@ -33,10 +33,12 @@ public final class SpeechChain {
     private final MethodProvider<?> audioProvider;
     private final Record audioParams;
     private final MethodHarness speech;
+    private final boolean direct;
 
-    private SpeechChain(MethodProvider<?> audioProvider, Record audioParams, Method speech) {
+    private SpeechChain(MethodProvider<?> audioProvider, Record audioParams, Method speech, boolean direct) {
         this.audioProvider = audioProvider;
         this.audioParams = audioParams;
+        this.direct = direct;
         this.speech = MethodHarness.started("speech", speech);
         while (!this.speech.ready()) {
             if (this.speech.runBackground() == 0) {
@@ -53,7 +55,13 @@ public final class SpeechChain {
         MethodConfig audio = c.method(audioId).orElseThrow(() -> new IOException(config + " has no method " + audioId));
         MethodConfig speech = c.method(speechId).orElseThrow(() -> new IOException(config + " has no method " + speechId));
         MethodProvider<?> ap = registry.method(audio.type()).orElseThrow();
-        return new SpeechChain(ap, audio.params(), create(registry.method(speech.type()).orElseThrow(), speech.params()));
+        return new SpeechChain(ap, audio.params(), create(registry.method(speech.type()).orElseThrow(), speech.params()),
+                direct(speech));
+    }
+
+    /** Whether the config hands the microphone's stream to speech-recognition's own audio input. */
+    static boolean direct(MethodConfig speech) {
+        return speech.inputs().containsKey("audio");
     }
 
     /**
@@ -65,7 +73,7 @@ public final class SpeechChain {
         HablaConfig c = new ConfigLoader(registry).load(config);
         MethodConfig audio = c.method(audioId).orElseThrow();
         MethodConfig speech = c.method(speechId).orElseThrow();
-        return of(override(audio.params(), "ap."), override(speech.params(), "sr."));
+        return of(override(audio.params(), "ap."), override(speech.params(), "sr."), direct(speech));
     }
 
     private static Record override(Record r, String prefix) throws Exception {
@@ -85,11 +93,19 @@ public final class SpeechChain {
         return (Record) r.getClass().getDeclaredConstructor(types).newInstance(values);
     }
 
-    /** The chain with explicit params (for tuning). */
+    /** The chain with explicit params, audio-processing's segments feeding speech-recognition. */
     public static SpeechChain of(Record audioParams, Record speechParams) {
+        return of(audioParams, speechParams, false);
+    }
+
+    /**
+     * The chain with explicit params (for tuning): {@code direct}, the stream goes to speech-recognition's
+     * audio input; otherwise audio-processing's segments do.
+     */
+    public static SpeechChain of(Record audioParams, Record speechParams, boolean direct) {
         PluginRegistry registry = PluginRegistry.discover();
         return new SpeechChain(registry.method("audio-processing").orElseThrow(), audioParams,
-                create(registry.method("speech-recognition").orElseThrow(), speechParams));
+                create(registry.method("speech-recognition").orElseThrow(), speechParams), direct);
     }
 
     private static <P extends Record> Method create(MethodProvider<P> provider, Record params) {
@@ -100,6 +116,10 @@ public final class SpeechChain {
     public List<Heard> run(AudioChunk stream, int chunkMs) {
         MethodHarness audio = MethodHarness.started("audio", create(audioProvider, audioParams)).runBackgroundAtOnce();
         speech.clear();
+        if (direct) {
+            // a new stream: the recogniser's endpointing starts afresh, as when a microphone's format changes
+            speech.push("audio", AudioChunk.wrap(new org.habla.sample.AudioFormat(8_000, 1, 16), new byte[2]));
+        }
         int frame = stream.format().frameBytes();
         int chunkFrames = stream.format().sampleRateHz() * chunkMs / 1000;
         byte[] pcm = stream.pcm();
@@ -107,7 +127,12 @@ public final class SpeechChain {
         for (int at = 0; at < stream.frameCount(); at += chunkFrames) {
             int end = Math.min(stream.frameCount(), at + chunkFrames);
             byte[] part = java.util.Arrays.copyOfRange(pcm, at * frame, end * frame);
-            audio.push("audio", AudioChunk.wrap(stream.format(), part), BASE_MICROS + Math.round(end / rate * 1e6));
+            long micros = BASE_MICROS + Math.round(end / rate * 1e6);
+            if (direct) {
+                speech.push("audio", AudioChunk.wrap(stream.format(), part), micros);
+                continue;
+            }
+            audio.push("audio", AudioChunk.wrap(stream.format(), part), micros);
             for (Sample s : audio.samples("segments")) {
                 speech.push("segments", s.payload(), s.sourceMicros());
             }
@@ -116,7 +141,8 @@ public final class SpeechChain {
         List<Heard> heard = new ArrayList<>();
         for (Sample s : speech.samples("result")) {
             RecordValue r = (RecordValue) s.payload();
-            heard.add(new Heard(r.text("phrase"), r.has("confidence") ? r.number("confidence") : Double.NaN, (s.sourceMicros() - BASE_MICROS) / 1e6));
+            heard.add(new Heard(r.text("phrase"), r.has("confidence") ? r.number("confidence") : Double.NaN,
+                    (s.sourceMicros() - BASE_MICROS) / 1e6, r.has("timeMs") ? r.number("timeMs") : Double.NaN));
         }
         return heard;
     }

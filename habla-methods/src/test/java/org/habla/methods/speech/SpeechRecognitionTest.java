@@ -21,7 +21,6 @@ import org.habla.sample.RecordValue;
 import org.habla.sample.TextValue;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
-import org.junit.jupiter.api.io.TempDir;
 
 @TestInstance(TestInstance.Lifecycle.PER_CLASS)
 class SpeechRecognitionTest {
@@ -34,6 +33,25 @@ class SpeechRecognitionTest {
             withBundledGrammar = loaded(SpeechRecognitionParams.defaults());
         }
         return withBundledGrammar.clear();
+    }
+
+    /**
+     * One method with a grammar of three phrases, saying phrases only once the hangover has run (no early
+     * endpoint), loaded once for the tests that need it.
+     */
+    private MethodHarness turnsAfterHangover;
+
+    private MethodHarness turnsAfterHangover() throws Exception {
+        if (turnsAfterHangover == null) {
+            Path dir = Files.createTempDirectory("habla-turns");
+            Path grammar = dir.resolve("turns.gram");
+            Files.writeString(grammar, "#JSGF V1.0;\ngrammar turns;\npublic <turn> = turn left | turn right | stop;\n");
+            grammar.toFile().deleteOnExit();
+            dir.toFile().deleteOnExit();
+            turnsAfterHangover = loaded(SpeechRecognitionParams.defaults().withGrammar(grammar.toString())
+                    .withMaxPending(8).withEndpointMs(200));
+        }
+        return turnsAfterHangover.clear();
     }
 
     /** Starts the method and loads its model (the background task the engine would run). */
@@ -162,10 +180,8 @@ class SpeechRecognitionTest {
     }
 
     @Test
-    void cutsUtterancesOutOfAStreamAndListensOnlyForItsOwnGrammar(@TempDir Path dir) throws Exception {
-        Path grammar = dir.resolve("turns.gram");
-        Files.writeString(grammar, "#JSGF V1.0;\ngrammar turns;\npublic <turn> = turn left | turn right | stop;\n");
-        MethodHarness h = loaded(SpeechRecognitionParams.defaults().withGrammar(grammar.toString()).withMaxPending(8));
+    void cutsUtterancesOutOfAStreamAndListensOnlyForItsOwnGrammar() throws Exception {
+        MethodHarness h = turnsAfterHangover();
         List<Utterances.Utterance> all = Utterances.all();
         List<String> said = List.of("turn left", "stop", "turn right", "turn left");
         Random r = new Random(4);
@@ -203,6 +219,44 @@ class SpeechRecognitionTest {
         }
         System.out.printf("speech-recognition: from a 22.05 kHz stereo stream heard %s%n", h.values("words"));
         assertThat(h.values("words")).containsExactlyElementsOf(said.stream().map(TextValue::new).toList());
+    }
+
+    @Test
+    void aPhraseIsSaidAtTheEarlyEndpointWithoutWaitingForTheHangover() throws Exception {
+        Utterances.Utterance u = Utterances.all().get(9);
+        assertThat(u.phrase()).isEqualTo("turn right");
+        int[] early = streamUntilSaid(withBundledGrammar(), u);
+        int[] late = streamUntilSaid(turnsAfterHangover(), u);
+        System.out.printf("speech-recognition: '%s' said %d ms into the stream at the early endpoint, %d ms after the "
+                + "hangover%n", u.phrase(), early[0], late[0]);
+        assertThat(early[1]).as("phrases said at the early endpoint").isEqualTo(1);
+        assertThat(late[1]).as("phrases said after the hangover").isEqualTo(1);
+        // the early endpoint (100 ms of pause) comes before the hangover (200 ms) ends the utterance
+        assertThat(late[0] - early[0]).isGreaterThanOrEqualTo(60);
+    }
+
+    /**
+     * Streams faint noise, the utterance, and faint noise in 10 ms chunks into the method's audio input;
+     * returns the stream time (ms) at which its phrase was said and how many phrases were said in all.
+     */
+    private static int[] streamUntilSaid(MethodHarness h, Utterances.Utterance u) {
+        h.clear();
+        Random r = new Random(5);
+        double[] speech = u.audio().channel(0);
+        int lead = 8_000;
+        double[] x = noise(r, lead + speech.length + 16_000);
+        for (int i = 0; i < speech.length; i++) {
+            x[lead + i] += speech[i];
+        }
+        int saidAt = -1;
+        for (int at = 0; at < x.length; at += 160) {
+            h.push("audio", MonoAudio.chunk(java.util.Arrays.copyOfRange(x, at, Math.min(x.length, at + 160)), 16_000));
+            if (saidAt < 0 && !h.values("words").isEmpty()) {
+                assertThat(h.values("words")).containsExactly(new TextValue(u.phrase()));
+                saidAt = (at + 160) / 16;
+            }
+        }
+        return new int[] {saidAt, h.values("words").size()};
     }
 
     @Test

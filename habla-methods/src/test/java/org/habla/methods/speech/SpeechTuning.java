@@ -24,6 +24,7 @@ public final class SpeechTuning {
         SpeechChain chain = SpeechChain.fromConfigWithOverrides(Path.of(System.getProperty("habla.config", "config/aibo.json")),
                 "audio", "speech");
         boolean verbose = Boolean.getBoolean("verbose");
+        List<Double> decodeMs = new java.util.ArrayList<>();
         StreamScore all = new StreamScore();
         for (String condition : conditions) {
             StreamScore score = new StreamScore();
@@ -34,6 +35,7 @@ public final class SpeechTuning {
                 }
                 AudioChunk stream = Utterances.readWav(v.stream(condition));
                 List<SpeechChain.Heard> heard = chain.run(stream, 32);
+                heard.forEach(h -> decodeMs.add(h.decodeMs()));
                 StreamScore s = new StreamScore();
                 s.add(v.name(), v.items(), heard, GRAMMAR);
                 perVoice.put(v.name(), s.inGrammarRight + "/" + s.inGrammar + " oog " + s.outOfGrammarRejected + "/"
@@ -57,6 +59,11 @@ public final class SpeechTuning {
             all.add(score);
         }
         System.out.printf("all      %s%n", all);
+        List<Double> sorted = decodeMs.stream().sorted().toList();
+        if (!sorted.isEmpty()) {
+            System.out.printf("decoding time of the phrases said: p50 %.0f ms, p90 %.0f ms (load average %s)%n",
+                    sorted.get(sorted.size() / 2), sorted.get(sorted.size() * 9 / 10), SpeechBench.loadAverage());
+        }
         for (double t : new double[] {0.02, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.4, 0.5}) {
             System.out.println("         " + all.atThreshold(t));
         }

@@ -17,8 +17,13 @@ public final class StreamScore {
     public int outOfGrammar;
     public int outOfGrammarRejected;
     public int falseAlarms;
+    /** Out-of-grammar items made of the grammar's own words only ("go", "go left"), and those that gave nothing. */
+    public int grammarWordItems;
+    public int grammarWordItemsRejected;
     public int notInGrammar;
     public final List<String> misses = new ArrayList<>();
+    /** For each in-grammar item heard right: stream time from the end of its speech to the phrase, in ms. */
+    public final List<Double> delaysMs = new ArrayList<>();
     /** Per item: in the grammar?, the phrase said right (if in), and the confidences of what was said. */
     public final List<Object[]> outcomes = new ArrayList<>();
 
@@ -53,13 +58,23 @@ public final class StreamScore {
                 inGrammar++;
                 if (said.equals(List.of(item.text()))) {
                     inGrammarRight++;
+                    delaysMs.add((hs.get(0).atS() - item.endS()) * 1000);
                 } else {
                     misses.add(voice + ": '" + item.text() + "' -> " + said);
                 }
             } else {
                 outOfGrammar++;
+                Set<String> vocabulary = new java.util.HashSet<>();
+                grammar.forEach(p -> vocabulary.addAll(List.of(p.split(" "))));
+                boolean ownWords = vocabulary.containsAll(List.of(item.text().split(" ")));
+                if (ownWords) {
+                    grammarWordItems++;
+                }
                 if (said.isEmpty()) {
                     outOfGrammarRejected++;
+                    if (ownWords) {
+                        grammarWordItemsRejected++;
+                    }
                 } else {
                     misses.add(voice + ": (oog) '" + item.text() + "' -> " + said);
                 }
@@ -73,8 +88,11 @@ public final class StreamScore {
         outOfGrammar += other.outOfGrammar;
         outOfGrammarRejected += other.outOfGrammarRejected;
         falseAlarms += other.falseAlarms;
+        grammarWordItems += other.grammarWordItems;
+        grammarWordItemsRejected += other.grammarWordItemsRejected;
         notInGrammar += other.notInGrammar;
         misses.addAll(other.misses);
+        delaysMs.addAll(other.delaysMs);
         outcomes.addAll(other.outcomes);
     }
 
@@ -103,6 +121,15 @@ public final class StreamScore {
                 100.0 * rejected / Math.max(1, out));
     }
 
+    /** The median stream-time delay of the phrases heard right, in ms (NaN if none). */
+    public double medianDelayMs() {
+        if (delaysMs.isEmpty()) {
+            return Double.NaN;
+        }
+        List<Double> sorted = delaysMs.stream().sorted().toList();
+        return sorted.get(sorted.size() / 2);
+    }
+
     public double accuracy() {
         return inGrammar == 0 ? Double.NaN : 100.0 * inGrammarRight / inGrammar;
     }
@@ -114,7 +141,9 @@ public final class StreamScore {
     @Override
     public String toString() {
         return String.format("in-grammar %d/%d (%.1f%%), out-of-grammar rejected %d/%d (%.1f%%), false alarms %d, "
-                + "outside the grammar %d", inGrammarRight, inGrammar, accuracy(), outOfGrammarRejected, outOfGrammar,
-                rejection(), falseAlarms, notInGrammar);
+                + "outside the grammar %d, stream delay p50 %.0f ms; of the grammar's own words %d/%d silent, "
+                + "other words %d/%d", inGrammarRight, inGrammar, accuracy(), outOfGrammarRejected, outOfGrammar,
+                rejection(), falseAlarms, notInGrammar, medianDelayMs(), grammarWordItemsRejected, grammarWordItems,
+                outOfGrammarRejected - grammarWordItemsRejected, outOfGrammar - grammarWordItems);
     }
 }
