@@ -51,10 +51,13 @@ final class ControlLines implements AutoCloseable {
         return next(n -> n.path("type").asText().equals(type), "'" + type + "' line");
     }
 
-    /** The next staleness notice saying {@code stale}. */
+    /**
+     * The next line that says the socket's staleness is {@code stale}: a staleness notice, or the hello itself
+     * (a link that came up before this client connected sends no notice: its hello already says fresh).
+     */
     JsonNode staleness(boolean stale) throws IOException {
-        return next(n -> n.path("type").asText().equals("stale") && n.path("stale").asBoolean() == stale,
-                "a stale=" + stale + " notice");
+        return next(n -> (n.path("type").asText().equals("stale") || n.path("type").asText().equals("hello"))
+                && n.path("stale").isBoolean() && n.path("stale").asBoolean() == stale, "a stale=" + stale + " line");
     }
 
     void send(String line) throws IOException {
