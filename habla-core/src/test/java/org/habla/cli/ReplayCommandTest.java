@@ -50,6 +50,7 @@ class ReplayCommandTest {
         org.habla.graph.ManualClock clock = new org.habla.graph.ManualClock(1_000_000);
         com.fasterxml.jackson.databind.node.ObjectNode config =
                 com.fasterxml.jackson.databind.node.JsonNodeFactory.instance.objectNode().put("system", "x");
+        config.putObject("status").put("port", 0); // not 7099: a daemon running on this machine may hold it
         try (org.habla.recording.Recorder r = org.habla.recording.Recorder.create(whole,
                 new org.habla.recording.RecordingHeader(1_000_000, 1.0, config, "", java.util.Map.of()), clock)) {
             for (int i = 1; i <= 200; i++) {

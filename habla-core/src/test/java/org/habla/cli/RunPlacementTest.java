@@ -11,6 +11,7 @@ import org.habla.config.Limits;
 import org.habla.config.TestPlugins;
 import org.habla.graph.EngineClock;
 import org.habla.plugin.PluginRegistry;
+import org.habla.testing.DaemonProcess;
 import org.habla.worker.WorkerServer;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -31,6 +32,15 @@ class RunPlacementTest {
             // Only loopback: the file places 'action' on a lab computer, which this test must not try to reach.
             config.withArray("methods").forEach(m -> ((ObjectNode) m).remove("host"));
             ((ObjectNode) config.withArray("methods").get(1)).put("host", "127.0.0.1:" + worker.port());
+            // Free ports instead of the file's 7002, 7004, 7199: a daemon running on this machine may hold those.
+            int[] free = DaemonProcess.freePorts(config.withArray("methods").size() + 1);
+            int next = 0;
+            for (var m : config.withArray("methods")) {
+                if (m.has("expose")) {
+                    ((ObjectNode) m.get("expose")).put("port", free[next++]);
+                }
+            }
+            ((ObjectNode) config.get("status")).put("port", free[next]);
             Path file = dir.resolve("placed.json");
             Files.writeString(file, json.writeValueAsString(config));
 

@@ -165,7 +165,7 @@ class WorkerPlacementTest {
     @Test
     void theDaemonRefusesToStartWhenAWorkerCannotRunAMethodPlacedOnIt() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.audioOnly(), 0);
-        HablaConfig cfg = config(numbers("127.0.0.1:" + worker.port(), Fallback.NONE));
+        HablaConfig cfg = config(numbersOnFreePorts("127.0.0.1:" + worker.port(), Fallback.NONE));
         assertThatThrownBy(() -> Daemon.start(cfg, WorkerTestMethods.all(), EngineClock.system()))
                 .isInstanceOf(PlacementRefusedException.class)
                 .hasMessageContaining("method 'p' is placed on worker 127.0.0.1:" + worker.port())
@@ -184,7 +184,7 @@ class WorkerPlacementTest {
                     }
                 }
             });
-            HablaConfig cfg = config(numbers("127.0.0.1:" + fake.getLocalPort(), Fallback.LOCAL));
+            HablaConfig cfg = config(numbersOnFreePorts("127.0.0.1:" + fake.getLocalPort(), Fallback.LOCAL));
             assertThatThrownBy(() -> Daemon.start(cfg, WorkerTestMethods.all(), EngineClock.system()))
                     .isInstanceOf(PlacementRefusedException.class)
                     .hasMessageEndingWith("but the worker speaks habla-worker/2, this daemon habla-worker/1");
@@ -456,10 +456,20 @@ class WorkerPlacementTest {
 
     /** in (control) → p (scale ×3, on a worker) → out (exposed). */
     private static MethodConfig[] numbers(String host, Fallback fallback) {
+        return numbers(host, fallback, 7001, 7002);
+    }
+
+    /** The same with the sockets on free ports, for a whole daemon, which binds them (7001 may be a daemon's). */
+    private static MethodConfig[] numbersOnFreePorts(String host, Fallback fallback) throws java.io.IOException {
+        int[] free = org.habla.testing.DaemonProcess.freePorts(2);
+        return numbers(host, fallback, free[0], free[1]);
+    }
+
+    private static MethodConfig[] numbers(String host, Fallback fallback, int inPort, int outPort) {
         return new MethodConfig[] {
-            method("in", "number-source", Layer.VIRTUAL, Map.of("in", new Source.Control()), 7001),
+            method("in", "number-source", Layer.VIRTUAL, Map.of("in", new Source.Control()), inPort),
             placed("p", "scale", Map.of("in", out("in")), new WorkerTestMethods.ScaleParams(3), host, fallback),
-            method("out", "number-sink", Layer.VIRTUAL, Map.of("in", new Source.MethodOutput("p", "out")), 7002)};
+            method("out", "number-sink", Layer.VIRTUAL, Map.of("in", new Source.MethodOutput("p", "out")), outPort)};
     }
 
     private static Source out(String id) {
