@@ -150,6 +150,7 @@ class InterfaceLinkTest {
         toClose.add(robot);
         MethodGraph g = start(robot.port(), 0);
         assertThat(robot.awaitClient(WAIT_MS)).isTrue();
+        awaitUp(g); // a command written while the link is still coming up is dropped, not queued
         ControlPoint.Rejected rejected = org.assertj.core.api.Assertions.catchThrowableOfType(
                 ControlPoint.Rejected.class, () -> write(point(g, "cmd"), 500));
         assertThat(rejected).isNotNull();
