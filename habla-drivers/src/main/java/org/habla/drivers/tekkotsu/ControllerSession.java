@@ -2,7 +2,6 @@ package org.habla.drivers.tekkotsu;
 
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
@@ -12,7 +11,6 @@ import java.util.List;
 import java.util.Optional;
 import org.habla.driver.LinkSession;
 import org.habla.driver.ReadingSink;
-import org.habla.net.FrameException;
 import org.habla.net.LineFramer;
 
 /**
@@ -80,19 +78,9 @@ final class ControllerSession implements LinkSession {
         if (lines == null) {
             lines = new LineFramer(in, MAX_LINE_BYTES);
         }
-        String line;
-        try {
-            line = lines.readText(StandardCharsets.ISO_8859_1);
-        } catch (FrameException e) {
-            if (e.fatal()) {
-                throw new EOFException("the Tekkotsu controller closed the connection");
-            }
-            sink.malformed("the Tekkotsu controller sent a line longer than maxLineBytes=" + MAX_LINE_BYTES
-                    + "; discarded");
-            line = "";
-        }
+        String line = TekkotsuLines.next(lines, "the Tekkotsu controller", sink);
         if (line == null) {
-            throw new EOFException("the Tekkotsu controller closed the connection");
+            line = ""; // a discarded line still counts in its message
         }
         if (linesExpected > 0) {
             message.add(line);

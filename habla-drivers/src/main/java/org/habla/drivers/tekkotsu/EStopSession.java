@@ -2,14 +2,12 @@ package org.habla.drivers.tekkotsu;
 
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import java.io.EOFException;
 import java.io.IOException;
 import java.io.InputStream;
 import java.io.OutputStream;
 import java.nio.charset.StandardCharsets;
 import org.habla.driver.LinkSession;
 import org.habla.driver.ReadingSink;
-import org.habla.net.FrameException;
 import org.habla.net.LineFramer;
 
 /**
@@ -47,19 +45,9 @@ final class EStopSession implements LinkSession {
         if (lines == null) {
             lines = new LineFramer(in, MAX_LINE_BYTES);
         }
-        String line;
-        try {
-            line = lines.readText(StandardCharsets.ISO_8859_1);
-        } catch (FrameException e) {
-            if (e.fatal()) {
-                throw new EOFException("the emergency-stop control closed the connection");
-            }
-            sink.malformed("the emergency-stop control sent a line longer than maxLineBytes=" + MAX_LINE_BYTES
-                    + "; discarded");
-            return;
-        }
+        String line = TekkotsuLines.next(lines, "the emergency-stop control", sink);
         if (line == null) {
-            throw new EOFException("the emergency-stop control closed the connection");
+            return;
         }
         String text = line.strip();
         if (text.equals("on") || text.equals("off")) {
