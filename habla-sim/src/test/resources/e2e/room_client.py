@@ -26,6 +26,22 @@ def desk_lux(light, deadline):
     raise SystemExit("no light sample in time")
 
 
+def occupancy(occ, seconds):
+    """The first occupancy sample that has someone in a zone, or the last one seen when nobody shows in time: a
+    zone the daemon has not heard from yet counts as empty, so the samples before its sensor's first report do."""
+    deadline = time.monotonic() + seconds
+    last = None
+    while time.monotonic() < deadline:
+        s = occ.next_sample(timeout=max(0.1, deadline - time.monotonic()))
+        if s:
+            last = s
+            if s["value"]["occupied"]:
+                return s
+    if last is None:
+        raise SystemExit("no occupancy sample in time")
+    return last
+
+
 def wait_for(light, test, seconds):
     deadline = time.monotonic() + seconds
     while time.monotonic() < deadline:
@@ -44,8 +60,8 @@ def main():
     with ControlSocket("127.0.0.1", a.occupancy) as occ, ControlSocket("127.0.0.1", a.light) as light, \
             ControlSocket("127.0.0.1", a.action) as action:
         occ.send({"op": "latest"})
-        first = occ.next_sample(timeout=10)
-        say(occupied=first["value"]["occupied"], zones=first["value"]["zones"], stale=first["stale"])
+        seen = occupancy(occ, 10)
+        say(occupied=seen["value"]["occupied"], zones=seen["value"]["zones"], stale=seen["stale"])
         action.request({"op": "write", "value": "all off"})
         dark = wait_for(light, lambda lux: lux < 100, 10)
         say(off=dark)
