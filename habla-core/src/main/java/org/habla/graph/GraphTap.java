@@ -34,6 +34,23 @@ public interface GraphTap {
     }
 
     /**
+     * A sample offered to a method's input never reached the method: a {@code latest} input replaced it by a newer
+     * one before the method took it, or a full {@code queue} input dropped it. {@code arrival} is its place among
+     * the samples offered to that input (1 for the first), so a replay can skip the same one: which samples a busy
+     * method skipped is decided by timing, and the replay has none.
+     */
+    default void skipped(String methodId, String input, long arrival) {
+    }
+
+    /**
+     * Whether the recorded run skipped the {@code arrival}-th sample offered to {@code methodId}'s {@code input}
+     * (see {@link #skipped}); a replay's tap says so, so the replay hands the method the same samples.
+     */
+    default boolean skippedWhenRecorded(String methodId, String input, long arrival) {
+        return false;
+    }
+
+    /**
      * A command was accepted or refused, or an authentication refused, on a control socket (the audit log's
      * entry), so a recording shows who drove the robot.
      */

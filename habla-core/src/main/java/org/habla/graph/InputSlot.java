@@ -19,6 +19,26 @@ final class InputSlot {
     private record Arrival(Sample sample, long index) {
     }
 
+    /** Where the slot tells of the samples it skips, and asks which ones a recorded run skipped. */
+    interface Skips {
+        /** The {@code arrival}-th sample offered never reaches the method (replaced or dropped). */
+        void skipped(long arrival);
+
+        /** Whether the run being replayed skipped the {@code arrival}-th sample; false in a live run. */
+        boolean skippedWhenRecorded(long arrival);
+
+        Skips NONE = new Skips() {
+            @Override
+            public void skipped(long arrival) {
+            }
+
+            @Override
+            public boolean skippedWhenRecorded(long arrival) {
+                return false;
+            }
+        };
+    }
+
     private final Input<?> input;
     private final Delivery delivery;
     private final AtomicReference<Arrival> latest;
@@ -28,15 +48,20 @@ final class InputSlot {
     private final LongAdder conflated = new LongAdder();
     private final Runnable wake;
     private final WorkCount work;
+    private final Skips skips;
     private volatile long consumedThrough;
 
     InputSlot(Input<?> input, Runnable wake, WorkCount work) {
-        this(input, input.delivery(), wake, work);
+        this(input, input.delivery(), wake, work, Skips.NONE);
     }
 
-    /** A slot that delivers as {@code delivery}, which may differ from the input's own (a declared cycle's wire). */
-    InputSlot(Input<?> input, Delivery delivery, Runnable wake, WorkCount work) {
+    /**
+     * A slot that delivers as {@code delivery}, which may differ from the input's own (a declared cycle's wire),
+     * and tells {@code skips} of every sample that does not reach the method.
+     */
+    InputSlot(Input<?> input, Delivery delivery, Runnable wake, WorkCount work, Skips skips) {
         this.input = input;
+        this.skips = skips;
         this.delivery = delivery;
         this.wake = wake;
         this.work = work;
@@ -61,12 +86,25 @@ final class InputSlot {
     /** Hands a sample to the method; false if a full queue dropped it. */
     boolean offer(Sample sample) {
         Arrival arrival = new Arrival(sample, offered.incrementAndGet());
+        if (skips.skippedWhenRecorded(arrival.index())) {
+            // A replay: the recorded run replaced or dropped this one before the method took it, so it does too
+            // (and says so, for a recording of the replay).
+            skips.skipped(arrival.index());
+            if (latest != null) {
+                conflated.increment();
+                return true;
+            }
+            dropped.increment();
+            return false;
+        }
         boolean taken;
         if (latest != null) {
             work.begin();
-            if (latest.getAndSet(arrival) != null) {
+            Arrival replaced = latest.getAndSet(arrival);
+            if (replaced != null) {
                 conflated.increment();
                 work.end();
+                skips.skipped(replaced.index());
             }
             taken = true;
         } else {
@@ -75,6 +113,7 @@ final class InputSlot {
             if (!taken) {
                 work.end();
                 dropped.increment();
+                skips.skipped(arrival.index());
             }
         }
         if (taken) {

@@ -89,8 +89,19 @@ final class MethodRunner implements MethodContext {
         this.clock = clock;
         this.backgroundPool = backgroundPool;
         for (Input<?> in : method.inputs()) {
-            InputSlot slot = new InputSlot(in, latestInputs.contains(in.name()) ? Delivery.latest() : in.delivery(),
-                    this::wake, work);
+            String input = in.name();
+            InputSlot slot = new InputSlot(in, latestInputs.contains(input) ? Delivery.latest() : in.delivery(),
+                    this::wake, work, new InputSlot.Skips() {
+                        @Override
+                        public void skipped(long arrival) {
+                            tap.skipped(id, input, arrival);
+                        }
+
+                        @Override
+                        public boolean skippedWhenRecorded(long arrival) {
+                            return tap.skippedWhenRecorded(id, input, arrival);
+                        }
+                    });
             slots.add(slot);
             slotByInput.put(in, slot);
         }

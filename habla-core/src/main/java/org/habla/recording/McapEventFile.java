@@ -99,6 +99,7 @@ final class McapEventFile implements EventFile {
             case RecordedEvent.LinkChange l -> "/habla/link";
             case RecordedEvent.WriterLeft w -> "/habla/left";
             case RecordedEvent.Tick k -> "/habla/tick";
+            case RecordedEvent.Skip k -> "/habla/skip";
             case RecordedEvent.Dropped d -> "/habla/dropped";
             case RecordedEvent.Audit a -> "/habla/audit";
             case RecordedEvent.End x -> "/habla/end";

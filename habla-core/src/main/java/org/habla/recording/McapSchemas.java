@@ -39,6 +39,12 @@ final class McapSchemas {
                 p.putObject("task").put("type", "string");
                 p.putObject("handled").put("type", "integer");
             }
+            case "skip" -> {
+                p.putObject("method").put("type", "string");
+                p.putObject("input").put("type", "string");
+                p.putObject("arrival").put("type", "integer")
+                        .put("description", "the skipped sample's place among those offered to the input, from 1");
+            }
             default -> { }
         }
         if (!kind.isEmpty()) {

@@ -39,6 +39,13 @@ public sealed interface RecordedEvent {
      * Periodic work ran: {@code "watchdog"} or {@code "tick:METHOD"} (a method's tick, taken after the method
      * had handled {@code handled} input samples; -1 when not told), so a replay runs it between the same events.
      */
+    /**
+     * The {@code arrival}-th sample offered to a method's input never reached the method: a {@code latest} input
+     * replaced it by a newer one, or a full queue dropped it.
+     */
+    record Skip(long t, String method, String input, long arrival) implements RecordedEvent {
+    }
+
     record Tick(long t, String task, long handled) implements RecordedEvent {
     }
 

@@ -154,6 +154,11 @@ public final class Recorder implements GraphTap, AutoCloseable {
     }
 
     @Override
+    public void skipped(String methodId, String input, long arrival) {
+        offer(new RecordedEvent.Skip(clock.nowMicros(), methodId, input, arrival), 0);
+    }
+
+    @Override
     public void periodic(String task, long micros, long handled) {
         offer(new RecordedEvent.Tick(micros, task, handled), 0);
     }

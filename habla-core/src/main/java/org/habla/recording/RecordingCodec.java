@@ -90,6 +90,8 @@ final class RecordingCodec {
             case RecordedEvent.LinkChange l -> Frame.of(base("link", l.t()).put("iface", l.iface()).put("up", l.up()));
             case RecordedEvent.WriterLeft w -> Frame.of(base("left", w.t()).put("socket", w.socket()));
             case RecordedEvent.Tick k -> Frame.of(base("tick", k.t()).put("task", k.task()).put("handled", k.handled()));
+            case RecordedEvent.Skip k -> Frame.of(base("skip", k.t()).put("method", k.method()).put("input", k.input())
+                    .put("arrival", k.arrival()));
             case RecordedEvent.Dropped d -> Frame.of(base("dropped", d.t()).put("total", d.total()));
             case RecordedEvent.Audit a -> Frame.of((ObjectNode) base("audit", a.t()).set("entry", a.entry()));
             case RecordedEvent.End x -> Frame.of(base("end", x.t()).put("written", x.written())
@@ -117,6 +119,7 @@ final class RecordingCodec {
                 case "link" -> new RecordedEvent.LinkChange(t, text(h, "iface"), h.path("up").asBoolean());
                 case "left" -> new RecordedEvent.WriterLeft(t, text(h, "socket"));
                 case "tick" -> new RecordedEvent.Tick(t, text(h, "task"), h.path("handled").asLong(-1));
+                case "skip" -> new RecordedEvent.Skip(t, text(h, "method"), text(h, "input"), h.path("arrival").asLong());
                 case "dropped" -> new RecordedEvent.Dropped(t, h.path("total").asLong());
                 case "audit" -> new RecordedEvent.Audit(t, h.get("entry") instanceof ObjectNode o ? o
                         : NODES.objectNode());

@@ -4,8 +4,10 @@ import java.io.IOException;
 import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.Deque;
+import java.util.HashMap;
 import java.util.HashSet;
 import java.util.Iterator;
+import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
@@ -69,9 +71,11 @@ public final class Replayer {
     private final PluginRegistry registry;
     private final boolean recordedTicks;
     private final Optional<Cut> cut;
+    private final Map<String, Set<Long>> skips;
 
     private Replayer(Path file, RecordingHeader header, HablaConfig config, PluginRegistry registry,
-            boolean recordedTicks, Optional<Cut> cut) {
+            boolean recordedTicks, Optional<Cut> cut, Map<String, Set<Long>> skips) {
+        this.skips = skips;
         this.file = file;
         this.header = header;
         this.config = config;
@@ -99,10 +103,16 @@ public final class Replayer {
         RecordingHeader header;
         boolean ticks = false;
         Optional<Cut> cut;
+        Map<String, Set<Long>> skips = new HashMap<>();
         try (RecordingSource r = RecordingSource.open(file)) {
             header = r.header();
             for (RecordedEvent e = r.next(); e != null; e = r.next()) {
                 ticks |= e instanceof RecordedEvent.Tick;
+                if (e instanceof RecordedEvent.Skip s) {
+                    // known before the replay starts: a skip is recorded after the sample it skips was offered
+                    skips.computeIfAbsent(OutputComparison.inputKey(s.method(), s.input()), k -> new HashSet<>())
+                            .add(s.arrival());
+                }
             }
             cut = r.cut();
         }
@@ -128,7 +138,7 @@ public final class Replayer {
                 }
             }
         }
-        return new Replayer(file, header, config, registry, ticks, cut);
+        return new Replayer(file, header, config, registry, ticks, cut, skips);
     }
 
     /** Where the recording stops being readable, if it does: a torn end, or damage being salvaged. */
@@ -159,7 +169,7 @@ public final class Replayer {
             recorder = Recorder.create(recordTo.get(), new RecordingHeader(header.startMicros(), header.timeScale(),
                     header.config(), header.configDir(), header.interfaces()), clock);
         }
-        OutputComparison comparison = new OutputComparison(recorder == null ? GraphTap.NONE : recorder);
+        OutputComparison comparison = new OutputComparison(recorder == null ? GraphTap.NONE : recorder, skips);
         Daemon daemon = Daemon.replaying(config, registry, clock, comparison, header.interfaces());
         try (RecordingSource reader = RecordingSource.open(file)) {
             onStarted.accept(daemon);
@@ -233,6 +243,7 @@ public final class Replayer {
                 }
                 case RecordedEvent.Dropped d -> recordedDrops = d.total();
                 case RecordedEvent.Audit a -> { } // who drove: nothing to run again
+                case RecordedEvent.Skip s -> { } // read before the replay began (OutputComparison.skippedWhenRecorded)
                 case RecordedEvent.End x -> complete = true;
                 case RecordedEvent.Reading r -> {
                     advance(r.t());

@@ -11,11 +11,14 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import org.habla.config.ConfigLoader;
 import org.habla.config.HablaConfig;
 import org.habla.daemon.Daemon;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.ProcessingMethod;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.PluginRegistry;
 import org.habla.recording.RecordedEvent;
@@ -76,11 +79,37 @@ class RecordAndReplayTest {
         }
     }
 
+    /**
+     * Passes each value on, but holds the first one it takes until the test opens {@link #GATE}: the samples that
+     * arrive meanwhile meet a {@code latest} input already full, and all but the newest are skipped, as a busy
+     * machine makes a slow method skip them.
+     */
+    static final class Latched extends ProcessingMethod {
+        static volatile CountDownLatch gate = new CountDownLatch(0);
+        static volatile boolean holding;
+        final Output<NumberValue> out = output("out", NumberValue.class);
+
+        Latched() {
+            input("in", NumberValue.class, org.habla.method.Delivery.latest(), (v, s) -> {
+                holding = true;
+                try {
+                    gate.await(60, TimeUnit.SECONDS);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                } finally {
+                    holding = false;
+                }
+                emit(out, v);
+            });
+        }
+    }
+
     private static PluginRegistry registry() {
         PluginRegistry base = TestMethods.registry();
         List<org.habla.plugin.MethodProvider<?>> methods = new ArrayList<>(base.methods().values());
         methods.add(new TestMethods.Simple("tick-counter", Layer.VIRTUAL, TickCounter::new));
         methods.add(new TestMethods.Simple("hold", Layer.VIRTUAL, Hold::new));
+        methods.add(new TestMethods.Simple("latched", Layer.PROCESSING, Latched::new));
         return PluginRegistry.of(methods, List.of(new LineDriver.Provider()));
     }
 
@@ -174,6 +203,75 @@ class RecordAndReplayTest {
 
         ReplayResult paced = replayer.run(new Replayer.Options(8, true, 10_000), Optional.empty(), d -> { });
         assertThat(paced.streams()).as("replayed at 8 times the recorded pace").allMatch(StreamMatch::matches);
+    }
+
+    @Test
+    void theSamplesASlowMethodSkippedInTheRecordedRunAreSkippedInTheReplay() throws Exception {
+        PluginRegistry registry = registry();
+        Path file = dir.resolve("skips.habla-rec");
+        Path configFile = dir.resolve("skips.json");
+        try (FakeLineRobot robot = new FakeLineRobot(0)) {
+            int port = org.habla.testing.DaemonProcess.freePorts(1)[0];
+            Files.writeString(configFile, """
+                    {"system": "skip-test", "safety": {"watchdogMs": 0}, "status": {"port": 0},
+                     "interfaces": [{"id": "robot", "driver": "lines-test", "address": "127.0.0.1:%d"}],
+                     "methods": [
+                       {"id": "s", "type": "add-one-sensor", "layer": "sensors_actuators", "inputs": {"in": "@robot.value"}},
+                       {"id": "slow", "type": "latched", "layer": "processing", "inputs": {"in": "s.out"}},
+                       {"id": "v", "type": "add-one-virtual", "layer": "virtual", "inputs": {"in": "slow.out"},
+                        "expose": {"port": %d, "name": "v"}}
+                     ]}
+                    """.formatted(robot.port(), port));
+            HablaConfig cfg = new ConfigLoader(registry).load(configFile);
+            EngineClock clock = EngineClock.system();
+            ObjectNode json = (ObjectNode) new ObjectMapper().readTree(Files.readString(configFile));
+            CountDownLatch gate = new CountDownLatch(1);
+            Latched.gate = gate;
+            try (Recorder recorder = Recorder.create(file, new RecordingHeader(clock.nowMicros(), 1, json,
+                    dir.toString(), MethodGraph.channels(cfg, registry)), clock);
+                    Daemon daemon = Daemon.start(cfg, registry, clock, recorder)) {
+                assertThat(robot.awaitClient(15_000)).isTrue();
+                await(() -> daemon.status().path("interfaces").get(0).path("up").asBoolean(), "the link is up");
+                robot.send("value 1");
+                await(() -> Latched.holding, "the slow method holds the first value");
+                for (int i = 2; i <= 5; i++) {
+                    robot.send("value " + i);
+                }
+                await(() -> conflated(daemon, "slow") == 3, "three values are skipped for a newer one");
+                gate.countDown();
+                await(() -> outputs(daemon, "v", "out") == 2, "the first and the newest value come out");
+                robot.send("value 6");
+                await(() -> outputs(daemon, "v", "out") == 3, "the next value comes out");
+            } finally {
+                gate.countDown();
+                Latched.gate = new CountDownLatch(0);
+            }
+        }
+        Recording recorded = RecordingReader.readAll(file);
+        assertThat(recorded.events(RecordedEvent.Skip.class)).filteredOn(k -> k.method().equals("slow"))
+                .extracting(RecordedEvent.Skip::arrival).as("the skipped arrivals at slow.in").containsExactly(2L, 3L, 4L);
+        List<Double> v = recorded.events(RecordedEvent.Output.class).stream().filter(o -> o.method().equals("v"))
+                .map(o -> ((NumberValue) o.sample().payload()).value()).toList();
+        assertThat(v).as("values 1, 5 and 6, each plus two").containsExactly(3.0, 7.0, 8.0);
+
+        Path again = dir.resolve("replayed.habla-rec");
+        ReplayResult result = Replayer.open(file, Optional.empty(), registry)
+                .run(Replayer.Options.AS_FAST_AS_POSSIBLE, Optional.of(again), d -> { });
+        StreamMatch values = result.stream("v.out").orElseThrow();
+        assertThat(values.replayed()).as(values.toString()).isEqualTo(3);
+        assertThat(values.matches()).as(values.toString()).isTrue();
+        assertThat(RecordingReader.readAll(again).events(RecordedEvent.Skip.class)).filteredOn(k -> k.method().equals("slow"))
+                .as("a recording of the replay says which it skipped too").extracting(RecordedEvent.Skip::arrival)
+                .containsExactly(2L, 3L, 4L);
+    }
+
+    private static long conflated(Daemon d, String method) {
+        for (var m : d.status().path("methods")) {
+            if (m.path("id").asText().equals(method)) {
+                return m.path("inputs").path("in").path("conflated").asLong();
+            }
+        }
+        return 0;
     }
 
     private static long outputs(Daemon d, String method, String output) {
