@@ -330,7 +330,9 @@ class TekkotsuServersTest {
                 out.flush();
             }
         }
-        // a second speaker client is turned away while the driver holds the port
+        // a second speaker client is turned away while the driver holds the port (once it holds it: on a busy
+        // machine the driver's speaker link may still be connecting, and the test's client would be the first)
+        assertThat(DriverLink.await(LIMIT, () -> links.get("speaker").up())).isTrue();
         try (Socket s = new Socket("127.0.0.1", p.speaker())) {
             s.setSoTimeout((int) LIMIT.toMillis());
             assertThat(s.getInputStream().read()).isEqualTo(-1);
