@@ -88,7 +88,7 @@ public interface ControlPoint {
         private final String code;
 
         public Rejected(String code, String message) {
-            super(message);
+            super(message, null, false, false); // an answer to a client, not a fault: no stack trace to fill in
             this.code = code;
         }
 
