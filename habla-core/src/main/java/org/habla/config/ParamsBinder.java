@@ -25,7 +25,8 @@ import java.util.regex.Pattern;
 
 /**
  * Binds a method's or an interface's {@code params} object to its type's params record, strictly: no
- * unknown keys, no nulls for primitives, no {@code "5"} for a number or {@code 5} for a string. Every
+ * unknown keys, no nulls for primitives, no {@code "5"} for a number or {@code 5} for a string. Keys
+ * left out are first filled with their declared defaults ({@link DefaultFill}). Every
  * failure becomes a {@link ConfigError} at the JSON path of the offending value; an exception thrown by
  * the record's constructor becomes an error at the parameter it names, or at {@code params}.
  */
@@ -86,6 +87,7 @@ final class ParamsBinder {
                 errors.add(path.field(key), "unknown parameter '" + key + "' (" + known(names) + ")");
             }
         });
+        node = DefaultFill.of(node, type);
         for (RecordComponent c : type.getRecordComponents()) {
             if (c.getType().isPrimitive() && !node.has(jsonName(c))) {
                 errors.add(path.field(jsonName(c)), "required parameter '" + jsonName(c) + "' is missing");

@@ -46,10 +46,10 @@ public record PioneerParams(
         @Param(value = "Longest range a sonar reports (also its reading when nothing is in view)", unit = "m",
                 defaultValue = "5.0")
         Double maxRangeM,
-        @Param(value = "Full width of a sonar beam", unit = "rad", defaultValue = "0.5236")
+        @Param(value = "Full width of a sonar beam", unit = "rad", defaultValue = "0.5235987755982988")
         Double beamWidthRad,
         @Param(value = "Sonar transducer poses [{xM, yM, thetaRad}], one per transducer in index order",
-                unit = "m, rad", defaultValue = "the 16 P2DX poses")
+                unit = "m, rad", defaultNote = "the 16 P2DX poses")
         List<SonarPose> sonarPoses) {
 
     /** The Pioneer 2 DX sonar ring: front 0–7 from the left side round to the right, rear 8–15 back round. */

@@ -55,8 +55,8 @@ public record TekkotsuParams(
         Boolean controller,
         @Param(value = "Port of the controller (menu) server.", defaultValue = "10020")
         Integer controllerPort,
-        @Param(value = "Menu items to switch on through the controller; default: the items of the servers "
-                + "opened above, under their Tekkotsu 4.0 and 5.x names.", defaultValue = "")
+        @Param(value = "Menu items to switch on through the controller",
+                defaultNote = "the items of the servers opened above, under their Tekkotsu 4.0 and 5.x names")
         List<String> startServers,
         @Param(value = "Walk speed at forward fraction 1.", unit = "m/s", defaultValue = "0.18")
         Double maxForwardMps,

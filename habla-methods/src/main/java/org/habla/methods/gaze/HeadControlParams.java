@@ -9,9 +9,9 @@ public record HeadControlParams(
         String label,
         @Param(value = "Share of the angular error corrected per image", defaultValue = "0.6") Double gain,
         @Param(value = "Errors smaller than this are left alone", unit = "rad", defaultValue = "0.02") Double deadbandRad,
-        @Param(value = "Horizontal field of view; overrides the camera record", unit = "rad", defaultValue = "camera record")
+        @Param(value = "Horizontal field of view; overrides the camera record", unit = "rad", defaultNote = "camera record")
         Double hfovRad,
-        @Param(value = "Vertical field of view; overrides the camera record", unit = "rad", defaultValue = "camera record")
+        @Param(value = "Vertical field of view; overrides the camera record", unit = "rad", defaultNote = "camera record")
         Double vfovRad,
         @Param(value = "Time without the target after which the head starts scanning", unit = "ms", defaultValue = "1000")
         Integer lostAfterMs,
@@ -21,12 +21,18 @@ public record HeadControlParams(
         @Param(value = "Neck tilt held during the scan", unit = "rad", defaultValue = "-0.35") Double scanTiltRad,
         @Param(value = "Nod held while tracking and scanning", unit = "rad", defaultValue = "0") Double nodRad,
         @Param(value = "Period of the scan steps", unit = "ms", defaultValue = "100") Integer periodMs,
-        @Param(value = "Lowest neck tilt", unit = "rad", defaultValue = "-1.31") Double tiltMinRad,
-        @Param(value = "Highest neck tilt", unit = "rad", defaultValue = "0.05") Double tiltMaxRad,
-        @Param(value = "Pan furthest to the right", unit = "rad", defaultValue = "-1.62") Double panMinRad,
-        @Param(value = "Pan furthest to the left", unit = "rad", defaultValue = "1.62") Double panMaxRad,
-        @Param(value = "Lowest nod", unit = "rad", defaultValue = "-0.26") Double nodMinRad,
-        @Param(value = "Highest nod", unit = "rad", defaultValue = "0.79") Double nodMaxRad)
+        @Param(value = "Lowest neck tilt", unit = "rad", defaultNote = "channel metadata, else -1.31")
+        Double tiltMinRad,
+        @Param(value = "Highest neck tilt", unit = "rad", defaultNote = "channel metadata, else 0.05")
+        Double tiltMaxRad,
+        @Param(value = "Pan furthest to the right", unit = "rad", defaultNote = "channel metadata, else -1.62")
+        Double panMinRad,
+        @Param(value = "Pan furthest to the left", unit = "rad", defaultNote = "channel metadata, else 1.62")
+        Double panMaxRad,
+        @Param(value = "Lowest nod", unit = "rad", defaultNote = "channel metadata, else -0.26")
+        Double nodMinRad,
+        @Param(value = "Highest nod", unit = "rad", defaultNote = "channel metadata, else 0.79")
+        Double nodMaxRad)
         implements HeadLimits.HeadLimitsOverride {
 
     public HeadControlParams {

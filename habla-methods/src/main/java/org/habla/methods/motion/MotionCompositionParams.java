@@ -12,10 +12,10 @@ public record MotionCompositionParams(
         @Param(value = "Largest change of the turn rate per second", unit = "rad/s²", defaultValue = "2.0")
         Double maxRotAccelRadps2,
         @Param(value = "Highest forward or backward speed; overrides the limits input", unit = "m/s",
-                defaultValue = "the limits input, else no limit")
+                defaultNote = "the limits input, else no limit")
         Double maxVelMps,
         @Param(value = "Highest turn rate; overrides the limits input", unit = "rad/s",
-                defaultValue = "the limits input, else no limit")
+                defaultNote = "the limits input, else no limit")
         Double maxRotVelRadps,
         @Param(value = "Period of the ramp steps", unit = "ms", defaultValue = "50")
         Integer tickMs) {

@@ -9,7 +9,7 @@ public record NearestDistanceParams(
                 defaultValue = "0.02")
         Double minValidM,
         @Param(value = "Half-width of the cones ahead and behind the robot that aheadM and behindM cover", unit = "rad",
-                defaultValue = "1.0472")
+                defaultValue = "1.0471975511965976")
         Double coneRad,
         @Param(value = "A scan older than this is left out when several inputs are combined", unit = "ms",
                 defaultValue = "1000")

@@ -12,12 +12,12 @@ public record CoordinateTranslationParams(
         String label,
         @Param(value = "Radius of the target object (a ball)", unit = "m", defaultValue = "0.05")
         Double targetRadiusM,
-        @Param(value = "Horizontal field of view; overrides the camera record", unit = "rad", defaultValue = "camera record")
+        @Param(value = "Horizontal field of view; overrides the camera record", unit = "rad", defaultNote = "camera record")
         Double hfovRad,
-        @Param(value = "Vertical field of view; overrides the camera record", unit = "rad", defaultValue = "camera record")
+        @Param(value = "Vertical field of view; overrides the camera record", unit = "rad", defaultNote = "camera record")
         Double vfovRad,
         @Param(value = "Height of the camera above the floor; overrides the camera record", unit = "m",
-                defaultValue = "camera record")
+                defaultNote = "camera record")
         Double cameraHeightM,
         @Param(value = "How far ahead of the robot's origin the camera's pan axis sits", unit = "m", defaultValue = "0")
         Double cameraXM,

@@ -8,7 +8,7 @@ import org.habla.plugin.Param;
 public record ButtonsParams(
         @Param(value = "A button whose value reaches this is pressed", defaultValue = "0.5") Double threshold,
         @Param(value = "A pressed button is released when its value falls below this (hysteresis)",
-                defaultValue = "threshold × 0.6")
+                defaultNote = "threshold × 0.6")
         Double releaseThreshold,
         @Param(value = "Names of the buttons to watch; empty watches every number in the record", defaultValue = "[]")
         List<String> names) {

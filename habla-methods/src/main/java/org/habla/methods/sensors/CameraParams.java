@@ -12,13 +12,13 @@ public record CameraParams(
         @Param(value = "Most frames a second handed on; 0 hands on every frame", unit = "1/s", defaultValue = "0")
         Double maxFps,
         @Param(value = "Horizontal field of view; overrides the channel metadata", unit = "rad",
-                defaultValue = "channel metadata")
+                defaultNote = "channel metadata")
         Double hfovRad,
         @Param(value = "Vertical field of view; overrides the channel metadata", unit = "rad",
-                defaultValue = "channel metadata")
+                defaultNote = "channel metadata")
         Double vfovRad,
         @Param(value = "Height of the camera above the floor; overrides the channel metadata", unit = "m",
-                defaultValue = "channel metadata, else 0")
+                defaultNote = "channel metadata, else 0")
         Double heightM) {
 
     public CameraParams {

@@ -11,10 +11,10 @@ import org.habla.plugin.Param;
  * the defaults (a Sony ERS-7's walk as the {@code tekkotsu} driver states it).
  */
 public record LegsParams(
-        @Param(value = "Fastest forward walk", unit = "m/s", defaultValue = "channel metadata, else 0.18") Double maxForwardMps,
-        @Param(value = "Fastest backward walk", unit = "m/s", defaultValue = "channel metadata, else 0.18") Double maxReverseMps,
-        @Param(value = "Fastest sideways walk", unit = "m/s", defaultValue = "channel metadata, else 0.14") Double maxStrafeMps,
-        @Param(value = "Fastest turn", unit = "rad/s", defaultValue = "channel metadata, else 1.8") Double maxRotateRadps,
+        @Param(value = "Fastest forward walk", unit = "m/s", defaultNote = "channel metadata, else 0.18") Double maxForwardMps,
+        @Param(value = "Fastest backward walk", unit = "m/s", defaultNote = "channel metadata, else 0.18") Double maxReverseMps,
+        @Param(value = "Fastest sideways walk", unit = "m/s", defaultNote = "channel metadata, else 0.14") Double maxStrafeMps,
+        @Param(value = "Fastest turn", unit = "rad/s", defaultNote = "channel metadata, else 1.8") Double maxRotateRadps,
         @Param(value = "Queue length of the walk input, in commands", defaultValue = "8") Integer queue) {
 
     public LegsParams {

@@ -12,13 +12,13 @@ import org.habla.plugin.Param;
  */
 public record RangeSensorParams(
         @Param(value = "Reach of every sensor; overrides the channel metadata", unit = "m",
-                defaultValue = "channel metadata, else 5.0 (sonar) or 1.5 (infrared)")
+                defaultNote = "channel metadata, else 5.0 (sonar) or 1.5 (infrared)")
         Double maxRangeM,
         @Param(value = "Shortest range the sensors measure; closer readings are raised to it", unit = "m",
-                defaultValue = "channel metadata, else 0")
+                defaultNote = "channel metadata, else 0")
         Double minRangeM,
         @Param(value = "Sensor poses [{xM, yM, thetaRad}] in index order; overrides the channel metadata",
-                unit = "m, rad", defaultValue = "channel metadata")
+                unit = "m, rad", defaultNote = "channel metadata")
         List<PlanarPose> poses,
         @Param(value = "Turn sensors mounted on the head (metadata mount = head) by the head's pan when input head is wired",
                 defaultValue = "true")
