@@ -21,12 +21,12 @@ public record MotionCompositionParams(
         Integer tickMs) {
 
     public MotionCompositionParams {
-        maxAccelMps2 = ParamRules.positive("maxAccelMps2", maxAccelMps2, 0.5);
-        maxDecelMps2 = ParamRules.positive("maxDecelMps2", maxDecelMps2, 1.0);
-        maxRotAccelRadps2 = ParamRules.positive("maxRotAccelRadps2", maxRotAccelRadps2, 2.0);
+        maxAccelMps2 = ParamRules.positive(MotionCompositionParams.class, "maxAccelMps2", maxAccelMps2);
+        maxDecelMps2 = ParamRules.positive(MotionCompositionParams.class, "maxDecelMps2", maxDecelMps2);
+        maxRotAccelRadps2 = ParamRules.positive(MotionCompositionParams.class, "maxRotAccelRadps2", maxRotAccelRadps2);
         maxVelMps = ParamRules.positiveOrNull("maxVelMps", maxVelMps);
         maxRotVelRadps = ParamRules.positiveOrNull("maxRotVelRadps", maxRotVelRadps);
-        tickMs = ParamRules.within("tickMs", tickMs, 50, 5, 1000);
+        tickMs = ParamRules.within(MotionCompositionParams.class, "tickMs", tickMs, 5, 1000);
     }
 
     /** Every parameter at its default. */

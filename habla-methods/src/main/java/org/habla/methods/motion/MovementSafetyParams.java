@@ -22,9 +22,9 @@ public record MovementSafetyParams(
         Double maxRotVelRadps) {
 
     public MovementSafetyParams {
-        stopDistanceM = ParamRules.nonNegative("stopDistanceM", stopDistanceM, 0.3);
-        coneRad = ParamRules.within("coneRad", coneRad, Math.PI / 3, 0.0, Math.PI);
-        maxAgeMs = ParamRules.within("maxAgeMs", maxAgeMs, 1000, 1, 600_000);
+        stopDistanceM = ParamRules.nonNegative(MovementSafetyParams.class, "stopDistanceM", stopDistanceM);
+        coneRad = ParamRules.within(MovementSafetyParams.class, "coneRad", coneRad, 0.0, Math.PI);
+        maxAgeMs = ParamRules.within(MovementSafetyParams.class, "maxAgeMs", maxAgeMs, 1, 600_000);
         maxVelMps = ParamRules.positiveOrNull("maxVelMps", maxVelMps);
         maxRotVelRadps = ParamRules.positiveOrNull("maxRotVelRadps", maxRotVelRadps);
     }

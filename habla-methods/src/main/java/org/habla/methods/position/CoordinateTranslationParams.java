@@ -2,6 +2,7 @@ package org.habla.methods.position;
 
 import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /**
  * The params of the {@code coordinate-translation} method. The camera's geometry is best left out:
@@ -32,15 +33,15 @@ public record CoordinateTranslationParams(
         Double minRadiusPx) {
 
     public CoordinateTranslationParams {
-        label = label == null ? "pink" : label;
-        targetRadiusM = ParamRules.positive("targetRadiusM", targetRadiusM, 0.05);
-        hfovRad = hfovRad == null ? null : ParamRules.within("hfovRad", hfovRad, 1, 0.01, 3.1);
-        vfovRad = vfovRad == null ? null : ParamRules.within("vfovRad", vfovRad, 1, 0.01, 3.1);
-        cameraHeightM = cameraHeightM == null ? null : ParamRules.nonNegative("cameraHeightM", cameraHeightM, 0);
-        cameraXM = ParamRules.within("cameraXM", cameraXM, 0, -10, 10);
-        lensForwardM = ParamRules.within("lensForwardM", lensForwardM, 0, -10, 10);
-        bodyRadiusM = ParamRules.within("bodyRadiusM", bodyRadiusM, 0, 0, 10);
-        minRadiusPx = ParamRules.nonNegative("minRadiusPx", minRadiusPx, 1.5);
+        label = ParamDefaults.or(CoordinateTranslationParams.class, "label", label);
+        targetRadiusM = ParamRules.positive(CoordinateTranslationParams.class, "targetRadiusM", targetRadiusM);
+        hfovRad = ParamRules.withinOrNull("hfovRad", hfovRad, 0.01, 3.1);
+        vfovRad = ParamRules.withinOrNull("vfovRad", vfovRad, 0.01, 3.1);
+        cameraHeightM = ParamRules.nonNegativeOrNull("cameraHeightM", cameraHeightM);
+        cameraXM = ParamRules.within(CoordinateTranslationParams.class, "cameraXM", cameraXM, -10, 10);
+        lensForwardM = ParamRules.within(CoordinateTranslationParams.class, "lensForwardM", lensForwardM, -10, 10);
+        bodyRadiusM = ParamRules.within(CoordinateTranslationParams.class, "bodyRadiusM", bodyRadiusM, 0, 10);
+        minRadiusPx = ParamRules.nonNegative(CoordinateTranslationParams.class, "minRadiusPx", minRadiusPx);
     }
 
     /** Every parameter at its default. */

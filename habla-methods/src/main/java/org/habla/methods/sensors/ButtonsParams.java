@@ -3,6 +3,7 @@ package org.habla.methods.sensors;
 import java.util.List;
 import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code buttons} method: when a button counts as pressed and which buttons to watch. */
 public record ButtonsParams(
@@ -14,9 +15,9 @@ public record ButtonsParams(
         List<String> names) {
 
     public ButtonsParams {
-        threshold = ParamRules.within("threshold", threshold, 0.5, 1e-6, 1e9);
+        threshold = ParamRules.within(ButtonsParams.class, "threshold", threshold, 1e-6, 1e9);
         releaseThreshold = ParamRules.within("releaseThreshold", releaseThreshold, threshold * 0.6, 0, threshold);
-        names = names == null ? List.of() : List.copyOf(names);
+        names = List.copyOf(ParamDefaults.or(ButtonsParams.class, "names", names));
     }
 
     /** Every parameter at its default. */

@@ -22,10 +22,10 @@ public record CameraParams(
         Double heightM) {
 
     public CameraParams {
-        maxFps = ParamRules.within("maxFps", maxFps, 0, 0, 1000);
-        hfovRad = hfovRad == null ? null : ParamRules.within("hfovRad", hfovRad, 1, 0.01, 3.1);
-        vfovRad = vfovRad == null ? null : ParamRules.within("vfovRad", vfovRad, 1, 0.01, 3.1);
-        heightM = heightM == null ? null : ParamRules.within("heightM", heightM, 0, 0, 100);
+        maxFps = ParamRules.within(CameraParams.class, "maxFps", maxFps, 0, 1000);
+        hfovRad = ParamRules.withinOrNull("hfovRad", hfovRad, 0.01, 3.1);
+        vfovRad = ParamRules.withinOrNull("vfovRad", vfovRad, 0.01, 3.1);
+        heightM = ParamRules.withinOrNull("heightM", heightM, 0, 100);
     }
 
     /** Every parameter at its default. */

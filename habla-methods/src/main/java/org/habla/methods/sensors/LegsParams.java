@@ -18,11 +18,11 @@ public record LegsParams(
         @Param(value = "Queue length of the walk input, in commands", defaultValue = "8") Integer queue) {
 
     public LegsParams {
-        maxForwardMps = maxForwardMps == null ? null : ParamRules.within("maxForwardMps", maxForwardMps, 0, 0, 10);
-        maxReverseMps = maxReverseMps == null ? null : ParamRules.within("maxReverseMps", maxReverseMps, 0, 0, 10);
-        maxStrafeMps = maxStrafeMps == null ? null : ParamRules.within("maxStrafeMps", maxStrafeMps, 0, 0, 10);
-        maxRotateRadps = maxRotateRadps == null ? null : ParamRules.within("maxRotateRadps", maxRotateRadps, 0, 0, 20);
-        queue = ParamRules.within("queue", queue, 8, 1, 1024);
+        maxForwardMps = ParamRules.withinOrNull("maxForwardMps", maxForwardMps, 0, 10);
+        maxReverseMps = ParamRules.withinOrNull("maxReverseMps", maxReverseMps, 0, 10);
+        maxStrafeMps = ParamRules.withinOrNull("maxStrafeMps", maxStrafeMps, 0, 10);
+        maxRotateRadps = ParamRules.withinOrNull("maxRotateRadps", maxRotateRadps, 0, 20);
+        queue = ParamRules.within(LegsParams.class, "queue", queue, 1, 1024);
     }
 
     /** Every parameter at its default. */
