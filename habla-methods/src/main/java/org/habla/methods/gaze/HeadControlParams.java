@@ -22,18 +22,12 @@ public record HeadControlParams(
         @Param(value = "Neck tilt held during the scan", unit = "rad", defaultValue = "-0.35") Double scanTiltRad,
         @Param(value = "Nod held while tracking and scanning", unit = "rad", defaultValue = "0") Double nodRad,
         @Param(value = "Period of the scan steps", unit = "ms", defaultValue = "100") Integer periodMs,
-        @Param(value = "Lowest neck tilt", unit = "rad", defaultNote = "channel metadata, else -1.31")
-        Double tiltMinRad,
-        @Param(value = "Highest neck tilt", unit = "rad", defaultNote = "channel metadata, else 0.05")
-        Double tiltMaxRad,
-        @Param(value = "Pan furthest to the right", unit = "rad", defaultNote = "channel metadata, else -1.62")
-        Double panMinRad,
-        @Param(value = "Pan furthest to the left", unit = "rad", defaultNote = "channel metadata, else 1.62")
-        Double panMaxRad,
-        @Param(value = "Lowest nod", unit = "rad", defaultNote = "channel metadata, else -0.26")
-        Double nodMinRad,
-        @Param(value = "Highest nod", unit = "rad", defaultNote = "channel metadata, else 0.79")
-        Double nodMaxRad)
+        @Param(value = "Lowest neck tilt", unit = "rad", defaultValue = "-1.31") Double tiltMinRad,
+        @Param(value = "Highest neck tilt", unit = "rad", defaultValue = "0.05") Double tiltMaxRad,
+        @Param(value = "Pan furthest to the right", unit = "rad", defaultValue = "-1.62") Double panMinRad,
+        @Param(value = "Pan furthest to the left", unit = "rad", defaultValue = "1.62") Double panMaxRad,
+        @Param(value = "Lowest nod", unit = "rad", defaultValue = "-0.26") Double nodMinRad,
+        @Param(value = "Highest nod", unit = "rad", defaultValue = "0.79") Double nodMaxRad)
         implements HeadLimits.HeadLimitsOverride {
 
     public HeadControlParams {
@@ -48,6 +42,12 @@ public record HeadControlParams(
         scanTiltRad = ParamRules.within(HeadControlParams.class, "scanTiltRad", scanTiltRad, -Math.PI, Math.PI);
         nodRad = ParamRules.within(HeadControlParams.class, "nodRad", nodRad, -Math.PI, Math.PI);
         periodMs = ParamRules.within(HeadControlParams.class, "periodMs", periodMs, 10, 10_000);
+        tiltMinRad = ParamDefaults.or(HeadControlParams.class, "tiltMinRad", tiltMinRad);
+        tiltMaxRad = ParamDefaults.or(HeadControlParams.class, "tiltMaxRad", tiltMaxRad);
+        panMinRad = ParamDefaults.or(HeadControlParams.class, "panMinRad", panMinRad);
+        panMaxRad = ParamDefaults.or(HeadControlParams.class, "panMaxRad", panMaxRad);
+        nodMinRad = ParamDefaults.or(HeadControlParams.class, "nodMinRad", nodMinRad);
+        nodMaxRad = ParamDefaults.or(HeadControlParams.class, "nodMaxRad", nodMaxRad);
         new HeadLimits(tiltMinRad, tiltMaxRad, panMinRad, panMaxRad, nodMinRad, nodMaxRad);
     }
 
