@@ -5,7 +5,6 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.time.Duration;
 import java.util.Set;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.ReentrantLock;
 import org.habla.config.Reconnect;
 import org.habla.driver.ClientConnection;
@@ -17,9 +16,10 @@ import org.slf4j.LoggerFactory;
 
 /**
  * Keeps one connection that a client library opens itself (a {@link ClientSession}): opens it, reads until it
- * is lost, closes it, waits with the engine's {@link BackOff} and opens a fresh session. The wait starts again
- * from the shortest once a session has been up. Writes come from any thread and are serialised; a write while
- * the connection is down is refused, never queued, so a command is never applied late.
+ * is lost, closes it, waits with the engine's {@link BackOff} and opens a fresh session — the cycle is the
+ * engine's {@link ReconnectingLink}. The wait starts again from the shortest once a session has been up. Writes
+ * come from any thread and are serialised; a write while the connection is down is refused, never queued, so a
+ * command is never applied late.
  */
 final class ClientLink implements Link {
 
@@ -28,28 +28,41 @@ final class ClientLink implements Link {
     private final String name;
     private final ClientConnection connection;
     private final Reconnect reconnect;
-    private final BackOff backOff;
-    private final OutageLog outages;
     private final ReadingSink sink;
-    private final Runnable onStateChange;
     private final ReentrantLock writeLock = new ReentrantLock();
-    private final AtomicLong connects = new AtomicLong();
-    private final AtomicLong failures = new AtomicLong();
-    private volatile boolean running;
-    private volatile boolean up;
-    private volatile String lastError = "";
-    private volatile ClientSession session;
-    private Thread thread;
+    private final ReconnectingLink<Attempt> link;
 
     ClientLink(String interfaceId, ClientConnection connection, Reconnect reconnect, ReadingSink sink,
             Runnable onStateChange) {
         this.name = interfaceId + "/" + connection.name();
         this.connection = connection;
         this.reconnect = reconnect;
-        this.backOff = new BackOff(reconnect);
-        this.outages = new OutageLog(LOG, "link " + name);
         this.sink = sink;
-        this.onStateChange = onStateChange;
+        this.link = new ReconnectingLink<>("habla-link-" + name, reconnect, Attempt::new,
+                new OutageLog(LOG, "link " + name), new ReconnectingLink.StateListener() {
+                    @Override
+                    public void flip(boolean nowUp, boolean wasUp, Runnable flip) {
+                        // under the write lock: a write in progress ends before its session is closed
+                        writeLock.lock();
+                        try {
+                            flip.run();
+                        } finally {
+                            writeLock.unlock();
+                        }
+                    }
+
+                    @Override
+                    public void wentUp() {
+                        onStateChange.run();
+                    }
+
+                    @Override
+                    public void wentDown(boolean wasUp) {
+                        if (wasUp) {
+                            onStateChange.run();
+                        }
+                    }
+                });
     }
 
     @Override
@@ -64,83 +77,22 @@ final class ClientLink implements Link {
 
     @Override
     public boolean up() {
-        return up;
+        return link.up();
     }
 
     @Override
     public String lastError() {
-        return lastError;
+        return link.lastError();
     }
 
     @Override
     public void start() {
-        running = true;
-        thread = Thread.ofVirtual().name("habla-link-" + name).start(this::loop);
+        link.start();
     }
 
     @Override
     public void stop() {
-        running = false;
-        ClientSession s = session;
-        if (s != null) {
-            s.close();
-        }
-        backOff.wake();
-        if (thread != null) {
-            try {
-                thread.join(2_000);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }
-    }
-
-    private void loop() {
-        while (running) {
-            ClientSession s = connection.sessions().get();
-            session = s;
-            Exception failure;
-            try {
-                s.open(sink, Duration.ofMillis(reconnect.connectTimeoutMs()));
-                connects.incrementAndGet();
-                lastError = "";
-                up = true;
-                backOff.reset();
-                outages.up();
-                onStateChange.run();
-                while (running) {
-                    s.readNext(sink);
-                }
-                break;
-            } catch (IOException | RuntimeException e) {
-                failure = e;
-                if (running) {
-                    failures.incrementAndGet();
-                    lastError = e.getMessage() == null ? e.toString() : e.getMessage();
-                    outages.failed(lastError);
-                }
-            } finally {
-                markDown(s);
-            }
-            if (running && !backOff.pause(failure, () -> running)) {
-                running = false;
-            }
-        }
-    }
-
-    private void markDown(ClientSession s) {
-        boolean was = up;
-        writeLock.lock();
-        try {
-            up = false;
-            session = null;
-        } finally {
-            writeLock.unlock();
-        }
-        s.close();
-        if (was) {
-            onStateChange.run();
-        }
+        link.stop();
     }
 
     @Override
@@ -155,22 +107,19 @@ final class ClientLink implements Link {
 
     private boolean write(String what, SessionWrite action) {
         writeLock.lock();
+        Attempt attempt = link.session();
         try {
-            ClientSession s = session;
-            if (!up || s == null) {
+            if (attempt == null) {
                 return false;
             }
-            action.write(s);
+            action.write(attempt.session);
             return true;
         } catch (IllegalArgumentException e) {
             LOG.warn("link {}: {} refused: {}", name, what, e.getMessage());
             return false;
         } catch (IOException | RuntimeException e) {
             LOG.warn("link {}: {} failed, reconnecting: {}", name, what, e.toString());
-            ClientSession s = session;
-            if (s != null) {
-                s.close();
-            }
+            attempt.close();
             return false;
         } finally {
             writeLock.unlock();
@@ -181,13 +130,34 @@ final class ClientLink implements Link {
     public ObjectNode status() {
         ObjectNode n = JsonNodeFactory.instance.objectNode();
         n.put("name", connection.name());
-        n.put("up", up);
-        n.put("connects", connects.get());
-        n.put("failures", failures.get());
-        if (!lastError.isEmpty()) {
-            n.put("lastError", lastError);
+        n.put("up", link.up());
+        n.put("connects", link.connects());
+        n.put("failures", link.failures());
+        if (!link.lastError().isEmpty()) {
+            n.put("lastError", link.lastError());
         }
         return n;
+    }
+
+    /** One session of the client library, for one attempt. */
+    private final class Attempt implements ReconnectingLink.Session {
+
+        private final ClientSession session = connection.sessions().get();
+
+        @Override
+        public void open() throws IOException {
+            session.open(sink, Duration.ofMillis(reconnect.connectTimeoutMs()));
+        }
+
+        @Override
+        public void readNext() throws IOException {
+            session.readNext(sink);
+        }
+
+        @Override
+        public void close() {
+            session.close();
+        }
     }
 
     @FunctionalInterface

@@ -10,7 +10,6 @@ import java.io.OutputStream;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
-import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.ReentrantLock;
 import org.habla.config.Reconnect;
 import org.habla.driver.Connection;
@@ -23,7 +22,8 @@ import org.slf4j.LoggerFactory;
 
 /**
  * Keeps one TCP connection of an interface alive: connects, runs the driver session's handshake, reads
- * until the connection fails, then waits ({@link BackOff}) and connects again. The connection fails when the
+ * until the connection fails, then waits ({@link BackOff}) and connects again — the cycle is the engine's
+ * {@link ReconnectingLink}; this class is what is spoken over the socket. The connection fails when the
  * peer closes or resets it, when TCP keep-alive finds its host gone ({@link LinkSocket}), or — only if the
  * driver declares the peer's stream periodic ({@link Liveness}) — after the stream's silence limit; a quiet
  * peer may be silent for ever. Writes come from any thread and are serialised; a write to a connection that
@@ -37,24 +37,12 @@ final class ConnectionLink implements Link {
     private final String host;
     private final Connection connection;
     private final Reconnect reconnect;
-    private final BackOff backOff;
     /** Silence after which the peer is lost; 0 for a quiet peer (only TCP tells). */
     private final long silenceLimitMs;
-    private final OutageLog outages;
     private final ReadingSink sink;
-    private final Runnable onStateChange;
     private final ReentrantLock writeLock = new ReentrantLock();
-    private final AtomicLong connects = new AtomicLong();
-    private final AtomicLong failures = new AtomicLong();
-    private volatile boolean running;
-    private volatile boolean up;
-    private volatile String lastError = "";
+    private final ReconnectingLink<RobotSession> link;
     private volatile double lastConnectMs = -1;
-    private volatile Socket socket;
-    private volatile LinkSession session;
-    private volatile OutputStream out;
-    private AutoCloseable keepAlive;
-    private Thread thread;
 
     ConnectionLink(String interfaceId, String host, Connection connection, Reconnect reconnect, ReadingSink sink,
             Runnable onStateChange) {
@@ -62,12 +50,12 @@ final class ConnectionLink implements Link {
         this.host = host;
         this.connection = connection;
         this.reconnect = reconnect;
-        this.backOff = new BackOff(reconnect);
         this.silenceLimitMs = connection.liveness() instanceof Liveness.Periodic p
                 ? (reconnect.readTimeoutMs() > 0 ? reconnect.readTimeoutMs() : p.lostAfter().toMillis()) : 0;
-        this.outages = new OutageLog(LOG, "link " + name + " (" + host + ":" + connection.port() + ")");
         this.sink = sink;
-        this.onStateChange = onStateChange;
+        this.link = new ReconnectingLink<>("habla-link-" + name, reconnect, RobotSession::new,
+                new OutageLog(LOG, "link " + name + " (" + host + ":" + connection.port() + ")"),
+                ReconnectingLink.StateListener.notifying(onStateChange));
     }
 
     @Override
@@ -87,143 +75,24 @@ final class ConnectionLink implements Link {
 
     @Override
     public boolean up() {
-        return up;
+        return link.up();
     }
 
     @Override
     public void start() {
-        running = true;
-        thread = Thread.ofVirtual().name("habla-link-" + name).start(this::loop);
+        link.start();
     }
 
     /** Says goodbye if connected, closes the socket and stops reconnecting. */
     @Override
     public void stop() {
-        running = false;
-        if (up) {
-            write("goodbye", (s, o) -> s.goodbye(o));
-        }
-        closeSocket();
-        backOff.wake();
-        if (thread != null) {
-            try {
-                thread.join(2_000);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }
+        link.stop();
     }
 
     /** The wait chooser of this link (tests and benchmarks observe the waits it chooses). */
     BackOff backOff() {
-        return backOff;
+        return link.backOff();
     }
-
-    private void loop() {
-        while (running) {
-            Exception failure;
-            try {
-                runOnce();
-                break;
-            } catch (IOException | RuntimeException e) {
-                failure = e;
-                if (running) {
-                    failures.incrementAndGet();
-                    lastError = e.getMessage() == null ? e.toString() : e.getMessage();
-                    outages.failed(lastError);
-                }
-            } finally {
-                markDown();
-            }
-            if (running && !backOff.pause(failure, () -> running)) {
-                running = false;
-            }
-        }
-    }
-
-    private void runOnce() throws IOException {
-        Socket s = LinkSocket.create(reconnect.tcpKeepAlive());
-        socket = s;
-        long started = System.nanoTime();
-        s.connect(new InetSocketAddress(host, connection.port()), (int) reconnect.connectTimeoutMs());
-        s.setSoTimeout((int) reconnect.connectTimeoutMs());
-        InputStream in = new BufferedInputStream(s.getInputStream());
-        OutputStream o = new BufferedOutputStream(s.getOutputStream());
-        LinkSession sess = connection.sessions().get();
-        sess.handshake(in, o, sink);
-        o.flush();
-        s.setSoTimeout((int) silenceLimitMs);
-        session = sess;
-        out = o;
-        connects.incrementAndGet();
-        lastConnectMs = (System.nanoTime() - started) / 1e6;
-        up = true;
-        lastError = "";
-        backOff.reset();
-        outages.up();
-        onStateChange.run();
-        sess.keepAlivePeriod().ifPresent(p -> keepAlive = startKeepAlive(sess, p.toMillis()));
-        while (running) {
-            try {
-                sess.readNext(in, sink);
-            } catch (SocketTimeoutException e) {
-                throw new IOException("nothing came for " + silenceLimitMs + " ms from a peer that keeps sending: lost");
-            }
-        }
-    }
-
-    private void markDown() {
-        closeKeepAlive();
-        boolean was = up;
-        up = false;
-        session = null;
-        out = null;
-        closeSocket();
-        if (was) {
-            onStateChange.run();
-        }
-    }
-
-    /** Keep-alives go from a thread of their own, so a robot that stops reading blocks nothing else. */
-    private AutoCloseable startKeepAlive(LinkSession sess, long periodMillis) {
-        Thread t = Thread.ofVirtual().name("habla-keepalive-" + name).start(() -> {
-            while (running && session == sess) {
-                try {
-                    Thread.sleep(Math.max(1, periodMillis));
-                } catch (InterruptedException e) {
-                    return;
-                }
-                if (session == sess) {
-                    write("keep-alive", (x, w) -> x.keepAlive(w));
-                }
-            }
-        });
-        return t::interrupt;
-    }
-
-    private void closeKeepAlive() {
-        AutoCloseable k = keepAlive;
-        keepAlive = null;
-        if (k != null) {
-            try {
-                k.close();
-            } catch (Exception e) {
-                LOG.debug("keep-alive of {} did not close: {}", name, e.toString());
-            }
-        }
-    }
-
-    private void closeSocket() {
-        Socket s = socket;
-        if (s != null) {
-            try {
-                s.close();
-            } catch (IOException e) {
-                LOG.debug("closing {}: {}", name, e.toString());
-            }
-        }
-    }
-
 
     /** Writes a command now; false if the connection is down or the write failed. */
     @Override
@@ -238,14 +107,13 @@ final class ConnectionLink implements Link {
 
     private boolean write(String what, SessionWrite action) {
         writeLock.lock();
+        RobotSession session = link.session();
         try {
-            LinkSession s = session;
-            OutputStream o = out;
-            if (!up || s == null || o == null) {
+            if (session == null) {
                 return false;
             }
-            action.write(s, o);
-            o.flush();
+            action.write(session.protocol, session.out);
+            session.out.flush();
             return true;
         } catch (IllegalArgumentException e) {
             // The session refused to encode this command before writing a byte: drop it, keep the link.
@@ -253,7 +121,7 @@ final class ConnectionLink implements Link {
             return false;
         } catch (IOException | RuntimeException e) {
             LOG.warn("link {}: {} failed, reconnecting: {}", name, what, e.toString());
-            closeSocket();
+            session.close();
             return false;
         } finally {
             writeLock.unlock();
@@ -265,26 +133,107 @@ final class ConnectionLink implements Link {
         ObjectNode n = JsonNodeFactory.instance.objectNode();
         n.put("name", connection.name());
         n.put("port", connection.port());
-        n.put("up", up);
+        n.put("up", link.up());
         n.put("liveness", silenceLimitMs > 0 ? "lost after " + silenceLimitMs + " ms of silence"
                 : "quiet: silence is normal; TCP keep-alive");
         if (connection.optional()) {
             n.put("optional", true);
         }
-        n.put("connects", connects.get());
-        n.put("failures", failures.get());
+        n.put("connects", link.connects());
+        n.put("failures", link.failures());
         if (lastConnectMs >= 0) {
             n.put("lastConnectMs", Math.round(lastConnectMs * 10) / 10.0);
         }
-        if (!lastError.isEmpty()) {
-            n.put("lastError", lastError);
+        if (!link.lastError().isEmpty()) {
+            n.put("lastError", link.lastError());
         }
         return n;
     }
 
     @Override
     public String lastError() {
-        return lastError;
+        return link.lastError();
+    }
+
+    /** One TCP connection to the robot and the driver's session over it. */
+    private final class RobotSession implements ReconnectingLink.Session {
+
+        private volatile Socket socket;
+        private volatile boolean closed;
+        private volatile Thread keepAlive;
+        private InputStream in;
+        private LinkSession protocol;
+        private OutputStream out;
+
+        @Override
+        public void open() throws IOException {
+            Socket s = LinkSocket.create(reconnect.tcpKeepAlive());
+            socket = s;
+            if (closed) {
+                s.close(); // the link was stopped before this socket existed: the connect below fails
+            }
+            long started = System.nanoTime();
+            s.connect(new InetSocketAddress(host, connection.port()), (int) reconnect.connectTimeoutMs());
+            s.setSoTimeout((int) reconnect.connectTimeoutMs());
+            InputStream i = new BufferedInputStream(s.getInputStream());
+            OutputStream o = new BufferedOutputStream(s.getOutputStream());
+            LinkSession sess = connection.sessions().get();
+            sess.handshake(i, o, sink);
+            o.flush();
+            s.setSoTimeout((int) silenceLimitMs);
+            in = i;
+            protocol = sess;
+            out = o;
+            lastConnectMs = (System.nanoTime() - started) / 1e6;
+            sess.keepAlivePeriod().ifPresent(p -> keepAlive = startKeepAlive(p.toMillis()));
+        }
+
+        @Override
+        public void readNext() throws IOException {
+            try {
+                protocol.readNext(in, sink);
+            } catch (SocketTimeoutException e) {
+                throw new IOException("nothing came for " + silenceLimitMs + " ms from a peer that keeps sending: lost");
+            }
+        }
+
+        @Override
+        public void goodbye() {
+            write("goodbye", (s, o) -> s.goodbye(o));
+        }
+
+        /** Keep-alives go from a thread of their own, so a robot that stops reading blocks nothing else. */
+        private Thread startKeepAlive(long periodMillis) {
+            return Thread.ofVirtual().name("habla-keepalive-" + name).start(() -> {
+                while (link.running() && !closed) {
+                    try {
+                        Thread.sleep(Math.max(1, periodMillis));
+                    } catch (InterruptedException e) {
+                        return;
+                    }
+                    if (link.session() == this) {
+                        write("keep-alive", (x, w) -> x.keepAlive(w));
+                    }
+                }
+            });
+        }
+
+        @Override
+        public void close() {
+            closed = true;
+            Thread k = keepAlive;
+            if (k != null) {
+                k.interrupt();
+            }
+            Socket s = socket;
+            if (s != null) {
+                try {
+                    s.close();
+                } catch (IOException e) {
+                    LOG.debug("closing {}: {}", name, e.toString());
+                }
+            }
+        }
     }
 
     @FunctionalInterface

@@ -54,21 +54,13 @@ final class RemotePlacement {
     private final Limits limits;
     private final Reconnect reconnect;
     private final org.habla.security.WorkerLink link;
-    private final BackOff backOff;
-    private final OutageLog outages;
     private final LinkStates states;
+    private final ReconnectingLink<WorkerSession> connection;
     private final ArrayBlockingQueue<Frame> outbound = new ArrayBlockingQueue<>(QUEUE_SAMPLES);
     private final AtomicLong sent = new AtomicLong();
     private final AtomicLong received = new AtomicLong();
     private final AtomicLong dropped = new AtomicLong();
-    private final AtomicLong connects = new AtomicLong();
-    private final AtomicLong failures = new AtomicLong();
     private final AtomicLong badLines = new AtomicLong();
-    private volatile boolean running;
-    private volatile boolean up;
-    private volatile String lastError = "";
-    private volatile Socket socket;
-    private Thread thread;
 
     RemotePlacement(MethodConfig config, MethodRunner runner, Limits limits, Reconnect reconnect, LinkStates states) {
         this(config, runner, limits, reconnect, states, org.habla.security.WorkerLink.PLAIN);
@@ -87,9 +79,20 @@ final class RemotePlacement {
         this.runner = runner;
         this.limits = limits;
         this.reconnect = reconnect;
-        this.backOff = new BackOff(reconnect);
-        this.outages = new OutageLog(LOG, "worker " + config.host().orElseThrow() + " of method " + config.id());
         this.states = states;
+        this.connection = new ReconnectingLink<>("habla-worker-link-" + config.id(), reconnect, WorkerSession::new,
+                new OutageLog(LOG, "worker " + config.host().orElseThrow() + " of method " + config.id()),
+                new ReconnectingLink.StateListener() {
+                    @Override
+                    public void flip(boolean nowUp, boolean wasUp, Runnable flip) {
+                        flipUnderStates(nowUp, wasUp, flip);
+                    }
+
+                    @Override
+                    public void wentDown(boolean wasUp) {
+                        lost();
+                    }
+                });
     }
 
     /** The worker as the config names it ({@code host:port}). */
@@ -99,7 +102,7 @@ final class RemotePlacement {
 
     /** Whether the worker runs the method now. */
     boolean up() {
-        return up;
+        return connection.up();
     }
 
     /** Whether the method runs in the daemon while the worker is lost. */
@@ -109,25 +112,15 @@ final class RemotePlacement {
 
     /** Whether the method's outputs are being produced, here or there. */
     boolean healthy() {
-        return up || fallsBackToLocal();
+        return connection.up() || fallsBackToLocal();
     }
 
     void start() {
-        running = true;
-        thread = Thread.ofVirtual().name("habla-worker-link-" + config.id()).start(this::loop);
+        connection.start();
     }
 
     void stop() {
-        running = false;
-        closeSocket();
-        backOff.wake();
-        if (thread != null) {
-            try {
-                thread.join(2_000);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }
+        connection.stop();
     }
 
     /** Queues a sample for the worker; never blocks. From the method's runner thread. */
@@ -144,95 +137,7 @@ final class RemotePlacement {
 
     /** The wait chooser of this link (tests and benchmarks observe the waits it chooses). */
     BackOff backOff() {
-        return backOff;
-    }
-
-    private void loop() {
-        while (running) {
-            Exception failure;
-            try {
-                runOnce();
-                break;
-            } catch (IOException | RuntimeException e) {
-                failure = e;
-                if (running) {
-                    failures.incrementAndGet();
-                    lastError = e.getMessage() == null ? e.toString() : e.getMessage();
-                    outages.failed(lastError);
-                }
-            } finally {
-                markLost();
-            }
-            if (running) {
-                if (fallsBackToLocal()) {
-                    runner.fallBackToLocal();
-                }
-                if (!backOff.pause(failure, () -> running)) {
-                    running = false;
-                }
-            }
-        }
-    }
-
-    private void runOnce() throws IOException {
-        Socket plain = LinkSocket.create(reconnect.tcpKeepAlive());
-        socket = plain;
-        if (!running) {
-            plain.close();
-            return;
-        }
-        plain.connect(new InetSocketAddress(host, port), (int) reconnect.connectTimeoutMs());
-        plain.setSoTimeout((int) reconnect.connectTimeoutMs());
-        Socket s = link.secure(plain, host, port, (int) reconnect.connectTimeoutMs());
-        socket = s;
-        FrameReader reader = new FrameReader(new BufferedInputStream(s.getInputStream(), 65_536),
-                limits.maxLineBytes(), limits.maxBinaryBytes());
-        FrameWriter writer = new FrameWriter(s.getOutputStream());
-        WorkerProtocol.Hello hello = WorkerProtocol.Hello.of(next(reader));
-        String refusal = hello.refusal(config.type());
-        if (refusal != null) {
-            throw new IOException(refusal);
-        }
-        WorkerProtocol.prove(hello, link.secret(), reader, writer, host());
-        writer.send(WorkerProtocol.place(config.id(), config.type(), config.layer().configName(),
-                ParamsJson.write(config.params()), runner.channelsByInput(), runner.commandChannelsByOutput()));
-        Frame answer = next(reader);
-        if (!answer.type().equals("placed")) {
-            throw new IOException("the worker did not place the method: " + answer.header().path("message")
-                    .asText(answer.header().toString()));
-        }
-        s.setSoTimeout((int) LOST_AFTER_MILLIS);
-        outbound.clear();
-        connects.incrementAndGet();
-        lastError = "";
-        backOff.reset();
-        states.locked(() -> {
-            up = true;
-            states.refreshStaleness();
-        });
-        outages.up();
-        Thread writerThread = Thread.ofVirtual().name("habla-worker-out-" + config.id())
-                .start(() -> writeLoop(writer, s));
-        try {
-            while (running) {
-                Frame f;
-                try {
-                    f = reader.read();
-                } catch (FrameException e) {
-                    if (e.fatal()) {
-                        throw e;
-                    }
-                    badLine(e.getMessage());
-                    continue;
-                }
-                if (f == null) {
-                    throw new IOException("the worker closed the connection");
-                }
-                take(f);
-            }
-        } finally {
-            writerThread.interrupt();
-        }
+        return connection.backOff();
     }
 
     private static Frame next(FrameReader reader) throws IOException {
@@ -279,7 +184,7 @@ final class RemotePlacement {
 
     private void writeLoop(FrameWriter writer, Socket s) {
         try {
-            while (up && running) {
+            while (connection.running()) {
                 Frame f = outbound.poll(250, TimeUnit.MILLISECONDS);
                 if (f == null) {
                     continue;
@@ -303,47 +208,118 @@ final class RemotePlacement {
         }
     }
 
-    private void markLost() {
-        closeSocket();
+    /** Makes the placement up or down under the link-state lock, and brings staleness up to date with it. */
+    private void flipUnderStates(boolean nowUp, boolean wasUp, Runnable flip) {
         states.locked(() -> {
-            boolean was = up;
-            up = false;
-            if (was || connects.get() == 0 && failures.get() == 1) {
+            flip.run();
+            if (nowUp || wasUp || connection.connects() == 0 && connection.failures() == 1) {
                 states.refreshStaleness();
             }
         });
+    }
+
+    /** The worker is lost (or never came): nothing waits for it, and the method runs here if the config says so. */
+    private void lost() {
         outbound.clear();
         if (!fallsBackToLocal()) {
             runner.readiness(false, "worker " + host() + " is lost");
+        } else if (connection.running()) {
+            runner.fallBackToLocal();
         }
     }
-
-    private void closeSocket() {
-        Socket s = socket;
-        if (s != null) {
-            try {
-                s.close();
-            } catch (IOException e) {
-                LOG.debug("close: {}", e.toString());
-            }
-        }
-    }
-
 
     ObjectNode status() {
         ObjectNode n = JsonNodeFactory.instance.objectNode();
         n.put("host", host());
-        n.put("up", up);
+        n.put("up", connection.up());
         n.put("fallback", config.fallback().configName());
-        n.put("connects", connects.get());
-        n.put("failures", failures.get());
+        n.put("connects", connection.connects());
+        n.put("failures", connection.failures());
         n.put("sent", sent.get());
         n.put("received", received.get());
         n.put("dropped", dropped.get());
         n.put("badLines", badLines.get());
-        if (!lastError.isEmpty()) {
-            n.put("lastError", lastError);
+        if (!connection.lastError().isEmpty()) {
+            n.put("lastError", connection.lastError());
         }
         return n;
+    }
+
+    /** One connection to the worker, over which the method is placed and its samples go both ways. */
+    private final class WorkerSession implements ReconnectingLink.Session {
+
+        private volatile Socket socket;
+        private volatile boolean closed;
+        private volatile Thread writerThread;
+        private FrameReader reader;
+
+        @Override
+        public void open() throws IOException {
+            Socket plain = LinkSocket.create(reconnect.tcpKeepAlive());
+            socket = plain;
+            if (closed) {
+                plain.close(); // the link was stopped before this socket existed: the connect below fails
+            }
+            plain.connect(new InetSocketAddress(host, port), (int) reconnect.connectTimeoutMs());
+            plain.setSoTimeout((int) reconnect.connectTimeoutMs());
+            Socket s = link.secure(plain, host, port, (int) reconnect.connectTimeoutMs());
+            socket = s;
+            FrameReader r = new FrameReader(new BufferedInputStream(s.getInputStream(), 65_536),
+                    limits.maxLineBytes(), limits.maxBinaryBytes());
+            FrameWriter writer = new FrameWriter(s.getOutputStream());
+            WorkerProtocol.Hello hello = WorkerProtocol.Hello.of(next(r));
+            String refusal = hello.refusal(config.type());
+            if (refusal != null) {
+                throw new IOException(refusal);
+            }
+            WorkerProtocol.prove(hello, link.secret(), r, writer, host());
+            writer.send(WorkerProtocol.place(config.id(), config.type(), config.layer().configName(),
+                    ParamsJson.write(config.params()), runner.channelsByInput(), runner.commandChannelsByOutput()));
+            Frame answer = next(r);
+            if (!answer.type().equals("placed")) {
+                throw new IOException("the worker did not place the method: " + answer.header().path("message")
+                        .asText(answer.header().toString()));
+            }
+            s.setSoTimeout((int) LOST_AFTER_MILLIS);
+            reader = r;
+            outbound.clear();
+            writerThread = Thread.ofVirtual().name("habla-worker-out-" + config.id())
+                    .start(() -> writeLoop(writer, s));
+        }
+
+        @Override
+        public void readNext() throws IOException {
+            Frame f;
+            try {
+                f = reader.read();
+            } catch (FrameException e) {
+                if (e.fatal()) {
+                    throw e;
+                }
+                badLine(e.getMessage());
+                return;
+            }
+            if (f == null) {
+                throw new IOException("the worker closed the connection");
+            }
+            take(f);
+        }
+
+        @Override
+        public void close() {
+            closed = true;
+            Thread w = writerThread;
+            if (w != null) {
+                w.interrupt();
+            }
+            Socket s = socket;
+            if (s != null) {
+                try {
+                    s.close();
+                } catch (IOException e) {
+                    LOG.debug("close: {}", e.toString());
+                }
+            }
+        }
     }
 }

@@ -11,6 +11,7 @@ import java.util.function.Consumer;
 import java.util.function.Function;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.sample.Payload;
+import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -195,6 +196,11 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
     protected final <P extends Payload> void emit(Output<P> output, P value, long sourceMicros) {
         if (!outputs.contains(output)) {
             throw new IllegalArgumentException(output + " is not an output of " + id());
+        }
+        if (!output.shape().admits(value)) {
+            throw new IllegalArgumentException(id() + "." + output.name() + " carries "
+                    + output.shape().form().getSimpleName() + " records, not "
+                    + ((RecordValue) value).carriesForm().getClass().getSimpleName());
         }
         context().emit(output, Objects.requireNonNull(value, "value"), sourceMicros);
     }

@@ -143,7 +143,7 @@ final class ViewedMethod {
                     names.add("[" + i + "]");
                 }
             }
-            case RecordValue r -> r.json().properties().forEach(e -> {
+            case RecordValue r -> r.jsonView().properties().forEach(e -> {
                 if (e.getValue().isNumber()) {
                     names.add(e.getKey());
                 }
@@ -155,7 +155,7 @@ final class ViewedMethod {
 
     private static ArrayNode recordPoint(double t, RecordValue r) {
         ArrayNode p = JSON.arrayNode().add(t);
-        r.json().properties().forEach(e -> {
+        r.jsonView().properties().forEach(e -> {
             if (e.getValue().isNumber()) {
                 p.add(finite(e.getValue().doubleValue()));
             }

@@ -64,7 +64,7 @@ public final class SampleCodec {
                 }
             }
             case TextValue t -> header.put("value", t.text());
-            case RecordValue r -> header.set("value", finite(r.json()));
+            case RecordValue r -> header.set("value", allFinite(r.jsonView()) ? r.jsonView() : finite(r.json()));
             case AudioChunk a -> {
                 header.put("rateHz", a.format().sampleRateHz())
                         .put("channels", a.format().channels())
@@ -233,6 +233,21 @@ public final class SampleCodec {
     }
 
     /** Replaces non-finite numbers, which JSON cannot carry, by null (in place; {@code node} is a copy). */
+    /** Whether every number in {@code node} is finite (then it is written as it is, without a copy). */
+    private static boolean allFinite(JsonNode node) {
+        if (node.isFloatingPointNumber()) {
+            return Double.isFinite(node.doubleValue());
+        }
+        if (node.isContainerNode()) {
+            for (JsonNode child : node) {
+                if (!allFinite(child)) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
     private static JsonNode finite(JsonNode node) {
         if (node.isFloatingPointNumber() && !Double.isFinite(node.doubleValue())) {
             return NODES.nullNode();

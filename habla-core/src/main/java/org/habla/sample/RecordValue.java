@@ -4,21 +4,31 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Objects;
+import java.util.Optional;
+import java.util.function.Function;
 
 /**
- * A small structured value: a JSON object (a pose, a distance and angle, a blob list).
- * The object is copied in and copied out, so the record stays immutable.
+ * A small structured value (a pose, a distance and angle, a blob list): a JSON object, or a typed
+ * {@link RecordForm} whose JSON is made the first time something asks for it. Immutable: JSON is copied in and
+ * copied out, and a form is immutable itself.
  */
 public final class RecordValue implements Payload {
 
-    private final ObjectNode fields;
+    private final RecordForm form;
+    private volatile ObjectNode fields;
 
-    private RecordValue(ObjectNode fields) {
+    private RecordValue(ObjectNode fields, RecordForm form) {
         this.fields = fields;
+        this.form = form;
     }
 
     public static RecordValue of(ObjectNode fields) {
-        return new RecordValue(Objects.requireNonNull(fields, "fields").deepCopy());
+        return new RecordValue(Objects.requireNonNull(fields, "fields").deepCopy(), null);
+    }
+
+    /** A record that carries {@code form} itself: the methods of this daemon read it without JSON. */
+    public static RecordValue of(RecordForm form) {
+        return new RecordValue(null, Objects.requireNonNull(form, "form"));
     }
 
     /** Starts a record: {@code RecordValue.builder().put("distanceM", 1.2).build()}. */
@@ -26,18 +36,53 @@ public final class RecordValue implements Payload {
         return new Builder();
     }
 
+    /** The typed value this record carries, if it was made from one of type {@code type}. */
+    public <T extends RecordForm> Optional<T> form(Class<T> type) {
+        return type.isInstance(form) ? Optional.of(type.cast(form)) : Optional.empty();
+    }
+
+    /**
+     * The typed value: the one this record carries when it is a {@code type}, else {@code read} applied to this
+     * record (a record that came as JSON: from a socket, a recording or a worker).
+     */
+    public <T extends RecordForm> T as(Class<T> type, Function<RecordValue, T> read) {
+        return type.isInstance(form) ? type.cast(form) : read.apply(this);
+    }
+
+    /** The typed value this record carries, or null when it is plain JSON. */
+    public RecordForm carriesForm() {
+        return form;
+    }
+
     /** A copy of the fields. */
     public ObjectNode json() {
-        return fields.deepCopy();
+        return fields().deepCopy();
+    }
+
+    /**
+     * The fields themselves, made once and shared: only for writing them out (encoders, recorders), never to be
+     * modified.
+     */
+    public ObjectNode jsonView() {
+        return fields();
+    }
+
+    private ObjectNode fields() {
+        ObjectNode f = fields;
+        if (f == null) {
+            f = form.toJson();
+            fields = f; // two threads may both make it: the same content, either one is kept
+        }
+        return f;
     }
 
     /** The field's node (read only: do not modify), or a missing node. */
     public JsonNode get(String name) {
-        return fields.path(name);
+        return fields().path(name);
     }
 
     public double number(String name) {
-        JsonNode n = fields.get(name);
+        JsonNode n = fields().get(name);
         if (n == null || !n.isNumber()) {
             throw new IllegalArgumentException("record has no number field '" + name + "'");
         }
@@ -45,7 +90,7 @@ public final class RecordValue implements Payload {
     }
 
     public String text(String name) {
-        JsonNode n = fields.get(name);
+        JsonNode n = fields().get(name);
         if (n == null || !n.isTextual()) {
             throw new IllegalArgumentException("record has no text field '" + name + "'");
         }
@@ -53,7 +98,7 @@ public final class RecordValue implements Payload {
     }
 
     public boolean has(String name) {
-        return fields.has(name);
+        return fields().has(name);
     }
 
     @Override
@@ -63,50 +108,60 @@ public final class RecordValue implements Payload {
 
     @Override
     public boolean equals(Object o) {
-        return o instanceof RecordValue r && fields.equals(r.fields);
+        return o instanceof RecordValue r && fields().equals(r.fields());
     }
 
     @Override
     public int hashCode() {
-        return fields.hashCode();
+        return fields().hashCode();
     }
 
     @Override
     public String toString() {
-        return "RecordValue" + fields;
+        return "RecordValue" + fields();
     }
 
-    /** Builds a record field by field. */
+    /** Builds a record field by field; the builder may go on after {@link #build()} without changing what it built. */
     public static final class Builder {
-        private final ObjectNode node = JsonNodeFactory.instance.objectNode();
+        private ObjectNode node = JsonNodeFactory.instance.objectNode();
+        private boolean handedOff;
+
+        private ObjectNode node() {
+            if (handedOff) {
+                node = node.deepCopy();
+                handedOff = false;
+            }
+            return node;
+        }
 
         public Builder put(String name, double value) {
-            node.put(name, value);
+            node().put(name, value);
             return this;
         }
 
         public Builder put(String name, long value) {
-            node.put(name, value);
+            node().put(name, value);
             return this;
         }
 
         public Builder put(String name, boolean value) {
-            node.put(name, value);
+            node().put(name, value);
             return this;
         }
 
         public Builder put(String name, String value) {
-            node.put(name, value);
+            node().put(name, value);
             return this;
         }
 
         public Builder set(String name, JsonNode value) {
-            node.set(name, value.deepCopy());
+            node().set(name, value.deepCopy());
             return this;
         }
 
         public RecordValue build() {
-            return new RecordValue(node.deepCopy());
+            handedOff = true;
+            return new RecordValue(node, null);
         }
     }
 }

@@ -43,6 +43,29 @@ final class BenchDaemon {
         return start(robotPort, null, false, security, tls, dir);
     }
 
+    /**
+     * The Pioneer's obstacle chain with its real payloads, from a robot serving {@link BenchRobot.Channels#SONAR}:
+     * the sonar method (vector in, range scan out), nearest-distance (scan in, nearest record out) and a virtual
+     * relay exposing the nearest record: as many methods and hand-offs as {@link #start(int)}'s chain.
+     */
+    static Daemon startSonarChain(int robotPort) throws IOException, ConfigException {
+        int port = DaemonProcess.freePorts(1)[0];
+        String json = """
+                {"system": "bench", "status": {"port": 0, "monitorPort": 0},
+                 "interfaces": [{"id": "robot", "driver": "habla", "address": "127.0.0.1:%d",
+                                 "params": {"channels": %s}}],
+                 "methods": [
+                   {"id": "sonar", "type": "sonar", "layer": "sensors_actuators", "inputs": {"ranges": "@robot.sonar"}},
+                   {"id": "nearest", "type": "nearest-distance", "layer": "processing", "inputs": {"scan": "sonar.scan"}},
+                   {"id": "v", "type": "pass-through", "layer": "virtual", "inputs": {"in": "nearest.nearest"},
+                    "params": {"kind": "record", "delivery": "queue", "capacity": 4096},
+                    "expose": {"port": %d, "name": "value"}}
+                 ]}
+                """.formatted(robotPort, BenchRobot.SONAR_CHANNELS_JSON, port);
+        PluginRegistry registry = PluginRegistry.discover();
+        return Daemon.start(new ConfigLoader(registry).parse(json), registry, EngineClock.system());
+    }
+
     private static Daemon start(int robotPort, String host, boolean monitor, String security, boolean tls,
             java.nio.file.Path dir) throws IOException, ConfigException {
         int[] ports = DaemonProcess.freePorts(2);

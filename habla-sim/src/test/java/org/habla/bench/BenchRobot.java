@@ -24,14 +24,39 @@ final class BenchRobot implements AutoCloseable {
     /** The channels as the config must list them. */
     static final String CHANNELS_JSON = "[{\"name\":\"value\",\"direction\":\"reading\",\"kind\":\"number\"}]";
 
+    /** A ring of eight range sensors (the Pioneer's front sonar, poses in the robot frame), as the sonar bench's robot
+     * announces it. */
+    static final String SONAR_CHANNELS_JSON = "[{\"name\":\"sonar\",\"direction\":\"reading\",\"kind\":\"vector\","
+            + "\"unit\":\"m\",\"meta\":{\"maxRangeM\":5.0,\"poses\":["
+            + "{\"xM\":0.069,\"yM\":0.136,\"thetaRad\":1.5708},{\"xM\":0.114,\"yM\":0.119,\"thetaRad\":0.8727},"
+            + "{\"xM\":0.148,\"yM\":0.078,\"thetaRad\":0.5236},{\"xM\":0.166,\"yM\":0.027,\"thetaRad\":0.1745},"
+            + "{\"xM\":0.166,\"yM\":-0.027,\"thetaRad\":-0.1745},{\"xM\":0.148,\"yM\":-0.078,\"thetaRad\":-0.5236},"
+            + "{\"xM\":0.114,\"yM\":-0.119,\"thetaRad\":-0.8727},{\"xM\":0.069,\"yM\":-0.136,\"thetaRad\":-1.5708}]}}]";
+
+    /** What a robot says first and what each reading it sends says after {@code "t":...,}. */
+    record Channels(String hello, java.util.function.LongFunction<String> reading) {
+        /** One number channel {@code value}, the reading's count. */
+        static final Channels NUMBER = new Channels(HELLO, n -> "\"channel\":\"value\",\"value\":" + n);
+        /** The sonar ring: eight ranges, one of them moving a little with every reading so the nearest changes. */
+        static final Channels SONAR = new Channels("{\"type\":\"hello\",\"protocol\":\"habla-interface/1\","
+                + "\"robot\":\"bench\",\"channels\":" + SONAR_CHANNELS_JSON + "}\n",
+                n -> "\"channel\":\"sonar\",\"value\":[5.0,4.2,3.1," + (1.0 + (n % 100) / 100.0) + ",2.6,3.3,5.0,5.0]");
+    }
+
     private final ServerSocket server;
+    private final Channels channels;
     private final long periodNanos;
     private final Thread thread;
     private volatile long sent;
     private volatile boolean closed;
 
     BenchRobot(long periodNanos) throws IOException {
+        this(periodNanos, Channels.NUMBER);
+    }
+
+    BenchRobot(long periodNanos, Channels channels) throws IOException {
         this.periodNanos = periodNanos;
+        this.channels = channels;
         server = new ServerSocket();
         server.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
         thread = Thread.ofPlatform().name("bench-robot").daemon().start(this::serve);
@@ -52,7 +77,7 @@ final class BenchRobot implements AutoCloseable {
             try (Socket s = server.accept()) {
                 s.setTcpNoDelay(true);
                 OutputStream out = new BufferedOutputStream(s.getOutputStream(), 8192);
-                out.write(HELLO.getBytes(StandardCharsets.UTF_8));
+                out.write(channels.hello().getBytes(StandardCharsets.UTF_8));
                 out.flush();
                 long next = System.nanoTime();
                 long n = 0;
@@ -63,8 +88,8 @@ final class BenchRobot implements AutoCloseable {
                         continue;
                     }
                     n++;
-                    String line = "{\"type\":\"reading\",\"channel\":\"value\",\"t\":" + clock.nowMicros()
-                            + ",\"value\":" + n + "}\n";
+                    String line = "{\"type\":\"reading\",\"t\":" + clock.nowMicros() + ","
+                            + channels.reading().apply(n) + "}\n";
                     out.write(line.getBytes(StandardCharsets.UTF_8));
                     out.flush();
                     sent = n;

@@ -10,7 +10,9 @@ import org.habla.daemon.Daemon;
  * robot stamps it to the moment a control client has parsed it, with readings at a fixed rate; and the
  * same hops through {@link PlainRelay}, on one thread and with four thread hand-offs (as many as the
  * daemon's path: link reader → three method threads → the client's writer), the latter also with its
- * socket reader and writer on virtual threads as in the daemon, as the floor.
+ * socket reader and writer on virtual threads as in the daemon, as the floor. The Pioneer's obstacle chain runs
+ * the same way with its real payloads: eight sonar ranges in, a range scan and a nearest-obstacle record between
+ * the methods.
  */
 final class LatencyBench {
 
@@ -33,6 +35,10 @@ final class LatencyBench {
             Daemon d = BenchDaemon.start(robot.port());
             return new Path(d.port("value"), d::close);
         });
+        measure("daemon: sonar -> nearest-distance -> relay", BenchRobot.Channels.SONAR, robot -> {
+            Daemon d = BenchDaemon.startSonarChain(robot.port());
+            return new Path(d.port("value"), d::close);
+        }, null);
         measure("plain relay, 1 thread", robot -> {
             PlainRelay r = new PlainRelay(robot.port(), 0, false);
             return new Path(r.port(), r::close);
@@ -81,7 +87,11 @@ final class LatencyBench {
     }
 
     Figures measure(String name, PathFactory factory, During during) throws Exception {
-        try (BenchRobot robot = new BenchRobot(1_000_000_000L / rateHz)) {
+        return measure(name, BenchRobot.Channels.NUMBER, factory, during);
+    }
+
+    Figures measure(String name, BenchRobot.Channels channels, PathFactory factory, During during) throws Exception {
+        try (BenchRobot robot = new BenchRobot(1_000_000_000L / rateHz, channels)) {
             Path path = factory.open(robot);
             AutoCloseable extra = null;
             try (SampleClient client = path.connector().connect(path.port())) {

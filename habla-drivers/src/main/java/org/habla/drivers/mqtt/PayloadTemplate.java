@@ -65,7 +65,7 @@ record PayloadTemplate(String text) {
         return switch (command) {
             case NumberValue n -> number(n.value());
             case TextValue t -> t.text();
-            case RecordValue r -> r.json().toString();
+            case RecordValue r -> r.jsonView().toString();
             case VectorValue v -> vector(v.toArray());
             default -> throw new IllegalArgumentException("a " + command.kind().wireName() + " cannot go in a message");
         };

@@ -34,7 +34,7 @@ public final class Wheels extends SensorActuatorMethod {
     private final Output<VectorValue> motionOut = output("motion", VectorValue.class,
             new Shape(PayloadKind.VECTOR, "m/s, rad/s", List.of("vMps", "wRadps"), "the motion sent to the base"));
     private final Output<RecordValue> limitsOut = output("limits", RecordValue.class,
-            Shape.record("the base's top speeds in force", "maxVelMps", "maxRotVelRadps"));
+            Shape.record("the base's top speeds in force", MotionLimits.class));
 
     private MotionLimits limits = MotionLimits.NONE;
     private long malformed;

@@ -59,7 +59,7 @@ public final class HeadControl extends ProcessingMethod {
     }
 
     private void onCamera(RecordValue record, Sample sample) {
-        CameraModel.fromJson(record.json(), null).ifPresent(c -> camera = new CameraModel(
+        CameraModel.fromRecord(record).ifPresent(c -> camera = new CameraModel(
                 params.hfovRad() != null ? params.hfovRad() : c.hfovRad(),
                 params.vfovRad() != null ? params.vfovRad() : c.vfovRad(), c.width(), c.height(), c.heightM()));
     }

@@ -2,6 +2,9 @@ package org.habla.methods.gaze;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import java.util.Optional;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import org.habla.sample.RecordForm;
 import org.habla.sample.RecordValue;
 import org.habla.sample.VectorValue;
 
@@ -10,7 +13,8 @@ import org.habla.sample.VectorValue;
  * the left) and the head's nod (positive looks up). It travels as the {@code head-pose} record
  * {@code {"tiltRad","panRad","nodRad"}} and, as a command, as the vector {@code [tiltRad, panRad, nodRad]}.
  */
-public record HeadPose(double tiltRad, double panRad, double nodRad) {
+@RecordForm.Fields({"tiltRad", "panRad", "nodRad"})
+public record HeadPose(double tiltRad, double panRad, double nodRad) implements RecordForm {
 
     public static final HeadPose STRAIGHT = new HeadPose(0, 0, 0);
 
@@ -26,7 +30,12 @@ public record HeadPose(double tiltRad, double panRad, double nodRad) {
     }
 
     public RecordValue toRecord() {
-        return RecordValue.builder().put("tiltRad", tiltRad).put("panRad", panRad).put("nodRad", nodRad).build();
+        return RecordValue.of(this);
+    }
+
+    @Override
+    public ObjectNode toJson() {
+        return JsonNodeFactory.instance.objectNode().put("tiltRad", tiltRad).put("panRad", panRad).put("nodRad", nodRad);
     }
 
     public VectorValue toVector() {
@@ -35,6 +44,11 @@ public record HeadPose(double tiltRad, double panRad, double nodRad) {
 
     /** Reads the record; a missing nod counts as 0. Empty when tilt or pan is missing or not finite. */
     public static Optional<HeadPose> fromRecord(RecordValue record) {
+        Optional<HeadPose> typed = record.form(HeadPose.class);
+        return typed.isPresent() ? typed : read(record);
+    }
+
+    private static Optional<HeadPose> read(RecordValue record) {
         JsonNode t = record.get("tiltRad");
         JsonNode p = record.get("panRad");
         JsonNode n = record.get("nodRad");

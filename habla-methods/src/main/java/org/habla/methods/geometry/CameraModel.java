@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Optional;
+import org.habla.sample.RecordForm;
 import org.habla.sample.RecordValue;
 
 /**
@@ -24,7 +25,9 @@ import org.habla.sample.RecordValue;
  * @param height  image height, pixels
  * @param heightM height of the lens above the floor, metres
  */
-public record CameraModel(double hfovRad, double vfovRad, int width, int height, double heightM) {
+@RecordForm.Fields({"hfovRad", "vfovRad", "width", "height", "heightM"})
+public record CameraModel(double hfovRad, double vfovRad, int width, int height, double heightM)
+        implements RecordForm {
 
     public CameraModel {
         if (!(hfovRad > 0 && hfovRad < Math.PI) || !(vfovRad > 0 && vfovRad < Math.PI)) {
@@ -66,10 +69,18 @@ public record CameraModel(double hfovRad, double vfovRad, int width, int height,
         return new double[] {width / 2.0 - focalXPx() * y / x, height / 2.0 - focalYPx() * z / x};
     }
 
+    /** The {@code camera} record, carrying this model itself. */
     public RecordValue toRecord() {
-        return RecordValue.of(toJson());
+        return RecordValue.of(this);
     }
 
+    /** The model a {@code camera} record carries; empty when its fields do not make a camera. */
+    public static Optional<CameraModel> fromRecord(RecordValue record) {
+        Optional<CameraModel> typed = record.form(CameraModel.class);
+        return typed.isPresent() ? typed : fromJson(record.jsonView(), null);
+    }
+
+    @Override
     public ObjectNode toJson() {
         return JsonNodeFactory.instance.objectNode().put("hfovRad", hfovRad).put("vfovRad", vfovRad)
                 .put("width", width).put("height", height).put("heightM", heightM);

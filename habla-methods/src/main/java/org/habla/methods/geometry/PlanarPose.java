@@ -4,6 +4,8 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Optional;
+import org.habla.sample.RecordForm;
+import org.habla.sample.RecordValue;
 
 /**
  * A position and heading in the plane of the robot frame: x forward, y to the left, theta
@@ -13,7 +15,8 @@ import java.util.Optional;
  * @param yM       to the left, in metres
  * @param thetaRad heading, in radians, within (-π, π]
  */
-public record PlanarPose(double xM, double yM, double thetaRad) {
+@RecordForm.Fields({"xM", "yM", "thetaRad"})
+public record PlanarPose(double xM, double yM, double thetaRad) implements RecordForm {
 
     public static final PlanarPose ORIGIN = new PlanarPose(0, 0, 0);
 
@@ -60,6 +63,18 @@ public record PlanarPose(double xM, double yM, double thetaRad) {
         return Optional.of(new PlanarPose(xv, yv, tv));
     }
 
+    /** The pose a record carries (itself, or read from its fields as {@link #fromJson} does). */
+    public static Optional<PlanarPose> fromRecord(RecordValue record) {
+        Optional<PlanarPose> typed = record.form(PlanarPose.class);
+        return typed.isPresent() ? typed : fromJson(record.jsonView());
+    }
+
+    /** A {@code pose} record carrying this pose. */
+    public RecordValue toRecord() {
+        return RecordValue.of(this);
+    }
+
+    @Override
     public ObjectNode toJson() {
         return JsonNodeFactory.instance.objectNode().put("xM", xM).put("yM", yM).put("thetaRad", thetaRad);
     }

@@ -7,6 +7,7 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Optional;
+import org.habla.sample.RecordForm;
 import org.habla.sample.RecordValue;
 
 /**
@@ -19,7 +20,8 @@ import org.habla.sample.RecordValue;
  *  "poses": [{"xM": 0.069, "yM": 0.136, "thetaRad": 1.5708}, ...]}      // "poses" absent when unknown
  * }</pre>
  */
-public final class RangeScan {
+@RecordForm.Fields({"rangesM", "valid", "maxRangesM", "poses?"})
+public final class RangeScan implements RecordForm {
 
     /** The most sensors a scan may hold. */
     public static final int MAX_SENSORS = 256;
@@ -82,7 +84,13 @@ public final class RangeScan {
         return rangesM.clone();
     }
 
+    /** The {@code scan} record, carrying this scan itself. */
     public RecordValue toRecord() {
+        return RecordValue.of(this);
+    }
+
+    @Override
+    public ObjectNode toJson() {
         ObjectNode o = JsonNodeFactory.instance.objectNode();
         ArrayNode r = o.putArray("rangesM");
         ArrayNode v = o.putArray("valid");
@@ -96,11 +104,15 @@ public final class RangeScan {
             ArrayNode p = o.putArray("poses");
             poses.forEach(pose -> p.add(pose.toJson()));
         }
-        return RecordValue.of(o);
+        return o;
     }
 
     /** Reads a {@code scan} record; throws {@link IllegalArgumentException} saying what is wrong with it. */
     public static RangeScan fromRecord(RecordValue record) {
+        return record.as(RangeScan.class, RangeScan::read);
+    }
+
+    private static RangeScan read(RecordValue record) {
         JsonNode r = record.get("rangesM");
         JsonNode v = record.get("valid");
         JsonNode m = record.get("maxRangesM");

@@ -50,7 +50,7 @@ public final class MotionComposition extends ProcessingMethod {
     }
 
     private void onLimits(RecordValue value, Sample sample) {
-        limits = MotionLimits.fromJson(value.json()).orElse(MotionLimits.NONE)
+        limits = MotionLimits.fromRecord(value)
                 .overriddenBy(params.maxVelMps(), params.maxRotVelRadps());
         setTarget(targetV, targetW);
     }

@@ -2,6 +2,9 @@ package org.habla.methods.motion;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import java.util.Optional;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import org.habla.sample.RecordForm;
 import org.habla.sample.RecordValue;
 import org.habla.sample.VectorValue;
 
@@ -13,7 +16,8 @@ import org.habla.sample.VectorValue;
  * @param maxVelMps      highest |v|, m/s; infinite when unknown
  * @param maxRotVelRadps highest |w|, rad/s; infinite when unknown
  */
-public record MotionLimits(double maxVelMps, double maxRotVelRadps) {
+@RecordForm.Fields({"maxVelMps?", "maxRotVelRadps?"})
+public record MotionLimits(double maxVelMps, double maxRotVelRadps) implements RecordForm {
 
     /** No limit known. */
     public static final MotionLimits NONE = new MotionLimits(Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY);
@@ -57,14 +61,24 @@ public record MotionLimits(double maxVelMps, double maxRotVelRadps) {
 
     /** The {@code limits} record; an unknown limit is left out. */
     public RecordValue toRecord() {
-        RecordValue.Builder b = RecordValue.builder();
+        return RecordValue.of(this);
+    }
+
+    @Override
+    public ObjectNode toJson() {
+        ObjectNode o = JsonNodeFactory.instance.objectNode();
         if (Double.isFinite(maxVelMps)) {
-            b.put("maxVelMps", maxVelMps);
+            o.put("maxVelMps", maxVelMps);
         }
         if (Double.isFinite(maxRotVelRadps)) {
-            b.put("maxRotVelRadps", maxRotVelRadps);
+            o.put("maxRotVelRadps", maxRotVelRadps);
         }
-        return b.build();
+        return o;
+    }
+
+    /** The limits a {@code limits} record carries; {@link #NONE} when it gives none. */
+    public static MotionLimits fromRecord(RecordValue record) {
+        return record.as(MotionLimits.class, r -> fromJson(r.jsonView()).orElse(NONE));
     }
 
     /**

@@ -61,7 +61,7 @@ public final class MovementSafety extends ProcessingMethod {
     }
 
     private void onLimits(RecordValue value, Sample sample) {
-        limits = MotionLimits.fromJson(value.json()).orElse(MotionLimits.NONE)
+        limits = MotionLimits.fromRecord(value)
                 .overriddenBy(params.maxVelMps(), params.maxRotVelRadps());
         if (wanted) {
             decide(false);

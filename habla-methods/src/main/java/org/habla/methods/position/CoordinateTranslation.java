@@ -63,7 +63,7 @@ public final class CoordinateTranslation extends ProcessingMethod {
     }
 
     private void onCamera(RecordValue record, Sample sample) {
-        CameraModel fromRecord = CameraModel.fromJson(record.json(), null).orElse(null);
+        CameraModel fromRecord = CameraModel.fromRecord(record).orElse(null);
         if (fromRecord == null) {
             rejected++;
             if (rejected == 1 || rejected % 1000 == 0) {
@@ -83,7 +83,7 @@ public final class CoordinateTranslation extends ProcessingMethod {
     }
 
     private void onOdometry(RecordValue record, Sample sample) {
-        PlanarPose.fromJson(record.json()).ifPresentOrElse(p -> odometry = p, () -> rejected++);
+        PlanarPose.fromRecord(record).ifPresentOrElse(p -> odometry = p, () -> rejected++);
     }
 
     private void onNearest(RecordValue record, Sample sample) {

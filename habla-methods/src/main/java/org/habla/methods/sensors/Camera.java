@@ -31,7 +31,7 @@ public final class Camera extends SensorActuatorMethod {
     private final Output<ImageFrame> imageOut = output("image", ImageFrame.class,
             Shape.of(org.habla.sample.PayloadKind.IMAGE));
     private final Output<RecordValue> cameraOut = output("camera", RecordValue.class,
-            Shape.record("the camera's geometry and the size of its frames", "hfovRad", "vfovRad", "width", "height", "heightM"));
+            Shape.record("the camera's geometry and the size of its frames", CameraModel.class));
     private final Input<ImageFrame> image = input("image", ImageFrame.class, Delivery.latest(), this::onImage);
 
     private JsonNode metadata = JsonNodeFactory.instance.objectNode();

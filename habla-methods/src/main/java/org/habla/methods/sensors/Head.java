@@ -27,7 +27,7 @@ public final class Head extends SensorActuatorMethod {
 
     private final HeadParams params;
     private final Output<RecordValue> poseOut = output("pose", RecordValue.class,
-            Shape.record("where the head points, rad", "tiltRad", "panRad", "nodRad"));
+            Shape.record("where the head points, rad", HeadPose.class));
     private final Output<VectorValue> headOut = output("head", VectorValue.class,
             Shape.vector("rad", "[tiltRad, panRad, nodRad] within the joint limits"));
     private final Input<RecordValue> pose = optionalInput("pose", RecordValue.class, Delivery.latest(), this::onPose);

@@ -27,7 +27,7 @@ public final class Odometry extends SensorActuatorMethod {
 
     private final OdometryParams params;
     private final Output<RecordValue> poseOut = output("pose", RecordValue.class,
-            Shape.record("the base's pose by odometry, in its odometry frame", "xM", "yM", "thetaRad"));
+            Shape.record("the base's pose by odometry, in its odometry frame", PlanarPose.class));
     private final Output<VectorValue> velocityOut = output("velocity", VectorValue.class,
             new Shape(PayloadKind.VECTOR, "m/s, rad/s", List.of("vMps", "wRadps"), "the base's speed and turn rate"));
 
@@ -40,7 +40,7 @@ public final class Odometry extends SensorActuatorMethod {
     }
 
     private void onOdometry(RecordValue value, Sample sample) {
-        Optional<PlanarPose> read = PlanarPose.fromJson(value.json());
+        Optional<PlanarPose> read = PlanarPose.fromRecord(value);
         if (read.isEmpty()) {
             if (malformed++ == 0) {
                 log().warn("{}: an odometry record without finite xM, yM, thetaRad was ignored: {}", id(), value);
@@ -54,7 +54,7 @@ public final class Odometry extends SensorActuatorMethod {
             }
             pose = relative(origin, pose);
         }
-        emit(poseOut, RecordValue.of(pose.toJson()));
+        emit(poseOut, pose.toRecord());
         double v = finite(value.get("vMps"));
         double w = finite(value.get("wRadps"));
         if (!Double.isNaN(v) && !Double.isNaN(w)) {

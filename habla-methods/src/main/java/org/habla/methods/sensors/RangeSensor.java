@@ -37,7 +37,7 @@ public final class RangeSensor extends SensorActuatorMethod {
     private final Output<VectorValue> rangesOut = output("ranges", VectorValue.class,
             Shape.vector("m", "cleaned range per sensor; the maximum range where nothing was seen"));
     private final Output<RecordValue> scanOut = output("scan", RecordValue.class,
-            Shape.record("ranges with validity, reach and pose per sensor", "rangesM", "valid", "maxRangesM", "poses"));
+            Shape.record("ranges with validity, reach and pose per sensor", RangeScan.class));
     private final Input<VectorValue> ranges = input("ranges", VectorValue.class, this::onRanges);
     private final Input<RecordValue> head = optionalInput("head", RecordValue.class, Delivery.latest(), this::onHead);
 

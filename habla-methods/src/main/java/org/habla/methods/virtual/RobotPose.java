@@ -21,7 +21,7 @@ import org.habla.sample.Sample;
 public final class RobotPose extends VirtualMethod {
 
     private final Output<RecordValue> out = output("pose", RecordValue.class,
-            Shape.record("the robot's pose: position (m) and heading (rad, counter-clockwise)", "xM", "yM", "thetaRad"));
+            Shape.record("the robot's pose: position (m) and heading (rad, counter-clockwise)", PlanarPose.class));
 
     private long malformed;
 
@@ -30,14 +30,14 @@ public final class RobotPose extends VirtualMethod {
     }
 
     private void onPose(RecordValue value, Sample sample) {
-        Optional<PlanarPose> pose = PlanarPose.fromJson(value.json());
+        Optional<PlanarPose> pose = PlanarPose.fromRecord(value);
         if (pose.isEmpty()) {
             if (malformed++ == 0) {
                 log().warn("{}: a pose record without finite xM, yM, thetaRad was ignored: {}", id(), value);
             }
             return;
         }
-        emit(out, RecordValue.of(pose.get().toJson()));
+        emit(out, pose.get().toRecord());
     }
 
     /** Records without a finite pose, since start. */

@@ -1,0 +1,233 @@
+package org.habla.graph;
+
+import java.io.IOException;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Supplier;
+import org.habla.config.Reconnect;
+
+/**
+ * The one loop that keeps a connection to a peer alive, whatever is spoken over it: a robot's server
+ * ({@link ConnectionLink}), a client library's transport ({@link ClientLink}) or a worker ({@link RemotePlacement}).
+ * Each attempt gets a fresh {@link Session}, which holds the protocol; the loop owns the rest:
+ *
+ * <pre>
+ *   session = sessions.get()
+ *   open() ──ok──▶ mark up ──▶ readNext() … readNext() ──IOException──▶ mark down, close() ──▶ back-off ──▶ next
+ *     └──IOException (count it, log the outage)────────────────────▶ mark down, close() ──▶ back-off ──▶ next
+ * </pre>
+ *
+ * <ul>
+ *   <li>Its thread, the running flag, and the counts the status shows: {@code connects}, {@code failures},
+ *       {@code lastError} (cleared once a session is up).</li>
+ *   <li>The wait between attempts ({@link BackOff}): it starts again from the shortest once a session has been
+ *       up. The outage log ({@link OutageLog}, made by the owner with its own logger and name).</li>
+ *   <li>{@link #stop}: no more attempts; a session that is up says goodbye; the connection is closed, a back-off
+ *       wait ends at once, and the thread is given two seconds to end.</li>
+ * </ul>
+ *
+ * A failure while the link is being stopped is not counted nor logged: it is the stop closing the connection.
+ *
+ * @param <S> the owner's session type, so the owner can write through the session that is up
+ */
+final class ReconnectingLink<S extends ReconnectingLink.Session> {
+
+    /** How long {@link #stop} waits for the link's thread to end. */
+    static final long STOP_JOIN_MILLIS = 2_000;
+
+    /**
+     * The protocol spoken over one connection, for one attempt: opened once, read until it fails, closed once.
+     * {@link #open} and {@link #readNext} run on the link's thread.
+     */
+    interface Session {
+
+        /** Connects and runs the opening exchange; returns once the peer has accepted the session. */
+        void open() throws IOException;
+
+        /**
+         * Blocks for the next unit of input and handles it. An {@link IOException} says the connection is lost
+         * (the peer closed it, went silent for longer than its stream allows, or the connection was closed).
+         */
+        void readNext() throws IOException;
+
+        /** Says goodbye to the peer; called once by {@link ReconnectingLink#stop} while this session is up. */
+        default void goodbye() {
+        }
+
+        /**
+         * Closes the connection and ends what runs beside it, so that {@link #open} or {@link #readNext} in
+         * progress fails. From any thread, more than once, before {@link #open} even; never throws.
+         */
+        void close();
+    }
+
+    /** What the owner of a link does as it comes up and goes down; every method runs on the link's thread. */
+    interface StateListener {
+
+        /**
+         * Runs {@code flip}, which makes the link up or down, together with whatever must change at the same
+         * moment (under the owner's lock, if it has one).
+         *
+         * @param wasUp whether the link was up before; false when an attempt that never came up ends
+         */
+        default void flip(boolean nowUp, boolean wasUp, Runnable flip) {
+            flip.run();
+        }
+
+        /** The link is up and the log has said so; its session is about to be read. */
+        default void wentUp() {
+        }
+
+        /** An attempt or a session ended and its connection is closed; {@code wasUp} if it had been up. */
+        default void wentDown(boolean wasUp) {
+        }
+
+        /** A listener that runs {@code onStateChange} after each change, up or down. */
+        static StateListener notifying(Runnable onStateChange) {
+            return new StateListener() {
+                @Override
+                public void wentUp() {
+                    onStateChange.run();
+                }
+
+                @Override
+                public void wentDown(boolean wasUp) {
+                    if (wasUp) {
+                        onStateChange.run();
+                    }
+                }
+            };
+        }
+    }
+
+    private final String threadName;
+    private final Supplier<S> sessions;
+    private final BackOff backOff;
+    private final OutageLog outages;
+    private final StateListener listener;
+    private final AtomicLong connects = new AtomicLong();
+    private final AtomicLong failures = new AtomicLong();
+    private volatile boolean running;
+    private volatile String lastError = "";
+    /** The session of the attempt in progress, up or not: what {@link #stop} closes. */
+    private volatile S current;
+    /** The session that is up, or null while the link is down. */
+    private volatile S live;
+    private Thread thread;
+
+    /**
+     * @param threadName the name of the link's thread ({@code habla-link-robot/arcos})
+     * @param sessions a fresh session for each attempt
+     * @param outages the outage log, with the owner's logger and its name for the link
+     */
+    ReconnectingLink(String threadName, Reconnect reconnect, Supplier<S> sessions, OutageLog outages,
+            StateListener listener) {
+        this.threadName = threadName;
+        this.sessions = sessions;
+        this.backOff = new BackOff(reconnect);
+        this.outages = outages;
+        this.listener = listener;
+    }
+
+    void start() {
+        running = true;
+        thread = Thread.ofVirtual().name(threadName).start(this::loop);
+    }
+
+    /** Says goodbye if up, closes the connection and stops reconnecting; waits a bounded time for the thread. */
+    void stop() {
+        running = false;
+        S up = live;
+        if (up != null) {
+            up.goodbye();
+        }
+        S attempt = current;
+        if (attempt != null) {
+            attempt.close();
+        }
+        backOff.wake();
+        if (thread != null) {
+            try {
+                thread.join(STOP_JOIN_MILLIS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    /** Whether the link keeps trying: true from {@link #start} until {@link #stop}. */
+    boolean running() {
+        return running;
+    }
+
+    boolean up() {
+        return live != null;
+    }
+
+    /** The session that is up now, or null while the link is down. */
+    S session() {
+        return live;
+    }
+
+    /** Sessions that came up. */
+    long connects() {
+        return connects.get();
+    }
+
+    /** Attempts that failed and sessions that were lost. */
+    long failures() {
+        return failures.get();
+    }
+
+    /** Why the last attempt or session failed; empty when none did, or once a session is up again. */
+    String lastError() {
+        return lastError;
+    }
+
+    /** The wait chooser of this link (tests and benchmarks observe the waits it chooses). */
+    BackOff backOff() {
+        return backOff;
+    }
+
+    private void loop() {
+        while (running) {
+            S s = sessions.get();
+            current = s;
+            Exception failure;
+            try {
+                if (!running) {
+                    break; // stop() came before this attempt was current: it is closed below, never opened
+                }
+                s.open();
+                connects.incrementAndGet();
+                lastError = "";
+                backOff.reset();
+                listener.flip(true, false, () -> live = s);
+                outages.up();
+                listener.wentUp();
+                while (running) {
+                    s.readNext();
+                }
+                break;
+            } catch (IOException | RuntimeException e) {
+                failure = e;
+                if (running) {
+                    failures.incrementAndGet();
+                    lastError = e.getMessage() == null ? e.toString() : e.getMessage();
+                    outages.failed(lastError);
+                }
+            } finally {
+                markDown(s);
+            }
+            if (running && !backOff.pause(failure, () -> running)) {
+                running = false;
+            }
+        }
+    }
+
+    private void markDown(S s) {
+        boolean was = live != null;
+        listener.flip(false, was, () -> live = null);
+        s.close();
+        listener.wentDown(was);
+    }
+}

@@ -1,0 +1,123 @@
+package org.habla.sample;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.habla.method.Delivery;
+import org.habla.method.MethodHarness;
+import org.habla.method.MethodState;
+import org.habla.method.Output;
+import org.habla.method.ProcessingMethod;
+import org.habla.method.Shape;
+import org.habla.net.Frame;
+import org.habla.net.SampleCodec;
+import org.junit.jupiter.api.Test;
+
+class RecordValueTest {
+
+    /** A typed record that counts how often its JSON is made. */
+    @RecordForm.Fields({"xM", "note?"})
+    record Point(double xM, String note, AtomicInteger madeJson) implements RecordForm {
+        @Override
+        public ObjectNode toJson() {
+            madeJson.incrementAndGet();
+            ObjectNode o = JsonNodeFactory.instance.objectNode().put("xM", xM);
+            return note == null ? o : o.put("note", note);
+        }
+    }
+
+    @RecordForm.Fields({"tiltRad"})
+    record Tilt(double tiltRad) implements RecordForm {
+        @Override
+        public ObjectNode toJson() {
+            return JsonNodeFactory.instance.objectNode().put("tiltRad", tiltRad);
+        }
+    }
+
+    @Test
+    void aTypedRecordGivesBackItsOwnValueAndMakesNoJsonUntilAnEdgeAsks() {
+        AtomicInteger made = new AtomicInteger();
+        Point p = new Point(1.5, null, made);
+        RecordValue r = RecordValue.of(p);
+
+        assertThat(r.form(Point.class)).containsSame(p);
+        assertThat(r.as(Point.class, x -> null)).isSameAs(p);
+        assertThat(r.form(Tilt.class)).isEmpty();
+        assertThat(made).hasValue(0);
+
+        assertThat(r.number("xM")).isEqualTo(1.5);
+        assertThat(r.json().toString()).isEqualTo("{\"xM\":1.5}");
+        assertThat(r.jsonView().toString()).isEqualTo("{\"xM\":1.5}");
+        assertThat(made).as("the JSON is made once").hasValue(1);
+    }
+
+    @Test
+    void aRecordThatCameAsJsonIsReadByTheFormsReader() {
+        RecordValue r = RecordValue.of(JsonNodeFactory.instance.objectNode().put("tiltRad", 0.25));
+        assertThat(r.form(Tilt.class)).isEmpty();
+        assertThat(r.as(Tilt.class, x -> new Tilt(x.number("tiltRad")))).isEqualTo(new Tilt(0.25));
+        assertThat(r).isEqualTo(RecordValue.of(new Tilt(0.25))).hasSameHashCodeAs(RecordValue.of(new Tilt(0.25)));
+    }
+
+    @Test
+    void aTypedRecordIsWrittenOnTheWireExactlyAsTheSameRecordBuiltAsJson() {
+        RecordValue typed = RecordValue.of(new Point(2.0, "door", new AtomicInteger()));
+        RecordValue json = RecordValue.builder().put("xM", 2.0).put("note", "door").build();
+        Sample a = new Sample(typed, "p", 10, 7, false);
+        Sample b = new Sample(json, "p", 10, 7, false);
+        Frame fa = SampleCodec.sampleFrame("p", a);
+        Frame fb = SampleCodec.sampleFrame("p", b);
+        assertThat(fa.header().toString()).isEqualTo(fb.header().toString()).contains("\"note\":\"door\"");
+    }
+
+    @Test
+    void aBuilderThatGoesOnAfterBuildingDoesNotChangeWhatItBuilt() {
+        RecordValue.Builder b = RecordValue.builder().put("a", 1.0);
+        RecordValue first = b.build();
+        RecordValue second = b.put("b", 2.0).build();
+        assertThat(first.has("b")).isFalse();
+        assertThat(second.has("a")).isTrue();
+        assertThat(second.number("b")).isEqualTo(2.0);
+    }
+
+    @Test
+    void aShapeNamingAFormListsItsFieldsWithoutTheOptionalMark() {
+        Shape s = Shape.record("a point", Point.class);
+        assertThat(s.fields()).containsExactly("xM", "note");
+        assertThat(s.form()).isEqualTo(Point.class);
+        assertThat(s.kind()).isEqualTo(PayloadKind.RECORD);
+        assertThatThrownBy(() -> Shape.record("no fields", Unnamed.class)).hasMessageContaining("@RecordForm.Fields");
+    }
+
+    record Unnamed() implements RecordForm {
+        @Override
+        public ObjectNode toJson() {
+            return JsonNodeFactory.instance.objectNode();
+        }
+    }
+
+    /** Emits what it is given, as a typed record of whatever form the sample holds, on a {@code Point} port. */
+    static final class PointSource extends ProcessingMethod {
+        private final Output<RecordValue> out = output("out", RecordValue.class, Shape.record("points", Point.class));
+
+        PointSource() {
+            input("in", RecordValue.class, Delivery.queue(4), (value, sample) -> emit(out, value));
+        }
+    }
+
+    @Test
+    void aMethodThatEmitsAnotherFormOnATypedPortFailsSayingWhich() {
+        MethodHarness h = MethodHarness.started("points", new PointSource());
+        h.push("in", RecordValue.of(new Point(1, null, new AtomicInteger())));
+        h.push("in", RecordValue.builder().put("xM", 3.0).build()); // JSON from an edge is let through
+        assertThat(h.values("out")).hasSize(2);
+        assertThat(h.state()).isEqualTo(MethodState.RUNNING);
+
+        h.push("in", RecordValue.of(new Tilt(0.1)));
+        assertThat(h.values("out")).hasSize(2);
+        assertThat(h.state()).isEqualTo(MethodState.FAILED);
+    }
+}
