@@ -68,7 +68,13 @@ public final class PluginsCommand implements Callable<Integer> {
                 if (!doc.unit().isEmpty()) {
                     line.append(" [").append(doc.unit()).append(']');
                 }
-                line.append(doc.defaultValue().isEmpty() ? " (required)" : " = " + doc.defaultValue());
+                if (!doc.defaultValue().isEmpty()) {
+                    line.append(" = ").append(doc.defaultValue());
+                } else if (!doc.defaultNote().isEmpty()) {
+                    line.append(" (when absent: ").append(doc.defaultNote()).append(')');
+                } else {
+                    line.append(" (required)");
+                }
                 line.append("  ").append(doc.value());
             }
             out.println(line);

@@ -1,6 +1,5 @@
 package org.habla.config;
 
-import com.fasterxml.jackson.annotation.JsonProperty;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonMappingException;
 import com.fasterxml.jackson.databind.JsonNode;
@@ -22,10 +21,12 @@ import java.util.List;
 import java.util.Optional;
 import java.util.TreeSet;
 import java.util.regex.Pattern;
+import org.habla.plugin.ParamDefaults;
 
 /**
  * Binds a method's or an interface's {@code params} object to its type's params record, strictly: no
- * unknown keys, no nulls for primitives, no {@code "5"} for a number or {@code 5} for a string. Every
+ * unknown keys, no nulls for primitives, no {@code "5"} for a number or {@code 5} for a string. Keys
+ * left out are first filled with their declared defaults ({@link ParamDefaults#filled}). Every
  * failure becomes a {@link ConfigError} at the JSON path of the offending value; an exception thrown by
  * the record's constructor becomes an error at the parameter it names, or at {@code params}.
  */
@@ -86,6 +87,7 @@ final class ParamsBinder {
                 errors.add(path.field(key), "unknown parameter '" + key + "' (" + known(names) + ")");
             }
         });
+        node = ParamDefaults.filled(node, type);
         for (RecordComponent c : type.getRecordComponents()) {
             if (c.getType().isPrimitive() && !node.has(jsonName(c))) {
                 errors.add(path.field(jsonName(c)), "required parameter '" + jsonName(c) + "' is missing");
@@ -133,11 +135,7 @@ final class ParamsBinder {
     }
 
     static String jsonName(RecordComponent c) {
-        JsonProperty p = c.getAnnotation(JsonProperty.class);
-        if (p == null && c.getAccessor() != null) {
-            p = c.getAccessor().getAnnotation(JsonProperty.class);
-        }
-        return p != null && !p.value().isEmpty() ? p.value() : c.getName();
+        return ParamDefaults.key(c);
     }
 
     private static JsonPath pathOf(JsonMappingException e, JsonPath base, Class<? extends Record> type) {

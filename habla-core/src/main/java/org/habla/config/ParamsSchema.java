@@ -1,7 +1,5 @@
 package org.habla.config;
 
-import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -15,15 +13,16 @@ import java.util.Collection;
 import java.util.Map;
 import java.util.Optional;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /**
  * The JSON Schema of one params record: an object whose properties are the record's components, typed
- * from their Java types and documented from their {@link Param} annotations (meaning, unit, default).
+ * from their Java types and documented from their {@link Param} annotations (meaning, unit, default; a
+ * {@link Param#defaultNote()} joins the description, since it is no value of the property's type).
  */
 final class ParamsSchema {
 
     private static final JsonNodeFactory NODES = JsonNodeFactory.instance;
-    private static final ObjectMapper JSON = new ObjectMapper();
 
     private ParamsSchema() {
     }
@@ -41,13 +40,14 @@ final class ParamsSchema {
             Param doc = c.getAnnotation(Param.class);
             if (doc != null) {
                 String unit = doc.unit().isEmpty() ? "" : " [" + doc.unit() + "]";
-                property.put("description", doc.value() + unit);
+                String note = doc.defaultNote().isEmpty() ? "" : "; when absent: " + doc.defaultNote();
+                property.put("description", doc.value() + unit + note);
                 if (!doc.unit().isEmpty()) {
                     property.put("x-unit", doc.unit());
                 }
-                defaultOf(doc).ifPresent(d -> property.set("default", d));
+                ParamDefaults.json(type, c).ifPresent(d -> property.set("default", d));
             }
-            if (doc == null ? c.getType().isPrimitive() : doc.defaultValue().isEmpty()) {
+            if (doc == null ? c.getType().isPrimitive() : doc.defaultValue().isEmpty() && doc.defaultNote().isEmpty()) {
                 required.add(name);
             }
             properties.set(name, property);
@@ -111,16 +111,5 @@ final class ParamsSchema {
             s.put("type", "object");
         }
         return s;
-    }
-
-    private static Optional<JsonNode> defaultOf(Param doc) {
-        if (doc.defaultValue().isEmpty()) {
-            return Optional.empty();
-        }
-        try {
-            return Optional.of(JSON.readTree(doc.defaultValue()));
-        } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
-            return Optional.of(NODES.textNode(doc.defaultValue()));
-        }
     }
 }

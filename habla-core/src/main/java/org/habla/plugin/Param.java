@@ -6,9 +6,11 @@ import java.lang.annotation.RetentionPolicy;
 import java.lang.annotation.Target;
 
 /**
- * Documents one parameter of a params record: its unit, its default (as JSON text, or empty when
- * the parameter is required) and its meaning. Read by {@code habla plugins}, the docs and the
- * config schema.
+ * Documents one parameter of a params record: its unit, its default and its meaning. Read by
+ * {@code habla plugins}, the docs and the config schema, and by the config loader, which fills a
+ * parameter left out of {@code params} with its {@link #defaultValue()} before the record is built.
+ *
+ * <p>A parameter is required when it has neither a {@link #defaultValue()} nor a {@link #defaultNote()}.
  */
 @Retention(RetentionPolicy.RUNTIME)
 @Target({ElementType.RECORD_COMPONENT, ElementType.FIELD, ElementType.PARAMETER, ElementType.METHOD})
@@ -20,8 +22,18 @@ public @interface Param {
     /** The unit ({@code "m"}, {@code "ms"}, {@code "rad"}), empty if none. */
     String unit() default "";
 
-    /** The default as JSON text ({@code "0.5"}, {@code "\"jpeg\""}); empty means required. */
+    /**
+     * The default as JSON text of the parameter's type ({@code "0.5"}, {@code "\"jpeg\""},
+     * {@code "[]"}), filled in when the key is left out; empty when there is no fixed default.
+     */
     String defaultValue() default "";
+
+    /**
+     * What happens when the key is left out and there is no fixed default, in words ({@code "channel
+     * metadata, else 0.18"}): the record receives null and decides. Empty for a parameter with a
+     * {@link #defaultValue()} or a required one.
+     */
+    String defaultNote() default "";
 
     /**
      * The value is a file path. A relative path is taken from the folder of the config file that

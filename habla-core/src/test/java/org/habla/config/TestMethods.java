@@ -13,6 +13,7 @@ import org.habla.method.VirtualMethod;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.NoParams;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 import org.habla.sample.NumberValue;
 import org.habla.sample.Payload;
 import org.habla.sample.RecordValue;
@@ -34,9 +35,9 @@ final class TestMethods {
             @Param(value = "Ranges below this are ignored", unit = "m", defaultValue = "0.1") Double minRangeM,
             @Param(value = "Which transducers to use; empty means all", defaultValue = "[]") List<Integer> use) {
         SonarParams {
-            maxRangeM = maxRangeM == null ? 5.0 : maxRangeM;
-            minRangeM = minRangeM == null ? 0.1 : minRangeM;
-            use = use == null ? List.of() : List.copyOf(use);
+            maxRangeM = ParamDefaults.or(SonarParams.class, "maxRangeM", maxRangeM);
+            minRangeM = ParamDefaults.or(SonarParams.class, "minRangeM", minRangeM);
+            use = List.copyOf(ParamDefaults.or(SonarParams.class, "use", use));
             if (!(maxRangeM > 0)) {
                 throw new IllegalArgumentException("maxRangeM must be positive, was " + maxRangeM);
             }
@@ -53,7 +54,7 @@ final class TestMethods {
         enum Stop { SOFT, HARD }
 
         WheelsParams {
-            stop = stop == null ? Stop.SOFT : stop;
+            stop = ParamDefaults.or(WheelsParams.class, "stop", stop);
         }
     }
 
@@ -62,8 +63,8 @@ final class TestMethods {
             @Param(value = "Label of the step", defaultValue = "\"step\"") String label,
             @Param(value = "Whether to log each step", defaultValue = "false") Boolean verbose) {
         StepParams {
-            label = label == null ? "step" : label;
-            verbose = verbose != null && verbose;
+            label = ParamDefaults.or(StepParams.class, "label", label);
+            verbose = ParamDefaults.or(StepParams.class, "verbose", verbose);
         }
     }
 

@@ -1,53 +1,86 @@
 package org.habla.methods;
 
+import org.habla.plugin.ParamDefaults;
+
 /**
- * The checks params records apply in their compact constructors: each fills in a default for a
- * missing (null) value and throws an {@link IllegalArgumentException} naming the parameter when the
- * value is out of bounds.
+ * The checks params records apply in their compact constructors: each throws an
+ * {@link IllegalArgumentException} naming the parameter when the value is out of bounds. A null (from
+ * Java code; the config loader has already filled left-out keys) takes the default the record declares in
+ * its {@link org.habla.plugin.Param} annotation, so the default is written only there.
  */
 public final class ParamRules {
 
     private ParamRules() {
     }
 
-    /** A finite number greater than zero. */
-    public static double positive(String name, Double value, double fallback) {
-        double v = value == null ? fallback : value;
-        if (!(v > 0) || !Double.isFinite(v)) {
-            throw new IllegalArgumentException(name + " must be a positive number, was " + value);
-        }
-        return v;
+    /** A finite number greater than zero; null takes the declared default. */
+    public static double positive(Class<? extends Record> params, String name, Double value) {
+        return positive(name, ParamDefaults.or(params, name, value));
     }
 
-    /** A finite number of at least zero. */
-    public static double nonNegative(String name, Double value, double fallback) {
-        double v = value == null ? fallback : value;
-        if (!(v >= 0) || !Double.isFinite(v)) {
-            throw new IllegalArgumentException(name + " must be a number of at least 0, was " + value);
-        }
-        return v;
+    /** A finite number of at least zero; null takes the declared default. */
+    public static double nonNegative(Class<? extends Record> params, String name, Double value) {
+        return nonNegative(name, ParamDefaults.or(params, name, value));
     }
 
-    /** A finite number within [min, max]. */
+    /** A finite number within [min, max]; null takes the declared default. */
+    public static double within(Class<? extends Record> params, String name, Double value, double min, double max) {
+        return within(name, ParamDefaults.or(params, name, value), min, max);
+    }
+
+    /** A whole number within [min, max]; null takes the declared default. */
+    public static int within(Class<? extends Record> params, String name, Integer value, int min, int max) {
+        return within(name, ParamDefaults.or(params, name, value), min, max);
+    }
+
+    /**
+     * A finite number within [min, max], or {@code fallback} when null: for a default computed from other
+     * parameters, which an annotation cannot state.
+     */
     public static double within(String name, Double value, double fallback, double min, double max) {
-        double v = value == null ? fallback : value;
-        if (!(v >= min && v <= max)) {
-            throw new IllegalArgumentException(name + " must be within [" + min + ", " + max + "], was " + value);
-        }
-        return v;
-    }
-
-    /** A whole number within [min, max]. */
-    public static int within(String name, Integer value, int fallback, int min, int max) {
-        int v = value == null ? fallback : value;
-        if (v < min || v > max) {
-            throw new IllegalArgumentException(name + " must be within " + min + ".." + max + ", was " + value);
-        }
-        return v;
+        return within(name, value == null ? fallback : value, min, max);
     }
 
     /** A positive number, or null when the parameter is left to the channel's metadata. */
     public static Double positiveOrNull(String name, Double value) {
-        return value == null ? null : positive(name, value, 0);
+        return value == null ? null : positive(name, value);
+    }
+
+    /** A number of at least zero, or null when the parameter is left to the channel's metadata. */
+    public static Double nonNegativeOrNull(String name, Double value) {
+        return value == null ? null : nonNegative(name, value);
+    }
+
+    /** A number within [min, max], or null when the parameter is left to the channel's metadata. */
+    public static Double withinOrNull(String name, Double value, double min, double max) {
+        return value == null ? null : within(name, value, min, max);
+    }
+
+    private static double positive(String name, double v) {
+        if (!(v > 0) || !Double.isFinite(v)) {
+            throw new IllegalArgumentException(name + " must be a positive number, was " + v);
+        }
+        return v;
+    }
+
+    private static double nonNegative(String name, double v) {
+        if (!(v >= 0) || !Double.isFinite(v)) {
+            throw new IllegalArgumentException(name + " must be a number of at least 0, was " + v);
+        }
+        return v;
+    }
+
+    private static double within(String name, double v, double min, double max) {
+        if (!(v >= min && v <= max)) {
+            throw new IllegalArgumentException(name + " must be within [" + min + ", " + max + "], was " + v);
+        }
+        return v;
+    }
+
+    private static int within(String name, int v, int min, int max) {
+        if (v < min || v > max) {
+            throw new IllegalArgumentException(name + " must be within " + min + ".." + max + ", was " + v);
+        }
+        return v;
     }
 }

@@ -3,6 +3,7 @@ package org.habla.method.builtin;
 import java.util.Locale;
 import org.habla.method.Delivery;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 import org.habla.sample.PayloadKind;
 
 /**
@@ -19,9 +20,9 @@ public record RelayParams(
         Integer capacity) {
 
     public RelayParams {
-        kind = kind == null ? "any" : kind.toLowerCase(Locale.ROOT);
-        delivery = delivery == null ? "latest" : delivery.toLowerCase(Locale.ROOT);
-        capacity = capacity == null ? 64 : capacity;
+        kind = ParamDefaults.or(RelayParams.class, "kind", kind).toLowerCase(Locale.ROOT);
+        delivery = ParamDefaults.or(RelayParams.class, "delivery", delivery).toLowerCase(Locale.ROOT);
+        capacity = ParamDefaults.or(RelayParams.class, "capacity", capacity);
         try {
             PayloadKind.fromWire(kind);
         } catch (IllegalArgumentException e) {

@@ -1,11 +1,11 @@
 package org.habla.drivers.iface;
 
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Locale;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.driver.Driver;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 import org.habla.sample.PayloadKind;
 
 /**
@@ -22,9 +22,9 @@ public record ChannelSpec(
         @Param(value = "facts general methods need, e.g. sensor poses", defaultValue = "{}") ObjectNode meta) {
 
     public ChannelSpec {
-        unit = unit == null ? "" : unit;
-        motion = motion != null && motion;
-        meta = meta == null ? JsonNodeFactory.instance.objectNode() : meta.deepCopy();
+        unit = ParamDefaults.or(ChannelSpec.class, "unit", unit);
+        motion = ParamDefaults.or(ChannelSpec.class, "motion", motion);
+        meta = ParamDefaults.or(ChannelSpec.class, "meta", meta).deepCopy();
         if (name == null) {
             throw new IllegalArgumentException("name: every channel needs a name");
         }

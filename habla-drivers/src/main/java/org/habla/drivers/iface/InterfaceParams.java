@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Set;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /**
  * The params of a {@code habla} interface: the channels the config expects the interface program to announce
@@ -40,7 +41,7 @@ public record InterfaceParams(
                 throw new IllegalArgumentException("channels: '" + c.name() + "' is listed twice");
             }
         }
-        keepAliveMs = keepAliveMs == null ? 500 : keepAliveMs;
+        keepAliveMs = ParamDefaults.or(InterfaceParams.class, "keepAliveMs", keepAliveMs);
         if (keepAliveMs < 50 || keepAliveMs > 60_000) {
             throw new IllegalArgumentException("keepAliveMs must be within 50..60000, was " + keepAliveMs);
         }

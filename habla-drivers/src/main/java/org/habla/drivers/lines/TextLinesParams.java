@@ -1,6 +1,7 @@
 package org.habla.drivers.lines;
 
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /** The params of a {@code text-lines} interface. The charset is always UTF-8. */
 public record TextLinesParams(
@@ -12,7 +13,7 @@ public record TextLinesParams(
     public static final int MAX_LINE_BYTES = 1 << 20;
 
     public TextLinesParams {
-        maxLineBytes = maxLineBytes == null ? 1024 : maxLineBytes;
+        maxLineBytes = ParamDefaults.or(TextLinesParams.class, "maxLineBytes", maxLineBytes);
         if (maxLineBytes < 1 || maxLineBytes > MAX_LINE_BYTES) {
             throw new IllegalArgumentException("maxLineBytes must be in 1.." + MAX_LINE_BYTES + ", was " + maxLineBytes);
         }

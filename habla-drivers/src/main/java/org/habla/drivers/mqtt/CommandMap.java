@@ -2,6 +2,7 @@ package org.habla.drivers.mqtt;
 
 import org.habla.driver.ChannelDescriptor;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /**
  * One command channel of an {@code mqtt} interface: every command becomes one message on a topic, its payload
@@ -26,12 +27,12 @@ public record CommandMap(
                 + "watchdog)", defaultValue = "false") Boolean motion) {
 
     public CommandMap {
-        kind = kind == null ? "record" : kind;
-        unit = unit == null ? "" : unit;
-        template = template == null ? "{{value}}" : template;
-        qos = qos == null ? 1 : qos;
-        device = device == null ? "" : device;
-        motion = motion != null && motion;
+        kind = ParamDefaults.or(CommandMap.class, "kind", kind);
+        unit = ParamDefaults.or(CommandMap.class, "unit", unit);
+        template = ParamDefaults.or(CommandMap.class, "template", template);
+        qos = ParamDefaults.or(CommandMap.class, "qos", qos);
+        device = ParamDefaults.or(CommandMap.class, "device", device);
+        motion = ParamDefaults.or(CommandMap.class, "motion", motion);
         if (channel == null || topic == null) {
             throw new IllegalArgumentException("commands: every command needs a \"channel\" and a \"topic\"");
         }

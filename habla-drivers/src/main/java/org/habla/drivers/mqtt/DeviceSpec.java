@@ -1,6 +1,7 @@
 package org.habla.drivers.mqtt;
 
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /**
  * A device on the broker whose availability topic says whether it is there: Zigbee2MQTT's
@@ -16,8 +17,8 @@ public record DeviceSpec(
         String offline) {
 
     public DeviceSpec {
-        online = online == null ? "online" : online;
-        offline = offline == null ? "offline" : offline;
+        online = ParamDefaults.or(DeviceSpec.class, "online", online);
+        offline = ParamDefaults.or(DeviceSpec.class, "offline", offline);
         if (name == null || name.isBlank() || availabilityTopic == null) {
             throw new IllegalArgumentException("devices: every device needs a \"name\" and an \"availabilityTopic\"");
         }

@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.regex.Pattern;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /**
  * The params of an {@code mqtt} bridge: which sockets it publishes, which take actions from topics, and how to
@@ -39,34 +40,34 @@ public record MqttBridgeParams(
     private static final Pattern LEVEL = Pattern.compile("[A-Za-z0-9_-]{1,64}");
 
     public MqttBridgeParams {
-        publish = publish == null ? List.of() : List.copyOf(new LinkedHashSet<>(publish));
-        actions = actions == null ? List.of() : List.copyOf(new LinkedHashSet<>(actions));
+        publish = List.copyOf(new LinkedHashSet<>(ParamDefaults.or(MqttBridgeParams.class, "publish", publish)));
+        actions = List.copyOf(new LinkedHashSet<>(ParamDefaults.or(MqttBridgeParams.class, "actions", actions)));
         if (publish.isEmpty() && actions.isEmpty()) {
             throw new IllegalArgumentException("publish, actions: name at least one socket to carry");
         }
-        baseTopic = baseTopic == null ? "habla" : baseTopic;
+        baseTopic = ParamDefaults.or(MqttBridgeParams.class, "baseTopic", baseTopic);
         if (!LEVEL.matcher(baseTopic).matches()) {
             throw new IllegalArgumentException("baseTopic must be one topic level of letters, digits, '_' or '-', was '"
                     + baseTopic + "'");
         }
-        discovery = discovery == null || discovery;
-        discoveryPrefix = discoveryPrefix == null ? "homeassistant" : discoveryPrefix;
+        discovery = ParamDefaults.or(MqttBridgeParams.class, "discovery", discovery);
+        discoveryPrefix = ParamDefaults.or(MqttBridgeParams.class, "discoveryPrefix", discoveryPrefix);
         if (!LEVEL.matcher(discoveryPrefix).matches()) {
             throw new IllegalArgumentException("discoveryPrefix must be one topic level, was '" + discoveryPrefix + "'");
         }
-        maxHz = maxHz == null ? 0 : maxHz;
+        maxHz = ParamDefaults.or(MqttBridgeParams.class, "maxHz", maxHz);
         if (!(maxHz >= 0) || maxHz > 100_000) {
             throw new IllegalArgumentException("maxHz must be within 0..100000, was " + maxHz);
         }
-        clientId = clientId == null ? "" : clientId;
-        username = username == null ? "" : username;
-        password = password == null ? "" : password;
-        passwordFile = passwordFile == null ? "" : passwordFile;
+        clientId = ParamDefaults.or(MqttBridgeParams.class, "clientId", clientId);
+        username = ParamDefaults.or(MqttBridgeParams.class, "username", username);
+        password = ParamDefaults.or(MqttBridgeParams.class, "password", password);
+        passwordFile = ParamDefaults.or(MqttBridgeParams.class, "passwordFile", passwordFile);
         if (!password.isEmpty() && !passwordFile.isEmpty()) {
             throw new IllegalArgumentException("give password or passwordFile, not both");
         }
-        tls = tls != null && tls;
-        caFile = caFile == null ? "" : caFile;
+        tls = ParamDefaults.or(MqttBridgeParams.class, "tls", tls);
+        caFile = ParamDefaults.or(MqttBridgeParams.class, "caFile", caFile);
         if (!caFile.isEmpty() && !tls) {
             throw new IllegalArgumentException("caFile is for TLS: set \"tls\": true as well");
         }

@@ -5,6 +5,7 @@ import java.util.List;
 import java.util.Set;
 import org.habla.driver.Driver;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /**
  * The params of an {@code mqtt} interface: how to reach the broker, and the mapping of topics to channels.
@@ -49,36 +50,36 @@ public record MqttParams(
     public static final int MAX_QUEUE_MESSAGES = 65_536;
 
     public MqttParams {
-        version = version == null ? "5" : version;
+        version = ParamDefaults.or(MqttParams.class, "version", version);
         BrokerEndpoint.MqttVersion.fromConfig(version);
-        clientId = clientId == null ? "" : clientId;
-        username = username == null ? "" : username;
-        password = password == null ? "" : password;
-        passwordFile = passwordFile == null ? "" : passwordFile;
+        clientId = ParamDefaults.or(MqttParams.class, "clientId", clientId);
+        username = ParamDefaults.or(MqttParams.class, "username", username);
+        password = ParamDefaults.or(MqttParams.class, "password", password);
+        passwordFile = ParamDefaults.or(MqttParams.class, "passwordFile", passwordFile);
         if (!password.isEmpty() && !passwordFile.isEmpty()) {
             throw new IllegalArgumentException("give password or passwordFile, not both");
         }
-        tls = tls != null && tls;
-        caFile = caFile == null ? "" : caFile;
+        tls = ParamDefaults.or(MqttParams.class, "tls", tls);
+        caFile = ParamDefaults.or(MqttParams.class, "caFile", caFile);
         if (!caFile.isEmpty() && !tls) {
             throw new IllegalArgumentException("caFile is for TLS: set \"tls\": true as well");
         }
-        keepAliveS = keepAliveS == null ? 5 : keepAliveS;
+        keepAliveS = ParamDefaults.or(MqttParams.class, "keepAliveS", keepAliveS);
         if (keepAliveS < 1 || keepAliveS > MAX_KEEP_ALIVE_S) {
             throw new IllegalArgumentException("keepAliveS must be within 1.." + MAX_KEEP_ALIVE_S + ", was " + keepAliveS);
         }
-        subscribeQos = subscribeQos == null ? 0 : subscribeQos;
+        subscribeQos = ParamDefaults.or(MqttParams.class, "subscribeQos", subscribeQos);
         if (subscribeQos != 0 && subscribeQos != 1) {
             throw new IllegalArgumentException("subscribeQos must be 0 or 1, was " + subscribeQos);
         }
-        queueMessages = queueMessages == null ? 1024 : queueMessages;
+        queueMessages = ParamDefaults.or(MqttParams.class, "queueMessages", queueMessages);
         if (queueMessages < 1 || queueMessages > MAX_QUEUE_MESSAGES) {
             throw new IllegalArgumentException("queueMessages must be within 1.." + MAX_QUEUE_MESSAGES + ", was "
                     + queueMessages);
         }
-        devices = devices == null ? List.of() : List.copyOf(devices);
-        readings = readings == null ? List.of() : List.copyOf(readings);
-        commands = commands == null ? List.of() : List.copyOf(commands);
+        devices = List.copyOf(ParamDefaults.or(MqttParams.class, "devices", devices));
+        readings = List.copyOf(ParamDefaults.or(MqttParams.class, "readings", readings));
+        commands = List.copyOf(ParamDefaults.or(MqttParams.class, "commands", commands));
         if (readings.isEmpty() && commands.isEmpty()) {
             throw new IllegalArgumentException("readings, commands: map at least one topic to a channel");
         }

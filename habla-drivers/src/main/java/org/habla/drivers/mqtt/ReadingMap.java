@@ -3,6 +3,7 @@ package org.habla.drivers.mqtt;
 import java.util.Map;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 import org.habla.sample.PayloadKind;
 
 /**
@@ -25,11 +26,11 @@ public record ReadingMap(
                 defaultValue = "{}") Map<String, Double> values) {
 
     public ReadingMap {
-        field = field == null ? "" : field;
-        kind = kind == null ? "number" : kind;
-        unit = unit == null ? "" : unit;
-        device = device == null ? "" : device;
-        values = values == null ? Map.of() : Map.copyOf(values);
+        field = ParamDefaults.or(ReadingMap.class, "field", field);
+        kind = ParamDefaults.or(ReadingMap.class, "kind", kind);
+        unit = ParamDefaults.or(ReadingMap.class, "unit", unit);
+        device = ParamDefaults.or(ReadingMap.class, "device", device);
+        values = Map.copyOf(ParamDefaults.or(ReadingMap.class, "values", values));
         if (channel == null || topic == null) {
             throw new IllegalArgumentException("readings: every reading needs a \"channel\" and a \"topic\"");
         }

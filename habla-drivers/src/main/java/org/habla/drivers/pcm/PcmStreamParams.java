@@ -1,6 +1,7 @@
 package org.habla.drivers.pcm;
 
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 import org.habla.sample.AudioFormat;
 
 /** The params of a {@code pcm-stream} interface: the layout of the raw PCM and the length of each chunk. */
@@ -20,10 +21,10 @@ public record PcmStreamParams(
     public static final int MAX_CHUNK_MS = 2_000;
 
     public PcmStreamParams {
-        rateHz = rateHz == null ? 16_000 : rateHz;
-        channels = channels == null ? 1 : channels;
-        bits = bits == null ? 16 : bits;
-        chunkMs = chunkMs == null ? 100 : chunkMs;
+        rateHz = ParamDefaults.or(PcmStreamParams.class, "rateHz", rateHz);
+        channels = ParamDefaults.or(PcmStreamParams.class, "channels", channels);
+        bits = ParamDefaults.or(PcmStreamParams.class, "bits", bits);
+        chunkMs = ParamDefaults.or(PcmStreamParams.class, "chunkMs", chunkMs);
         if (rateHz < 1_000 || rateHz > 192_000) {
             throw new IllegalArgumentException("rateHz must be in 1000..192000, was " + rateHz);
         }

@@ -2,6 +2,7 @@ package org.habla.drivers.pioneer;
 
 import java.util.List;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /**
  * The params of a {@code pioneer} interface: the session's behaviour, the robot's conversion factors
@@ -46,10 +47,10 @@ public record PioneerParams(
         @Param(value = "Longest range a sonar reports (also its reading when nothing is in view)", unit = "m",
                 defaultValue = "5.0")
         Double maxRangeM,
-        @Param(value = "Full width of a sonar beam", unit = "rad", defaultValue = "0.5236")
+        @Param(value = "Full width of a sonar beam", unit = "rad", defaultValue = "0.5235987755982988")
         Double beamWidthRad,
         @Param(value = "Sonar transducer poses [{xM, yM, thetaRad}], one per transducer in index order",
-                unit = "m, rad", defaultValue = "the 16 P2DX poses")
+                unit = "m, rad", defaultNote = "the 16 P2DX poses")
         List<SonarPose> sonarPoses) {
 
     /** The Pioneer 2 DX sonar ring: front 0–7 from the left side round to the right, rear 8–15 back round. */
@@ -65,23 +66,23 @@ public record PioneerParams(
     public static final int MAX_SONARS = 32;
 
     public PioneerParams {
-        enableMotors = enableMotors == null ? Boolean.TRUE : enableMotors;
-        keepAlivePeriodMs = keepAlivePeriodMs == null ? 500 : keepAlivePeriodMs;
-        distConvFactor = positive("distConvFactor", distConvFactor, 0.840);
-        angleConvFactor = positive("angleConvFactor", angleConvFactor, 0.001534);
-        velConvFactor = positive("velConvFactor", velConvFactor, 1.0);
-        rangeConvFactor = positive("rangeConvFactor", rangeConvFactor, 0.268);
-        diffConvFactor = positive("diffConvFactor", diffConvFactor, 0.0056);
-        maxVelMps = positive("maxVelMps", maxVelMps, 0.75);
-        maxRotVelRadps = positive("maxRotVelRadps", maxRotVelRadps, 1.74);
-        radiusM = positive("radiusM", radiusM, 0.25);
-        widthM = positive("widthM", widthM, 0.425);
-        lengthM = positive("lengthM", lengthM, 0.511);
-        frontBumpers = frontBumpers == null ? 5 : frontBumpers;
-        rearBumpers = rearBumpers == null ? 5 : rearBumpers;
-        minRangeM = minRangeM == null ? 0.1 : minRangeM;
-        maxRangeM = positive("maxRangeM", maxRangeM, 5.0);
-        beamWidthRad = positive("beamWidthRad", beamWidthRad, Math.toRadians(30));
+        enableMotors = ParamDefaults.or(PioneerParams.class, "enableMotors", enableMotors);
+        keepAlivePeriodMs = ParamDefaults.or(PioneerParams.class, "keepAlivePeriodMs", keepAlivePeriodMs);
+        distConvFactor = positive("distConvFactor", distConvFactor);
+        angleConvFactor = positive("angleConvFactor", angleConvFactor);
+        velConvFactor = positive("velConvFactor", velConvFactor);
+        rangeConvFactor = positive("rangeConvFactor", rangeConvFactor);
+        diffConvFactor = positive("diffConvFactor", diffConvFactor);
+        maxVelMps = positive("maxVelMps", maxVelMps);
+        maxRotVelRadps = positive("maxRotVelRadps", maxRotVelRadps);
+        radiusM = positive("radiusM", radiusM);
+        widthM = positive("widthM", widthM);
+        lengthM = positive("lengthM", lengthM);
+        frontBumpers = ParamDefaults.or(PioneerParams.class, "frontBumpers", frontBumpers);
+        rearBumpers = ParamDefaults.or(PioneerParams.class, "rearBumpers", rearBumpers);
+        minRangeM = ParamDefaults.or(PioneerParams.class, "minRangeM", minRangeM);
+        maxRangeM = positive("maxRangeM", maxRangeM);
+        beamWidthRad = positive("beamWidthRad", beamWidthRad);
         sonarPoses = sonarPoses == null ? P2DX_SONAR_POSES : List.copyOf(sonarPoses);
 
         if (keepAlivePeriodMs < 50 || keepAlivePeriodMs > 1500) {
@@ -119,8 +120,8 @@ public record PioneerParams(
         return sonarPoses.size();
     }
 
-    private static Double positive(String name, Double value, double fallback) {
-        double v = value == null ? fallback : value;
+    private static Double positive(String name, Double value) {
+        double v = ParamDefaults.or(PioneerParams.class, name, value);
         if (!(v > 0) || !Double.isFinite(v)) {
             throw new IllegalArgumentException(name + " must be a positive number, was " + value);
         }

@@ -5,6 +5,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /**
  * The params of a {@code tekkotsu} interface: which of the Aibo's Tekkotsu servers to open and on
@@ -55,8 +56,8 @@ public record TekkotsuParams(
         Boolean controller,
         @Param(value = "Port of the controller (menu) server.", defaultValue = "10020")
         Integer controllerPort,
-        @Param(value = "Menu items to switch on through the controller; default: the items of the servers "
-                + "opened above, under their Tekkotsu 4.0 and 5.x names.", defaultValue = "")
+        @Param(value = "Menu items to switch on through the controller",
+                defaultNote = "the items of the servers opened above, under their Tekkotsu 4.0 and 5.x names")
         List<String> startServers,
         @Param(value = "Walk speed at forward fraction 1.", unit = "m/s", defaultValue = "0.18")
         Double maxForwardMps,
@@ -71,37 +72,37 @@ public record TekkotsuParams(
         Integer walkResendMs) {
 
     public TekkotsuParams {
-        worldState = orDefault(worldState, true);
-        worldStatePort = port("worldStatePort", worldStatePort, 10_031);
-        walk = orDefault(walk, true);
-        walkPort = port("walkPort", walkPort, 10_050);
-        head = orDefault(head, true);
-        headPort = port("headPort", headPort, 10_052);
-        eStop = orDefault(eStop, true);
-        eStopPort = port("eStopPort", eStopPort, 10_053);
-        releaseEStop = orDefault(releaseEStop, true);
-        microphone = orDefault(microphone, true);
-        microphonePort = port("microphonePort", microphonePort, 10_070);
-        speaker = orDefault(speaker, true);
-        speakerPort = port("speakerPort", speakerPort, 10_071);
-        speakerRateHz = speakerRateHz == null ? 16_000 : speakerRateHz;
+        worldState = ParamDefaults.or(TekkotsuParams.class, "worldState", worldState);
+        worldStatePort = port("worldStatePort", worldStatePort);
+        walk = ParamDefaults.or(TekkotsuParams.class, "walk", walk);
+        walkPort = port("walkPort", walkPort);
+        head = ParamDefaults.or(TekkotsuParams.class, "head", head);
+        headPort = port("headPort", headPort);
+        eStop = ParamDefaults.or(TekkotsuParams.class, "eStop", eStop);
+        eStopPort = port("eStopPort", eStopPort);
+        releaseEStop = ParamDefaults.or(TekkotsuParams.class, "releaseEStop", releaseEStop);
+        microphone = ParamDefaults.or(TekkotsuParams.class, "microphone", microphone);
+        microphonePort = port("microphonePort", microphonePort);
+        speaker = ParamDefaults.or(TekkotsuParams.class, "speaker", speaker);
+        speakerPort = port("speakerPort", speakerPort);
+        speakerRateHz = ParamDefaults.or(TekkotsuParams.class, "speakerRateHz", speakerRateHz);
         if (speakerRateHz < 1_000 || speakerRateHz > 65_535) {
             throw new IllegalArgumentException("speakerRateHz must be in 1000..65535 Hz, was " + speakerRateHz);
         }
-        camera = orDefault(camera, true);
-        cameraPort = port("cameraPort", cameraPort, 10_011);
-        cameraSkip = cameraSkip == null ? 2 : cameraSkip;
+        camera = ParamDefaults.or(TekkotsuParams.class, "camera", camera);
+        cameraPort = port("cameraPort", cameraPort);
+        cameraSkip = ParamDefaults.or(TekkotsuParams.class, "cameraSkip", cameraSkip);
         if (cameraSkip < 0 || cameraSkip > 4) {
             throw new IllegalArgumentException("cameraSkip must be in 0..4, was " + cameraSkip);
         }
-        cameraHeightM = positive("cameraHeightM", cameraHeightM, 0.2);
-        controller = orDefault(controller, true);
-        controllerPort = port("controllerPort", controllerPort, 10_020);
-        maxForwardMps = positive("maxForwardMps", maxForwardMps, 0.18);
-        maxReverseMps = positive("maxReverseMps", maxReverseMps, 0.18);
-        maxStrafeMps = positive("maxStrafeMps", maxStrafeMps, 0.14);
-        maxRotateRadps = positive("maxRotateRadps", maxRotateRadps, 1.8);
-        walkResendMs = walkResendMs == null ? 1_000 : walkResendMs;
+        cameraHeightM = positive("cameraHeightM", cameraHeightM);
+        controller = ParamDefaults.or(TekkotsuParams.class, "controller", controller);
+        controllerPort = port("controllerPort", controllerPort);
+        maxForwardMps = positive("maxForwardMps", maxForwardMps);
+        maxReverseMps = positive("maxReverseMps", maxReverseMps);
+        maxStrafeMps = positive("maxStrafeMps", maxStrafeMps);
+        maxRotateRadps = positive("maxRotateRadps", maxRotateRadps);
+        walkResendMs = ParamDefaults.or(TekkotsuParams.class, "walkResendMs", walkResendMs);
         if (walkResendMs < 100 || walkResendMs > 2_500) {
             throw new IllegalArgumentException("walkResendMs must be in 100..2500 ms (below the robot's 3 s "
                     + "dead-man time-out), was " + walkResendMs);
@@ -170,20 +171,16 @@ public record TekkotsuParams(
         }
     }
 
-    private static boolean orDefault(Boolean value, boolean otherwise) {
-        return value == null ? otherwise : value;
-    }
-
-    private static int port(String name, Integer value, int otherwise) {
-        int p = value == null ? otherwise : value;
+    private static int port(String name, Integer value) {
+        int p = ParamDefaults.or(TekkotsuParams.class, name, value);
         if (p < 1 || p > 65_535) {
             throw new IllegalArgumentException(name + " must be in 1..65535, was " + p);
         }
         return p;
     }
 
-    private static double positive(String name, Double value, double otherwise) {
-        double v = value == null ? otherwise : value;
+    private static double positive(String name, Double value) {
+        double v = ParamDefaults.or(TekkotsuParams.class, name, value);
         if (!(v > 0) || Double.isInfinite(v)) {
             throw new IllegalArgumentException(name + " must be a positive number, was " + v);
         }

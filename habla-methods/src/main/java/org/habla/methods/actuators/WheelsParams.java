@@ -6,10 +6,10 @@ import org.habla.plugin.Param;
 /** The params of the {@code wheels} method: speed limits that override the motion channel's metadata. */
 public record WheelsParams(
         @Param(value = "Highest forward or backward speed; overrides the channel metadata maxVelMps", unit = "m/s",
-                defaultValue = "channel metadata, else no limit")
+                defaultNote = "channel metadata, else no limit")
         Double maxVelMps,
         @Param(value = "Highest turn rate; overrides the channel metadata maxRotVelRadps", unit = "rad/s",
-                defaultValue = "channel metadata, else no limit")
+                defaultNote = "channel metadata, else no limit")
         Double maxRotVelRadps) {
 
     public WheelsParams {

@@ -47,27 +47,27 @@ public record AudioProcessingParams(
         Integer queue) {
 
     public AudioProcessingParams {
-        frameMs = ParamRules.within("frameMs", frameMs, 32, 4, 200);
-        bands = ParamRules.within("bands", bands, 16, 1, 256);
-        minPitchHz = ParamRules.within("minPitchHz", minPitchHz, 70, 20, 4000);
-        maxPitchHz = ParamRules.within("maxPitchHz", maxPitchHz, 1200, 40, 8000);
+        frameMs = ParamRules.within(AudioProcessingParams.class, "frameMs", frameMs, 4, 200);
+        bands = ParamRules.within(AudioProcessingParams.class, "bands", bands, 1, 256);
+        minPitchHz = ParamRules.within(AudioProcessingParams.class, "minPitchHz", minPitchHz, 20, 4000);
+        maxPitchHz = ParamRules.within(AudioProcessingParams.class, "maxPitchHz", maxPitchHz, 40, 8000);
         if (!(maxPitchHz > minPitchHz)) {
             throw new IllegalArgumentException("maxPitchHz (" + maxPitchHz + ") must be above minPitchHz ("
                     + minPitchHz + ")");
         }
-        aperiodicity = ParamRules.within("aperiodicity", aperiodicity, 0.15, 0.01, 1);
-        voicedMinDb = ParamRules.within("voicedMinDb", voicedMinDb, -50, -120, 0);
-        openAboveFloorDb = ParamRules.within("openAboveFloorDb", openAboveFloorDb, 10, 0, 80);
-        openAboveBackgroundDb = ParamRules.within("openAboveBackgroundDb", openAboveBackgroundDb, 9, 0, 80);
-        minLevelDb = ParamRules.within("minLevelDb", minLevelDb, -55, -120, 0);
-        noiseWindowMs = ParamRules.within("noiseWindowMs", noiseWindowMs, 3000, 100, 60_000);
-        closeBelowOpenDb = ParamRules.within("closeBelowOpenDb", closeBelowOpenDb, 1, 0, 40);
-        peakRangeDb = ParamRules.within("peakRangeDb", peakRangeDb, 30, 6, 120);
-        hangoverMs = ParamRules.within("hangoverMs", hangoverMs, 200, 0, 5000);
-        prerollMs = ParamRules.within("prerollMs", prerollMs, 200, 0, 2000);
-        minLoudMs = ParamRules.within("minLoudMs", minLoudMs, 80, 0, 10_000);
-        maxSegmentMs = ParamRules.within("maxSegmentMs", maxSegmentMs, 8000, 100, 60_000);
-        queue = ParamRules.within("queue", queue, 256, 1, 65_536);
+        aperiodicity = ParamRules.within(AudioProcessingParams.class, "aperiodicity", aperiodicity, 0.01, 1);
+        voicedMinDb = ParamRules.within(AudioProcessingParams.class, "voicedMinDb", voicedMinDb, -120, 0);
+        openAboveFloorDb = ParamRules.within(AudioProcessingParams.class, "openAboveFloorDb", openAboveFloorDb, 0, 80);
+        openAboveBackgroundDb = ParamRules.within(AudioProcessingParams.class, "openAboveBackgroundDb", openAboveBackgroundDb, 0, 80);
+        minLevelDb = ParamRules.within(AudioProcessingParams.class, "minLevelDb", minLevelDb, -120, 0);
+        noiseWindowMs = ParamRules.within(AudioProcessingParams.class, "noiseWindowMs", noiseWindowMs, 100, 60_000);
+        closeBelowOpenDb = ParamRules.within(AudioProcessingParams.class, "closeBelowOpenDb", closeBelowOpenDb, 0, 40);
+        peakRangeDb = ParamRules.within(AudioProcessingParams.class, "peakRangeDb", peakRangeDb, 6, 120);
+        hangoverMs = ParamRules.within(AudioProcessingParams.class, "hangoverMs", hangoverMs, 0, 5000);
+        prerollMs = ParamRules.within(AudioProcessingParams.class, "prerollMs", prerollMs, 0, 2000);
+        minLoudMs = ParamRules.within(AudioProcessingParams.class, "minLoudMs", minLoudMs, 0, 10_000);
+        maxSegmentMs = ParamRules.within(AudioProcessingParams.class, "maxSegmentMs", maxSegmentMs, 100, 60_000);
+        queue = ParamRules.within(AudioProcessingParams.class, "queue", queue, 1, 65_536);
     }
 
     /** Every parameter at its default. */

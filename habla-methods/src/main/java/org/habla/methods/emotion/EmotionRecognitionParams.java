@@ -5,6 +5,7 @@ import java.util.Map;
 import java.util.TreeMap;
 import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code emotion-recognition} method: the word lists, the touch meanings and the rule thresholds. */
 public record EmotionRecognitionParams(
@@ -35,19 +36,18 @@ public record EmotionRecognitionParams(
         Double angryArousal) {
 
     public EmotionRecognitionParams {
-        valence = lowerCased(valence == null ? Map.of("good dog", 1.0, "well done", 1.0, "good", 0.8, "great", 0.8,
-                "yes", 0.5, "bad dog", -1.0, "bad", -0.8, "no", -0.7, "stop", -0.3) : valence, "valence");
-        touchValence = checked(touchValence == null ? Map.of("backMiddle", 1.0, "backFront", 0.6, "backRear", 0.6,
-                "chin", 0.5, "headTouch", -1.0) : touchValence, "touchValence");
-        utteranceWindowMs = ParamRules.within("utteranceWindowMs", utteranceWindowMs, 3000, 100, 60_000);
-        baselineWeight = ParamRules.within("baselineWeight", baselineWeight, 0.2, 0, 1);
-        voices = ParamRules.within("voices", voices, 1, 1, 8);
-        voiceSplitOctaves = ParamRules.within("voiceSplitOctaves", voiceSplitOctaves, 0.35, 0.05, 4);
-        loudRangeDb = ParamRules.within("loudRangeDb", loudRangeDb, 12, 0.1, 100);
-        pitchRangeOctaves = ParamRules.within("pitchRangeOctaves", pitchRangeOctaves, 0.5, 0.01, 4);
-        positiveValence = ParamRules.within("positiveValence", positiveValence, 0.3, 0, 1);
-        excitedArousal = ParamRules.within("excitedArousal", excitedArousal, 0.7, 0, 1);
-        angryArousal = ParamRules.within("angryArousal", angryArousal, 0.5, 0, 1);
+        valence = lowerCased(ParamDefaults.or(EmotionRecognitionParams.class, "valence", valence), "valence");
+        touchValence = checked(ParamDefaults.or(EmotionRecognitionParams.class, "touchValence", touchValence),
+                "touchValence");
+        utteranceWindowMs = ParamRules.within(EmotionRecognitionParams.class, "utteranceWindowMs", utteranceWindowMs, 100, 60_000);
+        baselineWeight = ParamRules.within(EmotionRecognitionParams.class, "baselineWeight", baselineWeight, 0, 1);
+        voices = ParamRules.within(EmotionRecognitionParams.class, "voices", voices, 1, 8);
+        voiceSplitOctaves = ParamRules.within(EmotionRecognitionParams.class, "voiceSplitOctaves", voiceSplitOctaves, 0.05, 4);
+        loudRangeDb = ParamRules.within(EmotionRecognitionParams.class, "loudRangeDb", loudRangeDb, 0.1, 100);
+        pitchRangeOctaves = ParamRules.within(EmotionRecognitionParams.class, "pitchRangeOctaves", pitchRangeOctaves, 0.01, 4);
+        positiveValence = ParamRules.within(EmotionRecognitionParams.class, "positiveValence", positiveValence, 0, 1);
+        excitedArousal = ParamRules.within(EmotionRecognitionParams.class, "excitedArousal", excitedArousal, 0, 1);
+        angryArousal = ParamRules.within(EmotionRecognitionParams.class, "angryArousal", angryArousal, 0, 1);
     }
 
     /** Every parameter at its default. */

@@ -2,6 +2,7 @@ package org.habla.methods.gaze;
 
 import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code head-control} method: what to follow, how briskly, how to search, and the joint limits. */
 public record HeadControlParams(
@@ -9,9 +10,9 @@ public record HeadControlParams(
         String label,
         @Param(value = "Share of the angular error corrected per image", defaultValue = "0.6") Double gain,
         @Param(value = "Errors smaller than this are left alone", unit = "rad", defaultValue = "0.02") Double deadbandRad,
-        @Param(value = "Horizontal field of view; overrides the camera record", unit = "rad", defaultValue = "camera record")
+        @Param(value = "Horizontal field of view; overrides the camera record", unit = "rad", defaultNote = "camera record")
         Double hfovRad,
-        @Param(value = "Vertical field of view; overrides the camera record", unit = "rad", defaultValue = "camera record")
+        @Param(value = "Vertical field of view; overrides the camera record", unit = "rad", defaultNote = "camera record")
         Double vfovRad,
         @Param(value = "Time without the target after which the head starts scanning", unit = "ms", defaultValue = "1000")
         Integer lostAfterMs,
@@ -30,17 +31,23 @@ public record HeadControlParams(
         implements HeadLimits.HeadLimitsOverride {
 
     public HeadControlParams {
-        label = label == null ? "pink" : label;
-        gain = ParamRules.within("gain", gain, 0.6, 0, 1);
-        deadbandRad = ParamRules.within("deadbandRad", deadbandRad, 0.02, 0, 1);
-        hfovRad = hfovRad == null ? null : ParamRules.within("hfovRad", hfovRad, 1, 0.01, 3.1);
-        vfovRad = vfovRad == null ? null : ParamRules.within("vfovRad", vfovRad, 1, 0.01, 3.1);
-        lostAfterMs = ParamRules.within("lostAfterMs", lostAfterMs, 1000, 0, 600_000);
-        scanSpeedRadps = ParamRules.within("scanSpeedRadps", scanSpeedRadps, 0.6, 0, 10);
-        scanPanRad = ParamRules.within("scanPanRad", scanPanRad, 1.2, 0, Math.PI);
-        scanTiltRad = ParamRules.within("scanTiltRad", scanTiltRad, -0.35, -Math.PI, Math.PI);
-        nodRad = ParamRules.within("nodRad", nodRad, 0, -Math.PI, Math.PI);
-        periodMs = ParamRules.within("periodMs", periodMs, 100, 10, 10_000);
+        label = ParamDefaults.or(HeadControlParams.class, "label", label);
+        gain = ParamRules.within(HeadControlParams.class, "gain", gain, 0, 1);
+        deadbandRad = ParamRules.within(HeadControlParams.class, "deadbandRad", deadbandRad, 0, 1);
+        hfovRad = ParamRules.withinOrNull("hfovRad", hfovRad, 0.01, 3.1);
+        vfovRad = ParamRules.withinOrNull("vfovRad", vfovRad, 0.01, 3.1);
+        lostAfterMs = ParamRules.within(HeadControlParams.class, "lostAfterMs", lostAfterMs, 0, 600_000);
+        scanSpeedRadps = ParamRules.within(HeadControlParams.class, "scanSpeedRadps", scanSpeedRadps, 0, 10);
+        scanPanRad = ParamRules.within(HeadControlParams.class, "scanPanRad", scanPanRad, 0, Math.PI);
+        scanTiltRad = ParamRules.within(HeadControlParams.class, "scanTiltRad", scanTiltRad, -Math.PI, Math.PI);
+        nodRad = ParamRules.within(HeadControlParams.class, "nodRad", nodRad, -Math.PI, Math.PI);
+        periodMs = ParamRules.within(HeadControlParams.class, "periodMs", periodMs, 10, 10_000);
+        tiltMinRad = ParamDefaults.or(HeadControlParams.class, "tiltMinRad", tiltMinRad);
+        tiltMaxRad = ParamDefaults.or(HeadControlParams.class, "tiltMaxRad", tiltMaxRad);
+        panMinRad = ParamDefaults.or(HeadControlParams.class, "panMinRad", panMinRad);
+        panMaxRad = ParamDefaults.or(HeadControlParams.class, "panMaxRad", panMaxRad);
+        nodMinRad = ParamDefaults.or(HeadControlParams.class, "nodMinRad", nodMinRad);
+        nodMaxRad = ParamDefaults.or(HeadControlParams.class, "nodMaxRad", nodMaxRad);
         new HeadLimits(tiltMinRad, tiltMaxRad, panMinRad, panMaxRad, nodMinRad, nodMaxRad);
     }
 

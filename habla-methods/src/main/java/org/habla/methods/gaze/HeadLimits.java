@@ -18,12 +18,12 @@ public record HeadLimits(
         @Param(value = "Highest nod (looking up)", unit = "rad", defaultValue = "0.79") Double nodMaxRad) {
 
     public HeadLimits {
-        tiltMinRad = ParamRules.within("tiltMinRad", tiltMinRad, -1.31, -Math.PI, Math.PI);
-        tiltMaxRad = ParamRules.within("tiltMaxRad", tiltMaxRad, 0.05, -Math.PI, Math.PI);
-        panMinRad = ParamRules.within("panMinRad", panMinRad, -1.62, -Math.PI, Math.PI);
-        panMaxRad = ParamRules.within("panMaxRad", panMaxRad, 1.62, -Math.PI, Math.PI);
-        nodMinRad = ParamRules.within("nodMinRad", nodMinRad, -0.26, -Math.PI, Math.PI);
-        nodMaxRad = ParamRules.within("nodMaxRad", nodMaxRad, 0.79, -Math.PI, Math.PI);
+        tiltMinRad = ParamRules.within(HeadLimits.class, "tiltMinRad", tiltMinRad, -Math.PI, Math.PI);
+        tiltMaxRad = ParamRules.within(HeadLimits.class, "tiltMaxRad", tiltMaxRad, -Math.PI, Math.PI);
+        panMinRad = ParamRules.within(HeadLimits.class, "panMinRad", panMinRad, -Math.PI, Math.PI);
+        panMaxRad = ParamRules.within(HeadLimits.class, "panMaxRad", panMaxRad, -Math.PI, Math.PI);
+        nodMinRad = ParamRules.within(HeadLimits.class, "nodMinRad", nodMinRad, -Math.PI, Math.PI);
+        nodMaxRad = ParamRules.within(HeadLimits.class, "nodMaxRad", nodMaxRad, -Math.PI, Math.PI);
         if (tiltMinRad > tiltMaxRad || panMinRad > panMaxRad || nodMinRad > nodMaxRad) {
             throw new IllegalArgumentException("each head joint's minimum must not exceed its maximum");
         }

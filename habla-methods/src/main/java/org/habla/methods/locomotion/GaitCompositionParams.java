@@ -18,14 +18,14 @@ public record GaitCompositionParams(
         Double strafeMpsPerRadps) {
 
     public GaitCompositionParams {
-        forwardScale = ParamRules.within("forwardScale", forwardScale, 1, 0, 100);
-        rotateScale = ParamRules.within("rotateScale", rotateScale, 1, 0, 100);
-        maxForwardMps = ParamRules.within("maxForwardMps", maxForwardMps, 0.18, 0, 10);
-        maxReverseMps = ParamRules.within("maxReverseMps", maxReverseMps, 0.18, 0, 10);
-        maxStrafeMps = ParamRules.within("maxStrafeMps", maxStrafeMps, 0.14, 0, 10);
-        maxRotateRadps = ParamRules.within("maxRotateRadps", maxRotateRadps, 1.8, 0, 20);
-        strafeShare = ParamRules.within("strafeShare", strafeShare, 0, 0, 1);
-        strafeMpsPerRadps = ParamRules.within("strafeMpsPerRadps", strafeMpsPerRadps, 0.1, 0, 10);
+        forwardScale = ParamRules.within(GaitCompositionParams.class, "forwardScale", forwardScale, 0, 100);
+        rotateScale = ParamRules.within(GaitCompositionParams.class, "rotateScale", rotateScale, 0, 100);
+        maxForwardMps = ParamRules.within(GaitCompositionParams.class, "maxForwardMps", maxForwardMps, 0, 10);
+        maxReverseMps = ParamRules.within(GaitCompositionParams.class, "maxReverseMps", maxReverseMps, 0, 10);
+        maxStrafeMps = ParamRules.within(GaitCompositionParams.class, "maxStrafeMps", maxStrafeMps, 0, 10);
+        maxRotateRadps = ParamRules.within(GaitCompositionParams.class, "maxRotateRadps", maxRotateRadps, 0, 20);
+        strafeShare = ParamRules.within(GaitCompositionParams.class, "strafeShare", strafeShare, 0, 1);
+        strafeMpsPerRadps = ParamRules.within(GaitCompositionParams.class, "strafeMpsPerRadps", strafeMpsPerRadps, 0, 10);
     }
 
     /** Every parameter at its default. */

@@ -12,21 +12,21 @@ public record MotionCompositionParams(
         @Param(value = "Largest change of the turn rate per second", unit = "rad/s²", defaultValue = "2.0")
         Double maxRotAccelRadps2,
         @Param(value = "Highest forward or backward speed; overrides the limits input", unit = "m/s",
-                defaultValue = "the limits input, else no limit")
+                defaultNote = "the limits input, else no limit")
         Double maxVelMps,
         @Param(value = "Highest turn rate; overrides the limits input", unit = "rad/s",
-                defaultValue = "the limits input, else no limit")
+                defaultNote = "the limits input, else no limit")
         Double maxRotVelRadps,
         @Param(value = "Period of the ramp steps", unit = "ms", defaultValue = "50")
         Integer tickMs) {
 
     public MotionCompositionParams {
-        maxAccelMps2 = ParamRules.positive("maxAccelMps2", maxAccelMps2, 0.5);
-        maxDecelMps2 = ParamRules.positive("maxDecelMps2", maxDecelMps2, 1.0);
-        maxRotAccelRadps2 = ParamRules.positive("maxRotAccelRadps2", maxRotAccelRadps2, 2.0);
+        maxAccelMps2 = ParamRules.positive(MotionCompositionParams.class, "maxAccelMps2", maxAccelMps2);
+        maxDecelMps2 = ParamRules.positive(MotionCompositionParams.class, "maxDecelMps2", maxDecelMps2);
+        maxRotAccelRadps2 = ParamRules.positive(MotionCompositionParams.class, "maxRotAccelRadps2", maxRotAccelRadps2);
         maxVelMps = ParamRules.positiveOrNull("maxVelMps", maxVelMps);
         maxRotVelRadps = ParamRules.positiveOrNull("maxRotVelRadps", maxRotVelRadps);
-        tickMs = ParamRules.within("tickMs", tickMs, 50, 5, 1000);
+        tickMs = ParamRules.within(MotionCompositionParams.class, "tickMs", tickMs, 5, 1000);
     }
 
     /** Every parameter at its default. */

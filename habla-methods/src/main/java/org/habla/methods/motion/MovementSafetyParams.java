@@ -9,22 +9,22 @@ public record MovementSafetyParams(
                 unit = "m", defaultValue = "0.3")
         Double stopDistanceM,
         @Param(value = "Half-width of the cones ahead and behind, used when the nearest record has no aheadM/behindM",
-                unit = "rad", defaultValue = "1.0472")
+                unit = "rad", defaultValue = "1.0471975511965976")
         Double coneRad,
         @Param(value = "With no nearest record for this long, forward and backward motion are vetoed", unit = "ms",
                 defaultValue = "1000")
         Integer maxAgeMs,
         @Param(value = "Highest forward or backward speed; overrides the limits input", unit = "m/s",
-                defaultValue = "the limits input, else no limit")
+                defaultNote = "the limits input, else no limit")
         Double maxVelMps,
         @Param(value = "Highest turn rate; overrides the limits input", unit = "rad/s",
-                defaultValue = "the limits input, else no limit")
+                defaultNote = "the limits input, else no limit")
         Double maxRotVelRadps) {
 
     public MovementSafetyParams {
-        stopDistanceM = ParamRules.nonNegative("stopDistanceM", stopDistanceM, 0.3);
-        coneRad = ParamRules.within("coneRad", coneRad, Math.PI / 3, 0.0, Math.PI);
-        maxAgeMs = ParamRules.within("maxAgeMs", maxAgeMs, 1000, 1, 600_000);
+        stopDistanceM = ParamRules.nonNegative(MovementSafetyParams.class, "stopDistanceM", stopDistanceM);
+        coneRad = ParamRules.within(MovementSafetyParams.class, "coneRad", coneRad, 0.0, Math.PI);
+        maxAgeMs = ParamRules.within(MovementSafetyParams.class, "maxAgeMs", maxAgeMs, 1, 600_000);
         maxVelMps = ParamRules.positiveOrNull("maxVelMps", maxVelMps);
         maxRotVelRadps = ParamRules.positiveOrNull("maxRotVelRadps", maxRotVelRadps);
     }

@@ -5,6 +5,7 @@ import java.util.Set;
 import java.util.stream.Collectors;
 import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code note-recognition} method: which notes, how clear and how long. */
 public record NoteRecognitionParams(
@@ -36,24 +37,24 @@ public record NoteRecognitionParams(
         Integer queue) {
 
     public NoteRecognitionParams {
-        notes = List.copyOf(notes == null ? List.of() : notes);
+        notes = List.copyOf(ParamDefaults.or(NoteRecognitionParams.class, "notes", notes));
         notes.forEach(Note::parse);
-        minDurationMs = ParamRules.within("minDurationMs", minDurationMs, 150, 10, 10_000);
-        referenceA4Hz = ParamRules.within("referenceA4Hz", referenceA4Hz, 440, 400, 480);
-        minSnrDb = ParamRules.within("minSnrDb", minSnrDb, 15, 3, 80);
-        toleranceCents = ParamRules.within("toleranceCents", toleranceCents, 40, 1, 50);
-        minHz = ParamRules.within("minHz", minHz, 100, 20, 8000);
-        maxHz = ParamRules.within("maxHz", maxHz, 4500, 40, 12_000);
+        minDurationMs = ParamRules.within(NoteRecognitionParams.class, "minDurationMs", minDurationMs, 10, 10_000);
+        referenceA4Hz = ParamRules.within(NoteRecognitionParams.class, "referenceA4Hz", referenceA4Hz, 400, 480);
+        minSnrDb = ParamRules.within(NoteRecognitionParams.class, "minSnrDb", minSnrDb, 3, 80);
+        toleranceCents = ParamRules.within(NoteRecognitionParams.class, "toleranceCents", toleranceCents, 1, 50);
+        minHz = ParamRules.within(NoteRecognitionParams.class, "minHz", minHz, 20, 8000);
+        maxHz = ParamRules.within(NoteRecognitionParams.class, "maxHz", maxHz, 40, 12_000);
         if (!(maxHz > minHz)) {
             throw new IllegalArgumentException("maxHz (" + maxHz + ") must be above minHz (" + minHz + ")");
         }
-        frameMs = ParamRules.within("frameMs", frameMs, 64, 8, 500);
-        hopMs = ParamRules.within("hopMs", hopMs, 16, 1, 500);
+        frameMs = ParamRules.within(NoteRecognitionParams.class, "frameMs", frameMs, 8, 500);
+        hopMs = ParamRules.within(NoteRecognitionParams.class, "hopMs", hopMs, 1, 500);
         if (hopMs > frameMs) {
             throw new IllegalArgumentException("hopMs (" + hopMs + ") must not exceed frameMs (" + frameMs + ")");
         }
-        maxDropoutMs = ParamRules.within("maxDropoutMs", maxDropoutMs, 50, 0, 5000);
-        queue = ParamRules.within("queue", queue, 256, 1, 65_536);
+        maxDropoutMs = ParamRules.within(NoteRecognitionParams.class, "maxDropoutMs", maxDropoutMs, 0, 5000);
+        queue = ParamRules.within(NoteRecognitionParams.class, "queue", queue, 1, 65_536);
     }
 
     /** Every parameter at its default. */

@@ -9,7 +9,7 @@ public record NearestDistanceParams(
                 defaultValue = "0.02")
         Double minValidM,
         @Param(value = "Half-width of the cones ahead and behind the robot that aheadM and behindM cover", unit = "rad",
-                defaultValue = "1.0472")
+                defaultValue = "1.0471975511965976")
         Double coneRad,
         @Param(value = "A scan older than this is left out when several inputs are combined", unit = "ms",
                 defaultValue = "1000")
@@ -19,10 +19,10 @@ public record NearestDistanceParams(
         Double spreadM) {
 
     public NearestDistanceParams {
-        minValidM = ParamRules.nonNegative("minValidM", minValidM, 0.02);
-        coneRad = ParamRules.within("coneRad", coneRad, Math.PI / 3, 0.0, Math.PI);
-        maxAgeMs = ParamRules.within("maxAgeMs", maxAgeMs, 1000, 1, 600_000);
-        spreadM = ParamRules.nonNegative("spreadM", spreadM, 0.1);
+        minValidM = ParamRules.nonNegative(NearestDistanceParams.class, "minValidM", minValidM);
+        coneRad = ParamRules.within(NearestDistanceParams.class, "coneRad", coneRad, 0.0, Math.PI);
+        maxAgeMs = ParamRules.within(NearestDistanceParams.class, "maxAgeMs", maxAgeMs, 1, 600_000);
+        spreadM = ParamRules.nonNegative(NearestDistanceParams.class, "spreadM", spreadM);
     }
 
     /** Every parameter at its default. */

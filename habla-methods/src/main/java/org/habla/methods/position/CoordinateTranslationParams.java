@@ -2,6 +2,7 @@ package org.habla.methods.position;
 
 import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /**
  * The params of the {@code coordinate-translation} method. The camera's geometry is best left out:
@@ -12,12 +13,12 @@ public record CoordinateTranslationParams(
         String label,
         @Param(value = "Radius of the target object (a ball)", unit = "m", defaultValue = "0.05")
         Double targetRadiusM,
-        @Param(value = "Horizontal field of view; overrides the camera record", unit = "rad", defaultValue = "camera record")
+        @Param(value = "Horizontal field of view; overrides the camera record", unit = "rad", defaultNote = "camera record")
         Double hfovRad,
-        @Param(value = "Vertical field of view; overrides the camera record", unit = "rad", defaultValue = "camera record")
+        @Param(value = "Vertical field of view; overrides the camera record", unit = "rad", defaultNote = "camera record")
         Double vfovRad,
         @Param(value = "Height of the camera above the floor; overrides the camera record", unit = "m",
-                defaultValue = "camera record")
+                defaultNote = "camera record")
         Double cameraHeightM,
         @Param(value = "How far ahead of the robot's origin the camera's pan axis sits", unit = "m", defaultValue = "0")
         Double cameraXM,
@@ -32,15 +33,15 @@ public record CoordinateTranslationParams(
         Double minRadiusPx) {
 
     public CoordinateTranslationParams {
-        label = label == null ? "pink" : label;
-        targetRadiusM = ParamRules.positive("targetRadiusM", targetRadiusM, 0.05);
-        hfovRad = hfovRad == null ? null : ParamRules.within("hfovRad", hfovRad, 1, 0.01, 3.1);
-        vfovRad = vfovRad == null ? null : ParamRules.within("vfovRad", vfovRad, 1, 0.01, 3.1);
-        cameraHeightM = cameraHeightM == null ? null : ParamRules.nonNegative("cameraHeightM", cameraHeightM, 0);
-        cameraXM = ParamRules.within("cameraXM", cameraXM, 0, -10, 10);
-        lensForwardM = ParamRules.within("lensForwardM", lensForwardM, 0, -10, 10);
-        bodyRadiusM = ParamRules.within("bodyRadiusM", bodyRadiusM, 0, 0, 10);
-        minRadiusPx = ParamRules.nonNegative("minRadiusPx", minRadiusPx, 1.5);
+        label = ParamDefaults.or(CoordinateTranslationParams.class, "label", label);
+        targetRadiusM = ParamRules.positive(CoordinateTranslationParams.class, "targetRadiusM", targetRadiusM);
+        hfovRad = ParamRules.withinOrNull("hfovRad", hfovRad, 0.01, 3.1);
+        vfovRad = ParamRules.withinOrNull("vfovRad", vfovRad, 0.01, 3.1);
+        cameraHeightM = ParamRules.nonNegativeOrNull("cameraHeightM", cameraHeightM);
+        cameraXM = ParamRules.within(CoordinateTranslationParams.class, "cameraXM", cameraXM, -10, 10);
+        lensForwardM = ParamRules.within(CoordinateTranslationParams.class, "lensForwardM", lensForwardM, -10, 10);
+        bodyRadiusM = ParamRules.within(CoordinateTranslationParams.class, "bodyRadiusM", bodyRadiusM, 0, 10);
+        minRadiusPx = ParamRules.nonNegative(CoordinateTranslationParams.class, "minRadiusPx", minRadiusPx);
     }
 
     /** Every parameter at its default. */

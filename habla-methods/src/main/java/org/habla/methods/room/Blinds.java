@@ -6,6 +6,7 @@ import org.habla.method.Output;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
@@ -28,7 +29,7 @@ public final class Blinds extends SensorActuatorMethod {
             @Param(value = "the cover counts percent closed instead of open", defaultValue = "false") Boolean invert) {
 
         public Params {
-            invert = invert != null && invert;
+            invert = ParamDefaults.or(Params.class, "invert", invert);
         }
     }
 

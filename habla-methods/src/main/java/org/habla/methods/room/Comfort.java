@@ -44,13 +44,13 @@ public final class Comfort extends VirtualMethod {
             @Param(value = "loudest comfortable sound", unit = "dB", defaultValue = "-20") Double maxSoundDb) {
 
         public Params {
-            minTemperatureC = ParamRules.within("minTemperatureC", minTemperatureC, 20, -40, 85);
-            maxTemperatureC = ParamRules.within("maxTemperatureC", maxTemperatureC, 25, minTemperatureC, 85);
-            minHumidityPct = ParamRules.within("minHumidityPct", minHumidityPct, 30, 0, 100);
-            maxHumidityPct = ParamRules.within("maxHumidityPct", maxHumidityPct, 60, minHumidityPct, 100);
-            minLux = ParamRules.within("minLux", minLux, 200, 0, 1e6);
-            maxLux = ParamRules.within("maxLux", maxLux, 2000, minLux, 1e6);
-            maxSoundDb = ParamRules.within("maxSoundDb", maxSoundDb, -20, -200, 200);
+            minTemperatureC = ParamRules.within(Params.class, "minTemperatureC", minTemperatureC, -40, 85);
+            maxTemperatureC = ParamRules.within(Params.class, "maxTemperatureC", maxTemperatureC, minTemperatureC, 85);
+            minHumidityPct = ParamRules.within(Params.class, "minHumidityPct", minHumidityPct, 0, 100);
+            maxHumidityPct = ParamRules.within(Params.class, "maxHumidityPct", maxHumidityPct, minHumidityPct, 100);
+            minLux = ParamRules.within(Params.class, "minLux", minLux, 0, 1e6);
+            maxLux = ParamRules.within(Params.class, "maxLux", maxLux, minLux, 1e6);
+            maxSoundDb = ParamRules.within(Params.class, "maxSoundDb", maxSoundDb, -200, 200);
         }
     }
 

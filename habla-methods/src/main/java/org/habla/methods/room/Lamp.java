@@ -7,6 +7,7 @@ import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
@@ -43,9 +44,9 @@ public final class Lamp extends SensorActuatorMethod {
             Double onAbove) {
 
         public Params {
-            dimmable = dimmable == null || dimmable;
-            maxBrightness = ParamRules.within("maxBrightness", maxBrightness, 254, 1, 65_535);
-            onAbove = ParamRules.within("onAbove", onAbove, 0.5, 0, 1);
+            dimmable = ParamDefaults.or(Params.class, "dimmable", dimmable);
+            maxBrightness = ParamRules.within(Params.class, "maxBrightness", maxBrightness, 1, 65_535);
+            onAbove = ParamRules.within(Params.class, "onAbove", onAbove, 0, 1);
         }
     }
 

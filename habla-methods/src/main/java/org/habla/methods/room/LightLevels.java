@@ -38,7 +38,7 @@ public final class LightLevels extends VirtualMethod {
 
         public Params {
             zones = new Occupancy.Params(zones, 0).zones();
-            darkLux = ParamRules.within("darkLux", darkLux, 200, 0, 1e6);
+            darkLux = ParamRules.within(Params.class, "darkLux", darkLux, 0, 1e6);
         }
     }
 

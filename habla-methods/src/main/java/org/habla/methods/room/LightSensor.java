@@ -36,8 +36,8 @@ public final class LightSensor extends SensorActuatorMethod {
                     defaultValue = "0") Double smoothing) {
 
         public Params {
-            maxLux = ParamRules.positive("maxLux", maxLux, 100_000);
-            smoothing = ParamRules.within("smoothing", smoothing, 0, 0, 0.99);
+            maxLux = ParamRules.positive(Params.class, "maxLux", maxLux);
+            smoothing = ParamRules.within(Params.class, "smoothing", smoothing, 0, 0.99);
         }
     }
 

@@ -48,7 +48,7 @@ public final class Occupancy extends VirtualMethod {
         }
 
         public Params {
-            periodMs = ParamRules.within("periodMs", periodMs, 1000, 0, 3_600_000);
+            periodMs = ParamRules.within(Params.class, "periodMs", periodMs, 0, 3_600_000);
             if (zones == null || zones.isEmpty()) {
                 throw new IllegalArgumentException("zones: name at least one zone");
             }

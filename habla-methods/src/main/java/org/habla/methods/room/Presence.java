@@ -45,8 +45,8 @@ public final class Presence extends ProcessingMethod {
                     defaultValue = "10000") Integer doorHoldMs) {
 
         public Params {
-            holdMs = ParamRules.within("holdMs", holdMs, 30_000, 0, 86_400_000);
-            doorHoldMs = ParamRules.within("doorHoldMs", doorHoldMs, 10_000, 0, 86_400_000);
+            holdMs = ParamRules.within(Params.class, "holdMs", holdMs, 0, 86_400_000);
+            doorHoldMs = ParamRules.within(Params.class, "doorHoldMs", doorHoldMs, 0, 86_400_000);
         }
     }
 

@@ -14,6 +14,7 @@ import org.habla.method.Output;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
@@ -61,9 +62,9 @@ public final class RoomAction extends VirtualMethod {
             Boolean speaker) {
 
         public Params {
-            lamps = lamps == null ? List.of() : List.copyOf(lamps);
-            blinds = blinds == null ? List.of() : List.copyOf(blinds);
-            speaker = speaker != null && speaker;
+            lamps = List.copyOf(ParamDefaults.or(Params.class, "lamps", lamps));
+            blinds = List.copyOf(ParamDefaults.or(Params.class, "blinds", blinds));
+            speaker = ParamDefaults.or(Params.class, "speaker", speaker);
             if (lamps.isEmpty() && blinds.isEmpty() && !speaker) {
                 throw new IllegalArgumentException("lamps, blinds, speaker: the room needs something to act on");
             }

@@ -30,8 +30,8 @@ public final class RoomSpeaker extends SensorActuatorMethod {
             Integer maxLength) {
 
         public Params {
-            volume = ParamRules.within("volume", volume, 50, 0, 100);
-            maxLength = ParamRules.within("maxLength", maxLength, 200, 1, 10_000);
+            volume = ParamRules.within(Params.class, "volume", volume, 0, 100);
+            maxLength = ParamRules.within(Params.class, "maxLength", maxLength, 1, 10_000);
         }
     }
 

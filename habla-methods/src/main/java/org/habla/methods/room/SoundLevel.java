@@ -38,8 +38,8 @@ public final class SoundLevel extends SensorActuatorMethod {
                     defaultValue = "0") Double offsetDb) {
 
         public Params {
-            floorDb = ParamRules.within("floorDb", floorDb, -100, -200, 0);
-            offsetDb = ParamRules.within("offsetDb", offsetDb, 0, -200, 200);
+            floorDb = ParamRules.within(Params.class, "floorDb", floorDb, -200, 0);
+            offsetDb = ParamRules.within(Params.class, "offsetDb", offsetDb, -200, 200);
         }
     }
 

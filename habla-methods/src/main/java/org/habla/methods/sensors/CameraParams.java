@@ -12,20 +12,20 @@ public record CameraParams(
         @Param(value = "Most frames a second handed on; 0 hands on every frame", unit = "1/s", defaultValue = "0")
         Double maxFps,
         @Param(value = "Horizontal field of view; overrides the channel metadata", unit = "rad",
-                defaultValue = "channel metadata")
+                defaultNote = "channel metadata")
         Double hfovRad,
         @Param(value = "Vertical field of view; overrides the channel metadata", unit = "rad",
-                defaultValue = "channel metadata")
+                defaultNote = "channel metadata")
         Double vfovRad,
         @Param(value = "Height of the camera above the floor; overrides the channel metadata", unit = "m",
-                defaultValue = "channel metadata, else 0")
+                defaultNote = "channel metadata, else 0")
         Double heightM) {
 
     public CameraParams {
-        maxFps = ParamRules.within("maxFps", maxFps, 0, 0, 1000);
-        hfovRad = hfovRad == null ? null : ParamRules.within("hfovRad", hfovRad, 1, 0.01, 3.1);
-        vfovRad = vfovRad == null ? null : ParamRules.within("vfovRad", vfovRad, 1, 0.01, 3.1);
-        heightM = heightM == null ? null : ParamRules.within("heightM", heightM, 0, 0, 100);
+        maxFps = ParamRules.within(CameraParams.class, "maxFps", maxFps, 0, 1000);
+        hfovRad = ParamRules.withinOrNull("hfovRad", hfovRad, 0.01, 3.1);
+        vfovRad = ParamRules.withinOrNull("vfovRad", vfovRad, 0.01, 3.1);
+        heightM = ParamRules.withinOrNull("heightM", heightM, 0, 100);
     }
 
     /** Every parameter at its default. */

@@ -8,17 +8,17 @@ import org.habla.plugin.Param;
  * metadata of the channel input {@code pose} is wired to, then from a Sony ERS-7's head.
  */
 public record HeadParams(
-        @Param(value = "Lowest neck tilt (looking down)", unit = "rad", defaultValue = "channel metadata, else -1.31")
+        @Param(value = "Lowest neck tilt (looking down)", unit = "rad", defaultNote = "channel metadata, else -1.31")
         Double tiltMinRad,
-        @Param(value = "Highest neck tilt", unit = "rad", defaultValue = "channel metadata, else 0.05")
+        @Param(value = "Highest neck tilt", unit = "rad", defaultNote = "channel metadata, else 0.05")
         Double tiltMaxRad,
-        @Param(value = "Pan furthest to the right", unit = "rad", defaultValue = "channel metadata, else -1.62")
+        @Param(value = "Pan furthest to the right", unit = "rad", defaultNote = "channel metadata, else -1.62")
         Double panMinRad,
-        @Param(value = "Pan furthest to the left", unit = "rad", defaultValue = "channel metadata, else 1.62")
+        @Param(value = "Pan furthest to the left", unit = "rad", defaultNote = "channel metadata, else 1.62")
         Double panMaxRad,
-        @Param(value = "Lowest nod (looking down)", unit = "rad", defaultValue = "channel metadata, else -0.26")
+        @Param(value = "Lowest nod (looking down)", unit = "rad", defaultNote = "channel metadata, else -0.26")
         Double nodMinRad,
-        @Param(value = "Highest nod (looking up)", unit = "rad", defaultValue = "channel metadata, else 0.79")
+        @Param(value = "Highest nod (looking up)", unit = "rad", defaultNote = "channel metadata, else 0.79")
         Double nodMaxRad) implements HeadLimits.HeadLimitsOverride {
 
     public HeadParams {

@@ -9,7 +9,7 @@ public record KeyboardParams(
         Integer maxLength) {
 
     public KeyboardParams {
-        maxLength = ParamRules.within("maxLength", maxLength, 256, 1, 65_536);
+        maxLength = ParamRules.within(KeyboardParams.class, "maxLength", maxLength, 1, 65_536);
     }
 
     /** Every parameter at its default. */

@@ -11,18 +11,18 @@ import org.habla.plugin.Param;
  * the defaults (a Sony ERS-7's walk as the {@code tekkotsu} driver states it).
  */
 public record LegsParams(
-        @Param(value = "Fastest forward walk", unit = "m/s", defaultValue = "channel metadata, else 0.18") Double maxForwardMps,
-        @Param(value = "Fastest backward walk", unit = "m/s", defaultValue = "channel metadata, else 0.18") Double maxReverseMps,
-        @Param(value = "Fastest sideways walk", unit = "m/s", defaultValue = "channel metadata, else 0.14") Double maxStrafeMps,
-        @Param(value = "Fastest turn", unit = "rad/s", defaultValue = "channel metadata, else 1.8") Double maxRotateRadps,
+        @Param(value = "Fastest forward walk", unit = "m/s", defaultNote = "channel metadata, else 0.18") Double maxForwardMps,
+        @Param(value = "Fastest backward walk", unit = "m/s", defaultNote = "channel metadata, else 0.18") Double maxReverseMps,
+        @Param(value = "Fastest sideways walk", unit = "m/s", defaultNote = "channel metadata, else 0.14") Double maxStrafeMps,
+        @Param(value = "Fastest turn", unit = "rad/s", defaultNote = "channel metadata, else 1.8") Double maxRotateRadps,
         @Param(value = "Queue length of the walk input, in commands", defaultValue = "8") Integer queue) {
 
     public LegsParams {
-        maxForwardMps = maxForwardMps == null ? null : ParamRules.within("maxForwardMps", maxForwardMps, 0, 0, 10);
-        maxReverseMps = maxReverseMps == null ? null : ParamRules.within("maxReverseMps", maxReverseMps, 0, 0, 10);
-        maxStrafeMps = maxStrafeMps == null ? null : ParamRules.within("maxStrafeMps", maxStrafeMps, 0, 0, 10);
-        maxRotateRadps = maxRotateRadps == null ? null : ParamRules.within("maxRotateRadps", maxRotateRadps, 0, 0, 20);
-        queue = ParamRules.within("queue", queue, 8, 1, 1024);
+        maxForwardMps = ParamRules.withinOrNull("maxForwardMps", maxForwardMps, 0, 10);
+        maxReverseMps = ParamRules.withinOrNull("maxReverseMps", maxReverseMps, 0, 10);
+        maxStrafeMps = ParamRules.withinOrNull("maxStrafeMps", maxStrafeMps, 0, 10);
+        maxRotateRadps = ParamRules.withinOrNull("maxRotateRadps", maxRotateRadps, 0, 20);
+        queue = ParamRules.within(LegsParams.class, "queue", queue, 1, 1024);
     }
 
     /** Every parameter at its default. */

@@ -2,6 +2,7 @@ package org.habla.methods.sensors;
 
 import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code microphone} method: its high-pass filter and its noise gate. */
 public record MicrophoneParams(
@@ -27,15 +28,15 @@ public record MicrophoneParams(
         Integer queue) {
 
     public MicrophoneParams {
-        downmix = downmix == null ? Boolean.FALSE : downmix;
-        highPassHz = ParamRules.within("highPassHz", highPassHz, 80, 0, 2000);
-        gate = gate == null ? Boolean.TRUE : gate;
-        gateThresholdDb = ParamRules.within("gateThresholdDb", gateThresholdDb, 6, 0, 60);
-        closedGainDb = ParamRules.within("closedGainDb", closedGainDb, -20, -120, 0);
-        floorRiseMs = ParamRules.within("floorRiseMs", floorRiseMs, 3000, 10, 600_000);
-        holdMs = ParamRules.within("holdMs", holdMs, 150, 0, 10_000);
-        blockMs = ParamRules.within("blockMs", blockMs, 10, 1, 100);
-        queue = ParamRules.within("queue", queue, 64, 1, 4096);
+        downmix = ParamDefaults.or(MicrophoneParams.class, "downmix", downmix);
+        highPassHz = ParamRules.within(MicrophoneParams.class, "highPassHz", highPassHz, 0, 2000);
+        gate = ParamDefaults.or(MicrophoneParams.class, "gate", gate);
+        gateThresholdDb = ParamRules.within(MicrophoneParams.class, "gateThresholdDb", gateThresholdDb, 0, 60);
+        closedGainDb = ParamRules.within(MicrophoneParams.class, "closedGainDb", closedGainDb, -120, 0);
+        floorRiseMs = ParamRules.within(MicrophoneParams.class, "floorRiseMs", floorRiseMs, 10, 600_000);
+        holdMs = ParamRules.within(MicrophoneParams.class, "holdMs", holdMs, 0, 10_000);
+        blockMs = ParamRules.within(MicrophoneParams.class, "blockMs", blockMs, 1, 100);
+        queue = ParamRules.within(MicrophoneParams.class, "queue", queue, 1, 4096);
     }
 
     /** Every parameter at its default. */

@@ -1,6 +1,7 @@
 package org.habla.methods.sensors;
 
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code odometry} method. */
 public record OdometryParams(
@@ -8,7 +9,7 @@ public record OdometryParams(
         Boolean fromFirstReading) {
 
     public OdometryParams {
-        fromFirstReading = fromFirstReading != null && fromFirstReading;
+        fromFirstReading = ParamDefaults.or(OdometryParams.class, "fromFirstReading", fromFirstReading);
     }
 
     /** Every parameter at its default. */

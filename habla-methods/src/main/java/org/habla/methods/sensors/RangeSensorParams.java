@@ -4,6 +4,7 @@ import java.util.List;
 import org.habla.methods.ParamRules;
 import org.habla.methods.geometry.PlanarPose;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /**
  * The params of the {@code sonar} and {@code infrared} methods. Every geometry parameter is optional:
@@ -12,13 +13,13 @@ import org.habla.plugin.Param;
  */
 public record RangeSensorParams(
         @Param(value = "Reach of every sensor; overrides the channel metadata", unit = "m",
-                defaultValue = "channel metadata, else 5.0 (sonar) or 1.5 (infrared)")
+                defaultNote = "channel metadata, else 5.0 (sonar) or 1.5 (infrared)")
         Double maxRangeM,
         @Param(value = "Shortest range the sensors measure; closer readings are raised to it", unit = "m",
-                defaultValue = "channel metadata, else 0")
+                defaultNote = "channel metadata, else 0")
         Double minRangeM,
         @Param(value = "Sensor poses [{xM, yM, thetaRad}] in index order; overrides the channel metadata",
-                unit = "m, rad", defaultValue = "channel metadata")
+                unit = "m, rad", defaultNote = "channel metadata")
         List<PlanarPose> poses,
         @Param(value = "Turn sensors mounted on the head (metadata mount = head) by the head's pan when input head is wired",
                 defaultValue = "true")
@@ -27,7 +28,7 @@ public record RangeSensorParams(
     public RangeSensorParams {
         maxRangeM = ParamRules.positiveOrNull("maxRangeM", maxRangeM);
         if (minRangeM != null) {
-            minRangeM = ParamRules.nonNegative("minRangeM", minRangeM, 0);
+            minRangeM = ParamRules.nonNegative(RangeSensorParams.class, "minRangeM", minRangeM);
             if (maxRangeM != null && minRangeM >= maxRangeM) {
                 throw new IllegalArgumentException("minRangeM must be below maxRangeM, was " + minRangeM);
             }
@@ -36,7 +37,7 @@ public record RangeSensorParams(
             throw new IllegalArgumentException("poses must list 1..256 poses, has " + poses.size());
         }
         poses = poses == null ? null : List.copyOf(poses);
-        panWithHead = panWithHead == null ? Boolean.TRUE : panWithHead;
+        panWithHead = ParamDefaults.or(RangeSensorParams.class, "panWithHead", panWithHead);
     }
 
     /** Every parameter at its default. */

@@ -15,11 +15,11 @@ public record SpeakerParams(
         @Param(value = "Queue length of the audio input, in chunks", defaultValue = "64") Integer queue) {
 
     public SpeakerParams {
-        volumeDb = ParamRules.within("volumeDb", volumeDb, 0, -60, 30);
-        maxChunkMs = ParamRules.within("maxChunkMs", maxChunkMs, 500, 10, 2000);
-        sampleRateHz = ParamRules.within("sampleRateHz", sampleRateHz, 16_000, 4_000, 48_000);
-        amplitude = ParamRules.within("amplitude", amplitude, 0.5, 0, 1);
-        queue = ParamRules.within("queue", queue, 64, 1, 4096);
+        volumeDb = ParamRules.within(SpeakerParams.class, "volumeDb", volumeDb, -60, 30);
+        maxChunkMs = ParamRules.within(SpeakerParams.class, "maxChunkMs", maxChunkMs, 10, 2000);
+        sampleRateHz = ParamRules.within(SpeakerParams.class, "sampleRateHz", sampleRateHz, 4_000, 48_000);
+        amplitude = ParamRules.within(SpeakerParams.class, "amplitude", amplitude, 0, 1);
+        queue = ParamRules.within(SpeakerParams.class, "queue", queue, 1, 4096);
     }
 
     /** Every parameter at its default. */

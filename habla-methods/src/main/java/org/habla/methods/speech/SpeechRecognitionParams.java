@@ -7,6 +7,7 @@ import org.habla.methods.audio.AudioProcessingParams;
 import org.habla.methods.audio.UtteranceGate;
 import org.habla.methods.audio.VoiceActivityDetector;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code speech-recognition} method: grammar, speaker, rejection, backlog and endpointing. */
 public record SpeechRecognitionParams(
@@ -57,23 +58,23 @@ public record SpeechRecognitionParams(
         Integer queue) {
 
     public SpeechRecognitionParams {
-        grammar = grammar == null ? "" : grammar.trim();
+        grammar = ParamDefaults.or(SpeechRecognitionParams.class, "grammar", grammar).trim();
         if (!grammar.isEmpty() && !grammar.endsWith(".gram")) {
             throw new IllegalArgumentException("grammar must name a JSGF file ending in .gram, was '" + grammar + "'");
         }
-        adaptation = adaptation == null ? "" : adaptation.trim();
-        minConfidence = ParamRules.within("minConfidence", minConfidence, 0.1, 0, 1);
-        outOfGrammarProbability = ParamRules.within("outOfGrammarProbability", outOfGrammarProbability, 0, 0, 1);
-        garbagePrior = ParamRules.within("garbagePrior", garbagePrior, 0.001, 0, 1);
-        denoise = denoise == null || denoise;
-        maxPending = ParamRules.within("maxPending", maxPending, 4, 1, 1000);
-        minVoicedMs = ParamRules.within("minVoicedMs", minVoicedMs, 80, 0, 5000);
-        openAboveFloorDb = ParamRules.within("openAboveFloorDb", openAboveFloorDb, 10, 0, 80);
-        minLevelDb = ParamRules.within("minLevelDb", minLevelDb, -55, -120, 0);
-        hangoverMs = ParamRules.within("hangoverMs", hangoverMs, 200, 0, 5000);
-        endpointMs = ParamRules.within("endpointMs", endpointMs, 100, 0, 5000);
-        endpointAboveFloorDb = ParamRules.within("endpointAboveFloorDb", endpointAboveFloorDb, 30, 0, 200);
-        queue = ParamRules.within("queue", queue, 256, 1, 65_536);
+        adaptation = ParamDefaults.or(SpeechRecognitionParams.class, "adaptation", adaptation).trim();
+        minConfidence = ParamRules.within(SpeechRecognitionParams.class, "minConfidence", minConfidence, 0, 1);
+        outOfGrammarProbability = ParamRules.within(SpeechRecognitionParams.class, "outOfGrammarProbability", outOfGrammarProbability, 0, 1);
+        garbagePrior = ParamRules.within(SpeechRecognitionParams.class, "garbagePrior", garbagePrior, 0, 1);
+        denoise = ParamDefaults.or(SpeechRecognitionParams.class, "denoise", denoise);
+        maxPending = ParamRules.within(SpeechRecognitionParams.class, "maxPending", maxPending, 1, 1000);
+        minVoicedMs = ParamRules.within(SpeechRecognitionParams.class, "minVoicedMs", minVoicedMs, 0, 5000);
+        openAboveFloorDb = ParamRules.within(SpeechRecognitionParams.class, "openAboveFloorDb", openAboveFloorDb, 0, 80);
+        minLevelDb = ParamRules.within(SpeechRecognitionParams.class, "minLevelDb", minLevelDb, -120, 0);
+        hangoverMs = ParamRules.within(SpeechRecognitionParams.class, "hangoverMs", hangoverMs, 0, 5000);
+        endpointMs = ParamRules.within(SpeechRecognitionParams.class, "endpointMs", endpointMs, 0, 5000);
+        endpointAboveFloorDb = ParamRules.within(SpeechRecognitionParams.class, "endpointAboveFloorDb", endpointAboveFloorDb, 0, 200);
+        queue = ParamRules.within(SpeechRecognitionParams.class, "queue", queue, 1, 65_536);
     }
 
     /** Every parameter at its default. */

@@ -18,10 +18,10 @@ public record ActionParams(
         Integer durationMs) {
 
     public ActionParams {
-        forwardMps = ParamRules.positive("forwardMps", forwardMps, 0.2);
-        backMps = ParamRules.positive("backMps", backMps, 0.15);
-        turnRadps = ParamRules.positive("turnRadps", turnRadps, 0.6);
-        durationMs = ParamRules.within("durationMs", durationMs, 1000, 1, 60_000);
+        forwardMps = ParamRules.positive(ActionParams.class, "forwardMps", forwardMps);
+        backMps = ParamRules.positive(ActionParams.class, "backMps", backMps);
+        turnRadps = ParamRules.positive(ActionParams.class, "turnRadps", turnRadps);
+        durationMs = ParamRules.within(ActionParams.class, "durationMs", durationMs, 1, 60_000);
     }
 
     /** Every parameter at its default. */

@@ -1,9 +1,9 @@
 package org.habla.methods.virtual;
 
-import java.util.LinkedHashMap;
 import java.util.Map;
 import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code command} method: which heard input means which command label. */
 public record CommandParams(
@@ -16,11 +16,8 @@ public record CommandParams(
                 defaultValue = "0")
         Integer debounceMs) {
 
-    /** The teacher's notes and phrases of the paper's experiments. */
-    public static final Map<String, String> DEFAULT_MAP = defaultMap();
-
     public CommandParams {
-        map = map == null ? DEFAULT_MAP : Map.copyOf(map);
+        map = Map.copyOf(ParamDefaults.or(CommandParams.class, "map", map));
         if (map.isEmpty() || map.size() > 1024) {
             throw new IllegalArgumentException("map must hold 1..1024 entries, has " + map.size());
         }
@@ -31,24 +28,11 @@ public record CommandParams(
                         + "of 1..64 characters, has '" + e.getValue() + "'");
             }
         }
-        debounceMs = ParamRules.within("debounceMs", debounceMs, 0, 0, 600_000);
+        debounceMs = ParamRules.within(CommandParams.class, "debounceMs", debounceMs, 0, 600_000);
     }
 
     /** Every parameter at its default. */
     public static CommandParams defaults() {
         return new CommandParams(null, null);
-    }
-
-    private static Map<String, String> defaultMap() {
-        Map<String, String> m = new LinkedHashMap<>();
-        m.put("C5", "forward");
-        m.put("E5", "left");
-        m.put("G5", "right");
-        m.put("C6", "back");
-        m.put("go forward", "forward");
-        m.put("turn left", "left");
-        m.put("turn right", "right");
-        m.put("go back", "back");
-        return Map.copyOf(m);
     }
 }

@@ -12,8 +12,8 @@ public record DistanceAngleParams(
         Integer lostAfterMs) {
 
     public DistanceAngleParams {
-        rateHz = ParamRules.within("rateHz", rateHz, 10.0, 0.1, 100.0);
-        lostAfterMs = ParamRules.within("lostAfterMs", lostAfterMs, 1000, 1, 600_000);
+        rateHz = ParamRules.within(DistanceAngleParams.class, "rateHz", rateHz, 0.1, 100.0);
+        lostAfterMs = ParamRules.within(DistanceAngleParams.class, "lostAfterMs", lostAfterMs, 1, 600_000);
     }
 
     /** Every parameter at its default. */

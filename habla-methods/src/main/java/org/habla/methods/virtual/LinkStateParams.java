@@ -10,7 +10,7 @@ public record LinkStateParams(
         Integer staleAfterMs) {
 
     public LinkStateParams {
-        staleAfterMs = ParamRules.within("staleAfterMs", staleAfterMs, 3000, 100, 600_000);
+        staleAfterMs = ParamRules.within(LinkStateParams.class, "staleAfterMs", staleAfterMs, 100, 600_000);
     }
 
     /** Every parameter at its default. */

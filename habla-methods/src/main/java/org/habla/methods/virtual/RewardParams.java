@@ -1,9 +1,9 @@
 package org.habla.methods.virtual;
 
-import java.util.LinkedHashMap;
 import java.util.Map;
 import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code reward} method: which words and which touches mean pleasure or pain. */
 public record RewardParams(
@@ -19,9 +19,9 @@ public record RewardParams(
         Double threshold) {
 
     public RewardParams {
-        words = checked("words", words == null ? defaultWords() : words);
-        touch = checked("touch", touch == null ? Map.of("backMiddle", 1.0, "headTouch", -1.0) : touch);
-        threshold = ParamRules.within("threshold", threshold, 0.5, 1e-6, 1e6);
+        words = checked("words", ParamDefaults.or(RewardParams.class, "words", words));
+        touch = checked("touch", ParamDefaults.or(RewardParams.class, "touch", touch));
+        threshold = ParamRules.within(RewardParams.class, "threshold", threshold, 1e-6, 1e6);
     }
 
     /** Every parameter at its default. */
@@ -40,16 +40,5 @@ public record RewardParams(
             }
         }
         return Map.copyOf(map);
-    }
-
-    private static Map<String, Double> defaultWords() {
-        Map<String, Double> m = new LinkedHashMap<>();
-        m.put("pleasure", 1.0);
-        m.put("pain", -1.0);
-        m.put("good dog", 1.0);
-        m.put("well done", 1.0);
-        m.put("bad dog", -1.0);
-        m.put("no", -1.0);
-        return m;
     }
 }

@@ -20,12 +20,12 @@ public record ColorRange(
     public static final int HUE_MAX = 179;
 
     public ColorRange {
-        hMin = ParamRules.within("hMin", hMin, 145, 0, HUE_MAX);
-        hMax = ParamRules.within("hMax", hMax, 175, 0, HUE_MAX);
-        sMin = ParamRules.within("sMin", sMin, 90, 0, 255);
-        sMax = ParamRules.within("sMax", sMax, 255, 0, 255);
-        vMin = ParamRules.within("vMin", vMin, 60, 0, 255);
-        vMax = ParamRules.within("vMax", vMax, 255, 0, 255);
+        hMin = ParamRules.within(ColorRange.class, "hMin", hMin, 0, HUE_MAX);
+        hMax = ParamRules.within(ColorRange.class, "hMax", hMax, 0, HUE_MAX);
+        sMin = ParamRules.within(ColorRange.class, "sMin", sMin, 0, 255);
+        sMax = ParamRules.within(ColorRange.class, "sMax", sMax, 0, 255);
+        vMin = ParamRules.within(ColorRange.class, "vMin", vMin, 0, 255);
+        vMax = ParamRules.within(ColorRange.class, "vMax", vMax, 0, 255);
         if (sMin > sMax) {
             throw new IllegalArgumentException("sMin (" + sMin + ") must not be above sMax (" + sMax + ")");
         }

@@ -41,10 +41,10 @@ public record ImageSegmentationParams(
             }
         }
         colors = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(colors));
-        minAreaPx = ParamRules.within("minAreaPx", minAreaPx, 12, 1, 1 << 28);
-        openPx = ParamRules.within("openPx", openPx, 5, 0, 31);
-        closePx = ParamRules.within("closePx", closePx, 3, 0, 31);
-        maxBlobs = ParamRules.within("maxBlobs", maxBlobs, 16, 1, 1024);
+        minAreaPx = ParamRules.within(ImageSegmentationParams.class, "minAreaPx", minAreaPx, 1, 1 << 28);
+        openPx = ParamRules.within(ImageSegmentationParams.class, "openPx", openPx, 0, 31);
+        closePx = ParamRules.within(ImageSegmentationParams.class, "closePx", closePx, 0, 31);
+        maxBlobs = ParamRules.within(ImageSegmentationParams.class, "maxBlobs", maxBlobs, 1, 1024);
     }
 
     /** Every parameter at its default: one class, pink. */

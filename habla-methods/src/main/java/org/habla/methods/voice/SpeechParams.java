@@ -2,6 +2,7 @@ package org.habla.methods.voice;
 
 import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
+import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code speech} method: the sound of the voice and what it says on its own. */
 public record SpeechParams(
@@ -19,15 +20,14 @@ public record SpeechParams(
         Integer emotionIntervalMs) {
 
     public SpeechParams {
-        sampleRateHz = ParamRules.within("sampleRateHz", sampleRateHz, 16_000, 4_000, 48_000);
-        amplitude = ParamRules.within("amplitude", amplitude, 0.5, 0, 1);
-        wordGapMs = ParamRules.within("wordGapMs", wordGapMs, 60, 0, 2000);
-        chunkMs = ParamRules.within("chunkMs", chunkMs, 500, 10, 2000);
-        maxChars = ParamRules.within("maxChars", maxChars, 200, 1, 10_000);
-        speakEmotions = speakEmotions == null ? Boolean.TRUE : speakEmotions;
-        sayEmotions = sayEmotions == null ? java.util.List.of("happy", "excited", "sad", "angry")
-                : java.util.List.copyOf(sayEmotions);
-        emotionIntervalMs = ParamRules.within("emotionIntervalMs", emotionIntervalMs, 2000, 0, 600_000);
+        sampleRateHz = ParamRules.within(SpeechParams.class, "sampleRateHz", sampleRateHz, 4_000, 48_000);
+        amplitude = ParamRules.within(SpeechParams.class, "amplitude", amplitude, 0, 1);
+        wordGapMs = ParamRules.within(SpeechParams.class, "wordGapMs", wordGapMs, 0, 2000);
+        chunkMs = ParamRules.within(SpeechParams.class, "chunkMs", chunkMs, 10, 2000);
+        maxChars = ParamRules.within(SpeechParams.class, "maxChars", maxChars, 1, 10_000);
+        speakEmotions = ParamDefaults.or(SpeechParams.class, "speakEmotions", speakEmotions);
+        sayEmotions = java.util.List.copyOf(ParamDefaults.or(SpeechParams.class, "sayEmotions", sayEmotions));
+        emotionIntervalMs = ParamRules.within(SpeechParams.class, "emotionIntervalMs", emotionIntervalMs, 0, 600_000);
     }
 
     /** Every parameter at its default. */
