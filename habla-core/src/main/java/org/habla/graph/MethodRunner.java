@@ -50,8 +50,6 @@ final class MethodRunner implements MethodContext {
     private final Map<Output<?>, ChannelDescriptor> commandChannels = new HashMap<>();
     private final ConcurrentLinkedQueue<Runnable> turns = new ConcurrentLinkedQueue<>();
     private final AtomicBoolean signalled = new AtomicBoolean();
-    /** The runner's thread is parked or about to park: only then does a wake need to unpark it. */
-    private volatile boolean parked;
     private final AtomicBoolean tickPending = new AtomicBoolean();
     private final RateMeter handled = new RateMeter();
     private final LatencyStats latency = new LatencyStats();
@@ -293,21 +291,11 @@ final class MethodRunner implements MethodContext {
         turns.add(turn);
     }
 
-    /**
-     * Tells the runner there is work. It sets the signal, then unparks the thread only if it is parked: the runner
-     * says it is about to park before it looks at the signal a last time, and a waker sets the signal before it
-     * looks whether the runner parks, so one of the two always sees the other (a busy runner costs its producers
-     * no unpark per sample).
-     */
     private void wake() {
-        if (!signalled.get()) {
-            signalled.set(true);
-        }
-        if (parked) {
-            Thread t = thread;
-            if (t != null) {
-                LockSupport.unpark(t);
-            }
+        signalled.set(true);
+        Thread t = thread;
+        if (t != null) {
+            LockSupport.unpark(t);
         }
     }
 
@@ -316,11 +304,7 @@ final class MethodRunner implements MethodContext {
             signalled.set(false);
             boolean worked = drainOnce();
             if (!worked && !signalled.get() && running) {
-                parked = true;
-                if (!signalled.get() && running) {
-                    LockSupport.parkNanos(this, IDLE_PARK_NANOS);
-                }
-                parked = false;
+                LockSupport.parkNanos(this, IDLE_PARK_NANOS);
             }
         }
     }
