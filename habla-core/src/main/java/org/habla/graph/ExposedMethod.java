@@ -135,10 +135,10 @@ final class ExposedMethod implements ControlPoint {
         if (refused.isPresent()) {
             throw new Rejected("bad_value", refused.get());
         }
-        MethodState state = runner.method().state();
+        MethodState state = runner.state();
         if (state != MethodState.RUNNING) {
             throw new Rejected("method_unavailable", "method " + runner.id() + " is " + state
-                    + (runner.method().failure().isEmpty() ? "" : ": " + runner.method().failure()));
+                    + (runner.failure().isEmpty() ? "" : ": " + runner.failure()));
         }
         long seq;
         synchronized (controlSequences) {

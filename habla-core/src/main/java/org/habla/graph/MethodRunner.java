@@ -22,6 +22,8 @@ import org.habla.method.Delivery;
 import org.habla.method.Input;
 import org.habla.method.Method;
 import org.habla.method.MethodContext;
+import org.habla.method.MethodLifecycle;
+import org.habla.method.MethodState;
 import org.habla.method.Output;
 import org.habla.sample.Payload;
 import org.habla.sample.Sample;
@@ -41,6 +43,7 @@ final class MethodRunner implements MethodContext {
     private final String id;
     private final String type;
     private final Method method;
+    private final MethodLifecycle lifecycle;
     private final EngineClock clock;
     private final ExecutorService backgroundPool;
     private final List<InputSlot> slots = new ArrayList<>();
@@ -108,11 +111,21 @@ final class MethodRunner implements MethodContext {
         for (Output<?> out : method.outputs()) {
             ports.put(out, new OutputPort(id + "." + out.name()));
         }
-        method.attach(this);
+        lifecycle = MethodLifecycle.attach(method, this);
     }
 
     String id() {
         return id;
+    }
+
+    /** Where the method is in its life cycle. */
+    MethodState state() {
+        return lifecycle.state();
+    }
+
+    /** Why the method failed, or an empty string. */
+    String failure() {
+        return lifecycle.failure();
     }
 
     String type() {
@@ -221,7 +234,7 @@ final class MethodRunner implements MethodContext {
         if (placement != null) {
             LOG.info("method {} runs in the daemon while its worker {} is lost", id, placement.host());
         }
-        method.start();
+        lifecycle.start();
         method.tickPeriod().ifPresent(p -> ticker = clock.every(p.toNanos() / 1_000, this::requestTick));
     }
 
@@ -241,7 +254,7 @@ final class MethodRunner implements MethodContext {
             }
         }
         if (placement == null || localStarted) {
-            method.stop();
+            lifecycle.stop();
         }
     }
 
@@ -279,7 +292,7 @@ final class MethodRunner implements MethodContext {
                 tickPending.set(false);
                 tap.periodic(TICK_PREFIX + id, clock.nowMicros(), consumed());
                 if (placement == null || !placement.up()) {
-                    method.tick(clock.nowMicros());
+                    lifecycle.tick(clock.nowMicros());
                 }
             });
             wake();
@@ -356,7 +369,7 @@ final class MethodRunner implements MethodContext {
         if (now != motionResetsSeen) {
             motionResetsSeen = now;
             if (placement == null || localStarted) {
-                method.motionStopped();
+                lifecycle.motionStopped();
             }
         }
     }
@@ -365,12 +378,12 @@ final class MethodRunner implements MethodContext {
     private void route(Input<?> input, Sample s) {
         RemotePlacement remote = placement;
         if (remote == null) {
-            method.deliver(input, s);
+            lifecycle.deliver(input, s);
         } else if (remote.up()) {
             remote.forward(input, s);
         } else if (remote.fallsBackToLocal()) {
             startLocal();
-            method.deliver(input, s);
+            lifecycle.deliver(input, s);
         } else {
             remote.dropWhileLost();
         }
@@ -433,9 +446,9 @@ final class MethodRunner implements MethodContext {
             backgroundPool.execute(() -> {
                 try {
                     T result = task.call();
-                    addTurn(() -> method.runTurn(what, () -> done.accept(result)));
+                    addTurn(() -> lifecycle.runTurn(what, () -> done.accept(result)));
                 } catch (Exception | LinkageError e) {
-                    addTurn(() -> method.fail(what, e));
+                    addTurn(() -> lifecycle.fail(what, e));
                 } finally {
                     work.end();
                 }
@@ -454,9 +467,9 @@ final class MethodRunner implements MethodContext {
         n.put("id", id);
         n.put("type", type);
         n.put("layer", method.layer().configName());
-        n.put("state", method.state().name());
-        if (!method.failure().isEmpty()) {
-            n.put("failure", method.failure());
+        n.put("state", lifecycle.state().name());
+        if (!lifecycle.failure().isEmpty()) {
+            n.put("failure", lifecycle.failure());
         }
         n.put("ready", ready);
         if (!readinessDetail.isEmpty()) {

@@ -55,24 +55,22 @@ import org.slf4j.LoggerFactory;
  * {@link #background}, periodic work through {@link #tickEvery}, time through {@link #nowMicros}.
  *
  * <h2>Life cycle</h2>
- * The engine owns it: {@code NEW → ATTACHED → RUNNING → STOPPED}. The public final methods below
- * ({@link #attach}, {@link #start}, {@link #deliver}, {@link #tick}, {@link #stop}) are the engine's
- * and check every transition; an exception thrown by a hook puts the method in {@code FAILED} with
- * one log line, and a failed method is handed nothing more. Subclasses fill the hooks
+ * The engine owns it, through a {@link MethodLifecycle} that a method never sees:
+ * {@code NEW → ATTACHED → RUNNING → STOPPED}; an exception thrown by a hook puts the method in
+ * {@code FAILED} with one log line, and a failed method is handed nothing more. Subclasses fill the hooks
  * {@link #onStart}, {@link #onSample}, {@link #onTick} and {@link #onStop}; a method that keeps motion
- * state (a held action, a speed ramp) also fills {@link #onMotionStopped}.
+ * state (a held action, a speed ramp) also fills {@link #onMotionStopped}. What a method author calls is
+ * above; what the engine reads of a method — its id, ports and tick period — is below.
  */
 public abstract sealed class Method permits SensorActuatorMethod, ProcessingMethod, VirtualMethod {
-
-    private static final Logger LOG = LoggerFactory.getLogger(Method.class);
 
     private final List<Input<?>> inputs = new ArrayList<>();
     private final List<Output<?>> outputs = new ArrayList<>();
     private Duration tickPeriod;
-    private volatile MethodState state = MethodState.NEW;
-    private volatile String failure = "";
-    private MethodContext context;
-    private long currentSourceMicros;
+    /** The engine's handle on this method, set once when it is attached ({@link MethodLifecycle#attach}). */
+    volatile MethodLifecycle lifecycle;
+    /** The source time of the message being handled, set by the life cycle before each hook runs. */
+    long currentSourceMicros;
 
     Method() {
     }
@@ -118,7 +116,7 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
     }
 
     private <P extends Payload> Input<P> addInput(Input<P> in) {
-        requireState(MethodState.NEW, "declare an input");
+        requireNew("declare an input");
         for (Input<?> other : inputs) {
             if (other.name().equals(in.name())) {
                 throw new IllegalArgumentException("input '" + in.name() + "' is declared twice");
@@ -135,7 +133,7 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
 
     /** Declares an output with a shape that tells clients its unit, fields and meaning. */
     protected final <P extends Payload> Output<P> output(String name, Class<P> type, Shape shape) {
-        requireState(MethodState.NEW, "declare an output");
+        requireNew("declare an output");
         for (Output<?> other : outputs) {
             if (other.name().equals(name)) {
                 throw new IllegalArgumentException("output '" + name + "' is declared twice");
@@ -148,7 +146,7 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
 
     /** Asks the engine for {@link #onTick} every {@code period}; call from the constructor. */
     protected final void tickEvery(Duration period) {
-        requireState(MethodState.NEW, "ask for ticks");
+        requireNew("ask for ticks");
         if (period.isNegative() || period.isZero() || period.toMillis() > 3_600_000) {
             throw new IllegalArgumentException("tick period must be within (0, 1 h], was " + period);
         }
@@ -256,7 +254,8 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
 
     /** The method's id, once attached. */
     public final String id() {
-        return context == null ? getClass().getSimpleName() : context.methodId();
+        MethodLifecycle l = lifecycle;
+        return l == null ? getClass().getSimpleName() : l.context().methodId();
     }
 
     public final List<Input<?>> inputs() {
@@ -280,124 +279,19 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
         return Optional.ofNullable(tickPeriod);
     }
 
-    public final MethodState state() {
-        return state;
-    }
-
-    /** Why the method failed, or an empty string. */
-    public final String failure() {
-        return failure;
-    }
-
-    /** Engine only: gives the method its context. NEW → ATTACHED. */
-    public final void attach(MethodContext context) {
-        requireState(MethodState.NEW, "attach");
-        this.context = Objects.requireNonNull(context, "context");
-        state = MethodState.ATTACHED;
-    }
-
-    /** Engine only: ATTACHED → RUNNING, or FAILED if {@link #onStart} throws. */
-    public final void start() {
-        requireState(MethodState.ATTACHED, "start");
-        currentSourceMicros = context.nowMicros();
-        state = MethodState.RUNNING;
-        guard("start", this::onStart);
-    }
-
-    /** Engine only: hands one sample of one input to the method, if it is running. */
-    public final void deliver(Input<?> input, Sample sample) {
-        if (state != MethodState.RUNNING) {
-            return;
-        }
-        currentSourceMicros = sample.sourceMicros();
-        guard("handle a sample of " + input.name(), () -> dispatch(input, sample));
-    }
-
-    /** Engine only: a tick, if the method is running. */
-    public final void tick(long nowMicros) {
-        if (state != MethodState.RUNNING) {
-            return;
-        }
-        currentSourceMicros = nowMicros;
-        guard("tick", () -> onTick(nowMicros));
-    }
-
-    /** Engine only: the robot was stopped by the engine (or control came back after that), if running. */
-    public final void motionStopped() {
-        if (state != MethodState.RUNNING) {
-            return;
-        }
-        currentSourceMicros = context.nowMicros();
-        guard("forget its motion after a motion stop", this::onMotionStopped);
-    }
-
-    /** Engine only: runs a piece of method code (a background result) as a turn, if running. */
-    public final void runTurn(String what, ThrowingRunnable turn) {
-        if (state != MethodState.RUNNING) {
-            return;
-        }
-        currentSourceMicros = context.nowMicros();
-        guard(what, turn);
-    }
-
-    /** Engine only: a failure that happened on the method's behalf (e.g. its background task). */
-    public final void fail(String what, Throwable cause) {
-        if (state == MethodState.RUNNING || state == MethodState.ATTACHED) {
-            markFailed(what, cause);
-        }
-    }
-
-    /** Engine only: RUNNING or FAILED → STOPPED (FAILED stays FAILED); calls {@link #onStop} once. */
-    public final void stop() {
-        MethodState was = state;
-        if (was == MethodState.STOPPED || was == MethodState.NEW) {
-            return;
-        }
-        if (was == MethodState.RUNNING) {
-            state = MethodState.STOPPED;
-        }
-        try {
-            onStop();
-        } catch (Exception e) {
-            LOG.warn("method {} failed to stop cleanly: {}", id(), e.toString());
-        }
-    }
-
-    @SuppressWarnings({"unchecked", "rawtypes"})
-    private void dispatch(Input<?> input, Sample sample) throws Exception {
-        InputHandler handler = input.handler();
-        if (handler == null) {
-            onSample(input, sample);
-        } else {
-            handler.handle(input.payload(sample), sample);
-        }
-    }
-
-    private void guard(String what, ThrowingRunnable body) {
-        try {
-            body.run();
-        } catch (Exception | LinkageError | AssertionError e) {
-            markFailed(what, e);
-        }
-    }
-
-    private void markFailed(String what, Throwable e) {
-        failure = "failed to " + what + ": " + e;   // before the state, so whoever sees FAILED sees why
-        state = MethodState.FAILED;
-        LOG.error("method {} ({}) FAILED to {}: {}", id(), getClass().getSimpleName(), what, e.toString());
-        LOG.debug("method {} failure trace", id(), e);
-    }
-
     private MethodContext context() {
-        if (context == null) {
+        MethodLifecycle l = lifecycle;
+        if (l == null) {
             throw new IllegalStateException(getClass().getSimpleName() + " is not attached to an engine yet");
         }
-        return context;
+        return l.context();
     }
 
-    private void requireState(MethodState expected, String action) {
-        if (state != expected) {
-            throw new IllegalStateException("cannot " + action + " in state " + state + " (needs " + expected + ")");
+    /** Ports and ticks are declared while the method is being built, before an engine attaches it. */
+    private void requireNew(String action) {
+        MethodLifecycle l = lifecycle;
+        if (l != null) {
+            throw new IllegalStateException("cannot " + action + " in state " + l.state() + " (needs NEW)");
         }
     }
 

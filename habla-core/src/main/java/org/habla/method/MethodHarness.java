@@ -29,6 +29,7 @@ import org.habla.sample.Sample;
 public final class MethodHarness {
 
     private final Method method;
+    private MethodLifecycle lifecycle;
     private final String id;
     private final Map<String, List<Sample>> emitted = new HashMap<>();
     private final Map<String, ChannelDescriptor> channels = new HashMap<>();
@@ -50,7 +51,7 @@ public final class MethodHarness {
     /** Attaches {@code method} under {@code id}; call {@link #start()} next (or use {@link #started}). */
     public static MethodHarness of(String id, Method method) {
         MethodHarness h = new MethodHarness(id, method);
-        method.attach(h.new Context());
+        h.lifecycle = MethodLifecycle.attach(method, h.new Context());
         return h;
     }
 
@@ -74,7 +75,7 @@ public final class MethodHarness {
     }
 
     public MethodHarness start() {
-        method.start();
+        lifecycle.start();
         method.tickPeriod().ifPresent(p -> nextTickMicros = nowMicros + p.toNanos() / 1000);
         return this;
     }
@@ -110,7 +111,7 @@ public final class MethodHarness {
             throw new IllegalArgumentException(in + " does not accept " + value.kind().wireName());
         }
         long seq = sequences.merge("in:" + input, 1L, Long::sum);
-        method.deliver(in, new Sample(value, "harness." + input, seq, sourceMicros, false));
+        lifecycle.deliver(in, new Sample(value, "harness." + input, seq, sourceMicros, false));
         return this;
     }
 
@@ -128,7 +129,7 @@ public final class MethodHarness {
 
     /** Tells the method the engine stopped the robot (the motion watchdog tripped, or control came back). */
     public MethodHarness motionStopped() {
-        method.motionStopped();
+        lifecycle.motionStopped();
         return this;
     }
 
@@ -140,7 +141,7 @@ public final class MethodHarness {
             long step = period.get().toNanos() / 1000;
             while (nextTickMicros <= target) {
                 nowMicros = nextTickMicros;
-                method.tick(nowMicros);
+                lifecycle.tick(nowMicros);
                 nextTickMicros += step;
             }
         }
@@ -185,7 +186,7 @@ public final class MethodHarness {
     }
 
     public MethodState state() {
-        return method.state();
+        return lifecycle.state();
     }
 
     public boolean ready() {
@@ -197,7 +198,7 @@ public final class MethodHarness {
     }
 
     public MethodHarness stop() {
-        method.stop();
+        lifecycle.stop();
         return this;
     }
 
@@ -260,10 +261,10 @@ public final class MethodHarness {
                 try {
                     result = task.call();
                 } catch (Exception e) {
-                    method.fail(what, e);
+                    lifecycle.fail(what, e);
                     return;
                 }
-                method.runTurn(what + " (done)", () -> done.accept(result));
+                lifecycle.runTurn(what + " (done)", () -> done.accept(result));
             };
             if (backgroundAtOnce) {
                 r.run();

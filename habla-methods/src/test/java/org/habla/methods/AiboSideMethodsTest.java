@@ -8,6 +8,7 @@ import org.habla.config.ConfigLoader;
 import org.habla.config.HablaConfig;
 import org.habla.config.MethodConfig;
 import org.habla.method.Method;
+import org.habla.method.MethodLifecycle;
 import org.habla.method.MethodState;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.PluginRegistry;
@@ -50,7 +51,7 @@ class AiboSideMethodsTest {
                 if (mc.type().equals(type)) {
                     MethodProvider provider = registry.method(type).orElseThrow();
                     Method m = provider.create(mc.layer(), (Record) mc.params());
-                    assertThat(m.state()).isEqualTo(MethodState.NEW);
+                    assertThat(MethodLifecycle.stateOf(m)).isEqualTo(MethodState.NEW);
                     made++;
                 }
             }
