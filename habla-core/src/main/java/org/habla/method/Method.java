@@ -294,10 +294,4 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
             throw new IllegalStateException("cannot " + action + " in state " + l.state() + " (needs NEW)");
         }
     }
-
-    /** A piece of method code that may throw. */
-    @FunctionalInterface
-    public interface ThrowingRunnable {
-        void run() throws Exception;
-    }
 }

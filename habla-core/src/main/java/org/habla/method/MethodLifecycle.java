@@ -102,7 +102,7 @@ public final class MethodLifecycle {
     }
 
     /** Runs a piece of method code (a background result) as a turn, if the method is running. */
-    public void runTurn(String what, Method.ThrowingRunnable turn) {
+    public void runTurn(String what, ThrowingRunnable turn) {
         if (state != MethodState.RUNNING) {
             return;
         }
@@ -143,7 +143,7 @@ public final class MethodLifecycle {
         }
     }
 
-    private void guard(String what, Method.ThrowingRunnable body) {
+    private void guard(String what, ThrowingRunnable body) {
         try {
             body.run();
         } catch (Exception | LinkageError | AssertionError e) {
@@ -156,6 +156,12 @@ public final class MethodLifecycle {
         state = MethodState.FAILED;
         LOG.error("method {} ({}) FAILED to {}: {}", method.id(), method.getClass().getSimpleName(), what, e.toString());
         LOG.debug("method {} failure trace", method.id(), e);
+    }
+
+    /** A piece of method code that may throw: a hook, a background result. */
+    @FunctionalInterface
+    public interface ThrowingRunnable {
+        void run() throws Exception;
     }
 
     private void requireState(MethodState expected, String action) {
