@@ -62,8 +62,8 @@ final class MethodRunner implements MethodContext {
     private volatile String readinessDetail = "";
     private AutoCloseable ticker;
     private Thread thread;
-    private RemotePlacement placement;
-    private volatile boolean localStarted;
+    private final MethodHost.Local local;
+    private volatile MethodHost host;
     private volatile Consumer<ControlNotice> controlNotices = n -> { };
     private LongSupplier motionResets;
     private long motionResetsSeen;
@@ -112,6 +112,9 @@ final class MethodRunner implements MethodContext {
             ports.put(out, new OutputPort(id + "." + out.name()));
         }
         lifecycle = MethodLifecycle.attach(method, this);
+        local = new MethodHost.Local(lifecycle, () -> method.tickPeriod()
+                .ifPresent(p -> ticker = clock.every(p.toNanos() / 1_000, this::requestTick)));
+        host = local;
     }
 
     String id() {
@@ -190,7 +193,7 @@ final class MethodRunner implements MethodContext {
      * Call before {@link #start}.
      */
     void placeOn(RemotePlacement remote) {
-        this.placement = remote;
+        this.host = new MethodHost.OnWorker(id, remote, local);
         if (!remote.fallsBackToLocal()) {
             ready = false;
             readinessDetail = "waiting for worker " + remote.host();
@@ -205,37 +208,23 @@ final class MethodRunner implements MethodContext {
         return readinessDetail;
     }
 
-    RemotePlacement placement() {
-        return placement;
-    }
-
     /** Starts the method and its thread; a method placed on a worker starts here only when it must run locally. */
     void start() {
         running = true;
         thread = new Thread(this::loop, "habla-method-" + id);
         thread.setDaemon(true);
-        if (placement == null) {
-            startLocal();
-        }
+        host.start();
         thread.start();
     }
 
     /** From the placement, on any thread: the worker was lost and the fallback is to run here. */
     void fallBackToLocal() {
-        addTurn(this::startLocal);
+        addTurn(() -> {
+            if (host instanceof MethodHost.OnWorker w) {
+                w.fallBack();
+            }
+        });
         wake();
-    }
-
-    private void startLocal() {
-        if (localStarted) {
-            return;
-        }
-        localStarted = true;
-        if (placement != null) {
-            LOG.info("method {} runs in the daemon while its worker {} is lost", id, placement.host());
-        }
-        lifecycle.start();
-        method.tickPeriod().ifPresent(p -> ticker = clock.every(p.toNanos() / 1_000, this::requestTick));
     }
 
     /** Stops the thread, then the method. Waits at most {@code waitMillis} for the current turn. */
@@ -253,9 +242,7 @@ final class MethodRunner implements MethodContext {
                 LOG.warn("method {} is still busy after {} ms; stopping it anyway", id, waitMillis);
             }
         }
-        if (placement == null || localStarted) {
-            lifecycle.stop();
-        }
+        host.stop();
     }
 
     /**
@@ -291,9 +278,7 @@ final class MethodRunner implements MethodContext {
             addTurn(() -> {
                 tickPending.set(false);
                 tap.periodic(TICK_PREFIX + id, clock.nowMicros(), consumed());
-                if (placement == null || !placement.up()) {
-                    lifecycle.tick(clock.nowMicros());
-                }
+                host.tick(clock.nowMicros());
             });
             wake();
         }
@@ -368,25 +353,13 @@ final class MethodRunner implements MethodContext {
         long now = resets.getAsLong();
         if (now != motionResetsSeen) {
             motionResetsSeen = now;
-            if (placement == null || localStarted) {
-                lifecycle.motionStopped();
-            }
+            host.motionStopped();
         }
     }
 
-    /** Hands a sample to the worker while it is up, else to the local method if it runs, else drops it. */
+    /** Hands a sample to where the method runs. */
     private void route(Input<?> input, Sample s) {
-        RemotePlacement remote = placement;
-        if (remote == null) {
-            lifecycle.deliver(input, s);
-        } else if (remote.up()) {
-            remote.forward(input, s);
-        } else if (remote.fallsBackToLocal()) {
-            startLocal();
-            lifecycle.deliver(input, s);
-        } else {
-            remote.dropWhileLost();
-        }
+        host.deliver(input, s);
     }
 
     // ------------------------------------------------------------------ MethodContext
@@ -476,9 +449,7 @@ final class MethodRunner implements MethodContext {
             n.put("readiness", readinessDetail);
         }
         n.put("stale", stale);
-        if (placement != null) {
-            n.set("placement", placement.status());
-        }
+        host.status(n);
         n.put("handled", handled.total());
         n.put("handledPerS", handled.perSecond(nowMicros));
         n.set("latency", latency.snapshot());
