@@ -47,6 +47,7 @@ public final class MethodGraph implements AutoCloseable {
     private static final String WATCHDOG_TASK = "watchdog";
 
     private final HablaConfig config;
+    private final GraphTopology topology;
     private final EngineClock clock;
     private final ExecutorService backgroundPool;
     private final Map<String, MethodRunner> runners = new LinkedHashMap<>();
@@ -71,6 +72,7 @@ public final class MethodGraph implements AutoCloseable {
         this.tap = tap;
         this.replayed = recordedChannels != null;
         this.config = config;
+        this.topology = new GraphTopology(config);
         this.clock = clock;
         this.startedMicros = clock.nowMicros();
         AtomicInteger n = new AtomicInteger();
@@ -110,9 +112,11 @@ public final class MethodGraph implements AutoCloseable {
             runners.get(id).followMotionResets(watchdog::resets);
         }
         for (MethodConfig mc : config.methods()) {
-            upstreamInterfaces.put(mc.id(), upstream(mc.id(), new LinkedHashSet<>()));
-            upstreamChannels.put(mc.id(), upstreamChannels(mc.id(), new LinkedHashSet<>()));
-            upstreamPlacements.put(mc.id(), upstreamPlacements(mc.id(), new LinkedHashSet<>()));
+            upstreamInterfaces.put(mc.id(), topology.upstreamInterfaces(mc.id()));
+            upstreamChannels.put(mc.id(), topology.upstreamChannels(mc.id()));
+            Set<String> placedUpstream = new LinkedHashSet<>(topology.feeding(mc.id()));
+            placedUpstream.retainAll(placements.keySet());
+            upstreamPlacements.put(mc.id(), placedUpstream);
         }
         linkStates.onChange(this::refreshStale);
     }
@@ -192,31 +196,10 @@ public final class MethodGraph implements AutoCloseable {
     public boolean reachesFromControl(String socket, String methodId) {
         for (ExposedMethod x : exposed) {
             if (x.name().equals(socket)) {
-                return downstream(x.methodId(), new LinkedHashSet<>()).contains(methodId);
+                return topology.downstream(x.methodId()).contains(methodId);
             }
         }
         return false;
-    }
-
-    /** Whether the method, or one its outputs feed, writes an interface's command channel. */
-    private boolean actuates(String methodId) {
-        return downstream(methodId, new LinkedHashSet<>()).stream()
-                .anyMatch(id -> !config.method(id).orElseThrow().commands().isEmpty());
-    }
-
-    /** The method and every method its outputs feed, directly or not. */
-    private Set<String> downstream(String methodId, Set<String> found) {
-        if (!found.add(methodId)) {
-            return found;
-        }
-        for (MethodConfig mc : config.methods()) {
-            for (Source s : mc.inputs().values()) {
-                if (s instanceof Source.MethodOutput mo && mo.methodId().equals(methodId)) {
-                    downstream(mc.id(), found);
-                }
-            }
-        }
-        return found;
     }
 
     private InterfaceLink replayedLink(String interfaceId) {
@@ -295,30 +278,14 @@ public final class MethodGraph implements AutoCloseable {
             runner.port(out).subscribe(sample -> link.command(channel, sample));
         }
         mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner,
-                x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap, actuates(mc.id()))));
-    }
-
-    private Set<String> upstream(String methodId, Set<String> visited) {
-        Set<String> result = new LinkedHashSet<>();
-        if (!visited.add(methodId)) {
-            return result;
-        }
-        MethodConfig mc = config.method(methodId).orElseThrow();
-        for (Source s : mc.inputs().values()) {
-            switch (s) {
-                case Source.Channel ch -> result.add(ch.interfaceId());
-                case Source.MethodOutput mo -> result.addAll(upstream(mo.methodId(), visited));
-                case Source.Control c -> { }
-            }
-        }
-        return result;
+                x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap, topology.actuates(mc.id()))));
     }
 
     /** Sends what each method tells control clients to the sockets whose values reach it. */
     private void routeNotices() {
         for (MethodRunner r : runners.values()) {
             List<ExposedMethod> told = exposed.stream().filter(x -> !x.controlInputs().isEmpty()
-                    && downstream(x.methodId(), new LinkedHashSet<>()).contains(r.id())).toList();
+                    && topology.downstream(x.methodId()).contains(r.id())).toList();
             if (!told.isEmpty()) {
                 r.tellControlVia(notice -> told.forEach(x -> x.notice(notice)));
             }
@@ -337,55 +304,10 @@ public final class MethodGraph implements AutoCloseable {
                 return d != null && d.motion();
             });
             if (drives) {
-                feeding(mc.id(), found);
+                topology.feeding(mc.id(), found);
             }
         }
         return found;
-    }
-
-    /** Adds the method and every method whose outputs feed it, directly or not. */
-    private void feeding(String methodId, Set<String> found) {
-        if (!found.add(methodId)) {
-            return;
-        }
-        for (Source s : config.method(methodId).orElseThrow().inputs().values()) {
-            if (s instanceof Source.MethodOutput mo) {
-                feeding(mo.methodId(), found);
-            }
-        }
-    }
-
-    /** The interface channels whose readings reach {@code methodId}. */
-    private Set<Source.Channel> upstreamChannels(String methodId, Set<String> visited) {
-        Set<Source.Channel> result = new LinkedHashSet<>();
-        if (!visited.add(methodId)) {
-            return result;
-        }
-        for (Source s : config.method(methodId).orElseThrow().inputs().values()) {
-            switch (s) {
-                case Source.Channel ch -> result.add(ch);
-                case Source.MethodOutput mo -> result.addAll(upstreamChannels(mo.methodId(), visited));
-                case Source.Control c -> { }
-            }
-        }
-        return result;
-    }
-
-    /** The methods placed on workers that {@code methodId} depends on, itself included. */
-    private Set<String> upstreamPlacements(String methodId, Set<String> visited) {
-        Set<String> result = new LinkedHashSet<>();
-        if (!visited.add(methodId)) {
-            return result;
-        }
-        if (placements.containsKey(methodId)) {
-            result.add(methodId);
-        }
-        for (Source s : config.method(methodId).orElseThrow().inputs().values()) {
-            if (s instanceof Source.MethodOutput mo) {
-                result.addAll(upstreamPlacements(mo.methodId(), visited));
-            }
-        }
-        return result;
     }
 
     /**
