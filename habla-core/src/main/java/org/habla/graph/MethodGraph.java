@@ -44,10 +44,10 @@ public final class MethodGraph implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(MethodGraph.class);
     private static final long STOP_WAIT_MILLIS = 2_000;
-    private static final String WATCHDOG_TASK = "watchdog";
 
     private final HablaConfig config;
     private final GraphTopology topology;
+    private final GraphReplay replay;
     private final EngineClock clock;
     private final ExecutorService backgroundPool;
     private final Map<String, MethodRunner> runners = new LinkedHashMap<>();
@@ -88,6 +88,7 @@ public final class MethodGraph implements AutoCloseable {
             links.put(ic.id(), new InterfaceLink(ic, driver, clock, tap, replayed, linkStates));
         }
         this.watchdog = new MotionWatchdog(config.safety().watchdogMs(), clock, List.copyOf(links.values()));
+        this.replay = new GraphReplay(links, runners, upstreamInterfaces, exposed, topology, watchdog, work);
         links.values().forEach(l -> l.watchdog(watchdog));
         for (MethodConfig mc : config.methods()) {
             runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc), clock, backgroundPool,
@@ -138,7 +139,7 @@ public final class MethodGraph implements AutoCloseable {
 
     /**
      * Builds a graph that replays a recording: every interface has the recorded channels but no connection;
-     * readings and link changes come in through {@link #replayReading} and {@link #replayLink}, and commands
+     * readings and link changes come in through {@link #replay()}, and commands
      * are absorbed — counted and tapped, never written anywhere.
      */
     public static MethodGraph replaying(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
@@ -146,71 +147,17 @@ public final class MethodGraph implements AutoCloseable {
         return new MethodGraph(config, registry, clock, tap, Map.copyOf(channels));
     }
 
-    /** Publishes a recorded reading on an interface channel of a replaying graph. */
-    public void replayReading(String interfaceId, String channel, org.habla.sample.Payload value, long sourceMicros) {
-        replayedLink(interfaceId).replayReading(channel, value, sourceMicros);
-    }
-
-    /** Sets the state of an interface link of a replaying graph, as recorded. */
-    public void replayLink(String interfaceId, boolean up) {
-        replayedLink(interfaceId).replayLink(up);
-    }
-
     /**
-     * Runs recorded periodic work of a replaying graph ({@link GraphTap#periodic}'s task names); false for a
-     * task this graph does not have.
+     * What a replay drives in this graph: recorded readings, link changes and periodic work in, where an event
+     * can reach and whether the graph is idle out.
+     *
+     * @throws IllegalStateException if the graph runs live interfaces, not a recording
      */
-    public boolean replayPeriodic(String task) {
+    public GraphReplay replay() {
         if (!replayed) {
             throw new IllegalStateException("this graph runs live interfaces, not a recording");
         }
-        if (task.equals(WATCHDOG_TASK)) {
-            watchdog.check();
-            return true;
-        }
-        if (task.startsWith(MethodRunner.TICK_PREFIX)) {
-            MethodRunner r = runners.get(task.substring(MethodRunner.TICK_PREFIX.length()));
-            if (r != null) {
-                r.requestTick();
-                return true;
-            }
-        }
-        return false;
-    }
-
-    /**
-     * The input samples a method's state reflects so far (see {@link GraphTap#periodic}); a replay places
-     * recorded ticks by it.
-     */
-    public long handled(String methodId) {
-        MethodRunner r = runners.get(methodId);
-        return r == null ? -1 : r.consumed();
-    }
-
-    /** Whether readings of an interface can reach a method (the interface is upstream of it). */
-    public boolean reaches(String interfaceId, String methodId) {
-        return upstreamInterfaces.getOrDefault(methodId, Set.of()).contains(interfaceId);
-    }
-
-    /** Whether what a control client writes to socket {@code socket} can reach a method. */
-    public boolean reachesFromControl(String socket, String methodId) {
-        for (ExposedMethod x : exposed) {
-            if (x.name().equals(socket)) {
-                return topology.downstream(x.methodId()).contains(methodId);
-            }
-        }
-        return false;
-    }
-
-    private InterfaceLink replayedLink(String interfaceId) {
-        if (!replayed) {
-            throw new IllegalStateException("this graph runs live interfaces, not a recording");
-        }
-        InterfaceLink link = links.get(interfaceId);
-        if (link == null) {
-            throw new IllegalArgumentException("no interface '" + interfaceId + "' in the config");
-        }
-        return link;
+        return replay;
     }
 
     /**
@@ -366,7 +313,7 @@ public final class MethodGraph implements AutoCloseable {
         links.values().forEach(InterfaceLink::start);
         placements.values().forEach(RemotePlacement::start);
         watchdogTicker = clock.every(50_000, () -> {
-            tap.periodic(WATCHDOG_TASK, clock.nowMicros(), -1);
+            tap.periodic(GraphReplay.WATCHDOG_TASK, clock.nowMicros(), -1);
             watchdog.check();
         });
         LOG.info("graph of '{}' started: {} methods, {} interfaces, {} sockets", config.system(), runners.size(),

@@ -191,9 +191,9 @@ public final class Replayer {
                     break;
                 }
                 if (e instanceof RecordedEvent.Reading r) {
-                    feed.ticksTakenBefore(r.t(), m -> daemon.graph().reaches(r.iface(), m), ahead);
+                    feed.ticksTakenBefore(r.t(), m -> daemon.graph().replay().reaches(r.iface(), m), ahead);
                 } else if (e instanceof RecordedEvent.ControlWrite w && options.controlWrites()) {
-                    feed.ticksTakenBefore(w.t(), m -> daemon.graph().reachesFromControl(w.socket(), m), ahead);
+                    feed.ticksTakenBefore(w.t(), m -> daemon.graph().replay().reachesFromControl(w.socket(), m), ahead);
                 }
                 feed.event(e, comparison);
             }
@@ -247,13 +247,13 @@ public final class Replayer {
                 case RecordedEvent.End x -> complete = true;
                 case RecordedEvent.Reading r -> {
                     advance(r.t());
-                    graph.replayReading(r.iface(), r.channel(), r.sample().payload(), r.sample().sourceMicros());
+                    graph.replay().reading(r.iface(), r.channel(), r.sample().payload(), r.sample().sourceMicros());
                     readings++;
                     settle();
                 }
                 case RecordedEvent.LinkChange l -> {
                     advance(l.t());
-                    graph.replayLink(l.iface(), l.up());
+                    graph.replay().link(l.iface(), l.up());
                     settle();
                 }
                 case RecordedEvent.ControlWrite w -> {
@@ -273,7 +273,7 @@ public final class Replayer {
                 case RecordedEvent.Tick k -> {
                     if (recordedTicks) {
                         advance(k.t());
-                        if (graph.replayPeriodic(k.task())) {
+                        if (graph.replay().periodic(k.task())) {
                             ticks++;
                         }
                         settle();
@@ -304,12 +304,12 @@ public final class Replayer {
                 }
                 String method = k.task().substring(TICK_PREFIX.length());
                 if (!looked.add(method) || k.t() - t > LOOKAHEAD_MICROS || !reaches.test(method)
-                        || graph.handled(method) != k.handled()) {
+                        || graph.replay().handled(method) != k.handled()) {
                     continue;
                 }
                 it.remove();
                 advance(k.t());
-                if (graph.replayPeriodic(k.task())) {
+                if (graph.replay().periodic(k.task())) {
                     ticks++;
                 }
                 settle();
