@@ -24,7 +24,8 @@ public final class Benchmarks {
         }
         boolean all = list.stream().noneMatch(a -> a.equals("latency") || a.equals("throughput") || a.equals("fanout")
                 || a.equals("vision") || a.equals("worker") || a.equals("monitor") || a.equals("recording") || a.equals("mqtt")
-                || a.equals("chaos") || a.equals("hostile") || a.equals("soak") || a.equals("security"));
+                || a.equals("chaos") || a.equals("hostile") || a.equals("soak") || a.equals("security")
+                || a.equals("isolation"));
         System.out.printf("HABLA engine benchmarks: %d cores, %s %s, %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name"), System.getProperty("java.version"), System.getProperty("os.name"));
         System.out.println("load average at start (1, 5, 15 min): " + loadAverage());
@@ -54,6 +55,9 @@ public final class Benchmarks {
         }
         if (all || list.contains("mqtt")) {
             new MqttBench(1_000, 3, seconds).run();
+        }
+        if (list.contains("isolation")) {
+            new IsolationBench(seconds, option(list, "--rounds", 3)).run();
         }
         if (list.contains("chaos")) {
             new WatchdogChaosBench(20).run();

@@ -1,0 +1,158 @@
+package org.habla.bench;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import org.habla.cli.DaemonJvm;
+import org.habla.sim.PortBlock;
+import org.habla.sim.scenario.DerivedConfig;
+import org.habla.testing.DaemonProcess;
+
+/**
+ * Benchmark (k): whether heavy methods disturb light ones. The light chain of (a) — a 1 kHz number channel through
+ * {@code channel} → {@code pass-through} ×2 to a socket — runs in a daemon process of its own, then in the daemon of
+ * config/aibo.json beside the simulated Aibo with its teacher talking and its camera streaming (speech recognition
+ * and image segmentation at work), in interleaved rounds; the light chain's percentiles and their ratios are
+ * printed. Both daemons run with config/daemon.jvm-options, as {@code habla run} does.
+ */
+final class IsolationBench {
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    private final int seconds;
+    private final int rounds;
+
+    IsolationBench(int seconds, int rounds) {
+        this.seconds = seconds;
+        this.rounds = rounds;
+    }
+
+    void run() throws Exception {
+        System.out.printf("%n(k) a light 1 kHz chain alone and beside the Aibo's speech and vision, %d rounds of %d s%n",
+                rounds, seconds);
+        System.out.printf("%-44s %8s %8s %8s %8s %8s %8s%n", "path", "samples", "lost", "p50 µs", "p99 µs",
+                "p99.9 µs", "max µs");
+        LatencyBench latency = new LatencyBench(1_000, 5, seconds);
+        List<LatencyBench.Figures> alone = new ArrayList<>();
+        List<LatencyBench.Figures> beside = new ArrayList<>();
+        for (int r = 1; r <= rounds; r++) {
+            alone.add(latency.measure("round " + r + ": light chain alone", robot -> rig(robot.port(), false)));
+            beside.add(latency.measure("round " + r + ": beside speech and vision", robot -> rig(robot.port(), true)));
+        }
+        long p50Alone = median(alone.stream().mapToLong(LatencyBench.Figures::p50).toArray());
+        long p99Alone = median(alone.stream().mapToLong(LatencyBench.Figures::p99).toArray());
+        long p50Beside = median(beside.stream().mapToLong(LatencyBench.Figures::p50).toArray());
+        long p99Beside = median(beside.stream().mapToLong(LatencyBench.Figures::p99).toArray());
+        System.out.printf("  medians: alone p50 %d µs, p99 %d µs; beside p50 %d µs, p99 %d µs; p99 ratio %.2f (goal <= 1.5)%n",
+                p50Alone, p99Alone, p50Beside, p99Beside, p99Beside / (double) Math.max(1, p99Alone));
+    }
+
+    private static long median(long[] v) {
+        java.util.Arrays.sort(v);
+        return v[v.length / 2];
+    }
+
+    /** A daemon process with the light chain, alone or in config/aibo.json beside the simulated Aibo. */
+    private static LatencyBench.Path rig(int robotPort, boolean aibo) throws Exception {
+        Path dir = Files.createTempDirectory("habla-isolation");
+        int offset = PortBlock.freeOffset();
+        ObjectNode root;
+        if (aibo) {
+            Path derived = DerivedConfig.write(PioneerRig.home().resolve("config/aibo.json"), 1, offset,
+                    dir.resolve("aibo.json"));
+            root = (ObjectNode) JSON.readTree(Files.readString(derived));
+        } else {
+            root = JSON.createObjectNode().put("system", "bench-light");
+            root.putArray("interfaces");
+            root.putArray("methods");
+        }
+        int port = DaemonProcess.freePorts(1)[0];
+        int statusPort = DaemonProcess.freePorts(1)[0];
+        root.putObject("status").put("port", statusPort).put("monitorPort", 0);
+        ((ArrayNode) root.get("interfaces")).add(JSON.readTree("""
+                {"id": "bench", "driver": "habla", "address": "127.0.0.1:%d", "params": {"channels": %s}}
+                """.formatted(robotPort, BenchRobot.CHANNELS_JSON)));
+        String relay = "\"params\": {\"kind\": \"number\", \"delivery\": \"queue\", \"capacity\": 4096}";
+        ArrayNode methods = (ArrayNode) root.get("methods");
+        methods.add(JSON.readTree("{\"id\": \"bench-s\", \"type\": \"channel\", \"layer\": \"sensors_actuators\","
+                + " \"inputs\": {\"in\": \"@bench.value\"}, " + relay + "}"));
+        methods.add(JSON.readTree("{\"id\": \"bench-p\", \"type\": \"pass-through\", \"layer\": \"processing\","
+                + " \"inputs\": {\"in\": \"bench-s.out\"}, " + relay + "}"));
+        methods.add(JSON.readTree("{\"id\": \"bench-v\", \"type\": \"pass-through\", \"layer\": \"virtual\","
+                + " \"inputs\": {\"in\": \"bench-p.out\"}, " + relay + ", \"expose\": {\"port\": " + port
+                + ", \"name\": \"value\"}}"));
+        Path config = dir.resolve("daemon.json");
+        Files.writeString(config, JSON.writerWithDefaultPrettyPrinter().writeValueAsString(root));
+        List<Process> processes = new ArrayList<>();
+        AutoCloseable closer = () -> {
+            for (Process p : processes) {
+                p.destroy();
+                p.waitFor(10, java.util.concurrent.TimeUnit.SECONDS);
+            }
+        };
+        try {
+            if (aibo) {
+                processes.add(launch(dir, "sim.log", "sim", "aibo", "--world", "aibo-arena", "--seed", "7",
+                        "--teacher", "on", "--port-base", "" + (10000 + offset), "--truth-port", "" + (10199 + offset)));
+            }
+            processes.add(launch(dir, "daemon.log", "run", config.toString()));
+            awaitReady(statusPort, 180_000, dir);
+            return new LatencyBench.Path(port, closer);
+        } catch (Exception e) {
+            closer.close();
+            throw e;
+        }
+    }
+
+    private static Process launch(Path dir, String log, String... args) throws IOException {
+        List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "--enable-native-access=ALL-UNNAMED"));
+        cmd.addAll(DaemonJvm.options(PioneerRig.home(), args[0]));
+        cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "-Dhabla.home=" + PioneerRig.home(),
+                "org.habla.cli.Habla"));
+        cmd.addAll(List.of(args));
+        return new ProcessBuilder(cmd).directory(PioneerRig.home().toFile()).redirectErrorStream(true)
+                .redirectOutput(dir.resolve(log).toFile()).start();
+    }
+
+    /** Waits (bounded) until every link is up and every method ready, as the status endpoint says. */
+    private static void awaitReady(int statusPort, long millis, Path dir) throws Exception {
+        long end = System.nanoTime() + millis * 1_000_000L;
+        String missing = "no status yet";
+        while (System.nanoTime() < end) {
+            try (Socket s = new Socket("127.0.0.1", statusPort)) {
+                s.setSoTimeout(5_000);
+                JsonNode st = JSON.readTree(new BufferedReader(new InputStreamReader(s.getInputStream(),
+                        StandardCharsets.UTF_8)).readLine());
+                missing = "";
+                for (JsonNode i : st.path("interfaces")) {
+                    if (!i.path("up").asBoolean()) {
+                        missing += "link " + i.path("id").asText() + " ";
+                    }
+                }
+                for (JsonNode m : st.path("methods")) {
+                    if (!m.path("ready").asBoolean(true)) {
+                        missing += "method " + m.path("id").asText() + " ";
+                    }
+                }
+                if (missing.isEmpty()) {
+                    return;
+                }
+            } catch (IOException e) {
+                missing = e.toString();
+            }
+            Thread.sleep(200);
+        }
+        throw new IOException("not ready after " + millis / 1000 + " s: " + missing + "; see " + dir);
+    }
+}
