@@ -39,30 +39,8 @@ final class ClientLink implements Link {
         this.reconnect = reconnect;
         this.sink = sink;
         this.link = new ReconnectingLink<>("habla-link-" + name, reconnect, Attempt::new,
-                new OutageLog(LOG, "link " + name), new ReconnectingLink.StateListener() {
-                    @Override
-                    public void flip(boolean nowUp, boolean wasUp, Runnable flip) {
-                        // under the write lock: a write in progress ends before its session is closed
-                        writeLock.lock();
-                        try {
-                            flip.run();
-                        } finally {
-                            writeLock.unlock();
-                        }
-                    }
-
-                    @Override
-                    public void wentUp() {
-                        onStateChange.run();
-                    }
-
-                    @Override
-                    public void wentDown(boolean wasUp) {
-                        if (wasUp) {
-                            onStateChange.run();
-                        }
-                    }
-                });
+                new OutageLog(LOG, "link " + name),
+                ReconnectingLink.StateListener.notifying(onStateChange, writeLock)); // a write ends before its close
     }
 
     @Override

@@ -83,7 +83,29 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
 
         /** A listener that runs {@code onStateChange} after each change, up or down. */
         static StateListener notifying(Runnable onStateChange) {
+            return notifying(onStateChange, null);
+        }
+
+        /**
+         * The same, flipping the link up or down while holding {@code flipLock} (if not null): a write in progress
+         * under that lock ends before its session is closed.
+         */
+        static StateListener notifying(Runnable onStateChange, java.util.concurrent.locks.Lock flipLock) {
             return new StateListener() {
+                @Override
+                public void flip(boolean nowUp, boolean wasUp, Runnable flip) {
+                    if (flipLock == null) {
+                        flip.run();
+                        return;
+                    }
+                    flipLock.lock();
+                    try {
+                        flip.run();
+                    } finally {
+                        flipLock.unlock();
+                    }
+                }
+
                 @Override
                 public void wentUp() {
                     onStateChange.run();
