@@ -103,10 +103,11 @@ public final class ParamDefaults {
             for (RecordComponent component : c.getRecordComponents()) {
                 JsonNode value = object.get(key(component));
                 boolean absent = value == null || value.isNull() && !component.getType().isPrimitive();
-                Optional<JsonNode> d = absent ? json(c, component) : Optional.empty();
-                if (d.isPresent()) {
-                    object.set(key(component), d.get());
-                    fill(d.get(), component.getGenericType());
+                JsonNode d = absent ? DEFAULTS.get(c).get(component.getName()) : null;
+                if (d != null) {
+                    JsonNode copy = d.deepCopy();
+                    object.set(key(component), copy);
+                    fill(copy, component.getGenericType());
                 } else if (value != null) {
                     fill(value, component.getGenericType());
                 }

@@ -143,14 +143,7 @@ class RecordAndReplayTest {
         Path configFile = dir.resolve("replay-test.json");
         try (FakeLineRobot robot = new FakeLineRobot(0)) {
             Files.writeString(configFile, config(robot.port()));
-            HablaConfig cfg = new ConfigLoader(registry).load(configFile);
-            EngineClock clock = EngineClock.system();
-            ObjectNode json = (ObjectNode) new ObjectMapper().readTree(Files.readString(configFile));
-            try (Recorder recorder = Recorder.create(file, new RecordingHeader(clock.nowMicros(), 1, json,
-                    dir.toString(), MethodGraph.channels(cfg, registry)), clock);
-                    Daemon daemon = Daemon.start(cfg, registry, clock, recorder)) {
-                assertThat(robot.awaitClient(15_000)).isTrue();
-                await(() -> daemon.status().path("interfaces").get(0).path("up").asBoolean(), "the link is up");
+            recordLive(file, configFile, registry, robot, daemon -> {
                 try (Socket control = new Socket("127.0.0.1", daemon.port("cmd"))) {
                     OutputStream out = control.getOutputStream();
                     for (int i = 1; i <= 40; i++) {
@@ -167,7 +160,7 @@ class RecordAndReplayTest {
                 // The timed methods ran a few times in the live run, however busy the machine.
                 await(() -> outputs(daemon, "ticks", "count") > 3, "the ticker ticks four times");
                 await(() -> outputs(daemon, "hold", "held") > 5, "the hold method ticks six times");
-            }
+            });
         }
         Recording recorded = RecordingReader.readAll(file);
         assertThat(recorded.complete()).isTrue();
@@ -222,26 +215,21 @@ class RecordAndReplayTest {
                         "expose": {"port": %d, "name": "v"}}
                      ]}
                     """.formatted(robot.port(), port));
-            HablaConfig cfg = new ConfigLoader(registry).load(configFile);
-            EngineClock clock = EngineClock.system();
-            ObjectNode json = (ObjectNode) new ObjectMapper().readTree(Files.readString(configFile));
             CountDownLatch gate = new CountDownLatch(1);
             Latched.gate = gate;
-            try (Recorder recorder = Recorder.create(file, new RecordingHeader(clock.nowMicros(), 1, json,
-                    dir.toString(), MethodGraph.channels(cfg, registry)), clock);
-                    Daemon daemon = Daemon.start(cfg, registry, clock, recorder)) {
-                assertThat(robot.awaitClient(15_000)).isTrue();
-                await(() -> daemon.status().path("interfaces").get(0).path("up").asBoolean(), "the link is up");
-                robot.send("value 1");
-                await(() -> Latched.holding, "the slow method holds the first value");
-                for (int i = 2; i <= 5; i++) {
-                    robot.send("value " + i);
-                }
-                await(() -> conflated(daemon, "slow") == 3, "three values are skipped for a newer one");
-                gate.countDown();
-                await(() -> outputs(daemon, "v", "out") == 2, "the first and the newest value come out");
-                robot.send("value 6");
-                await(() -> outputs(daemon, "v", "out") == 3, "the next value comes out");
+            try {
+                recordLive(file, configFile, registry, robot, daemon -> {
+                    robot.send("value 1");
+                    await(() -> Latched.holding, "the slow method holds the first value");
+                    for (int i = 2; i <= 5; i++) {
+                        robot.send("value " + i);
+                    }
+                    await(() -> conflated(daemon, "slow") == 3, "three values are skipped for a newer one");
+                    gate.countDown();
+                    await(() -> outputs(daemon, "v", "out") == 2, "the first and the newest value come out");
+                    robot.send("value 6");
+                    await(() -> outputs(daemon, "v", "out") == 3, "the next value comes out");
+                });
             } finally {
                 gate.countDown();
                 Latched.gate = new CountDownLatch(0);
@@ -263,6 +251,29 @@ class RecordAndReplayTest {
         assertThat(RecordingReader.readAll(again).events(RecordedEvent.Skip.class)).filteredOn(k -> k.method().equals("slow"))
                 .as("a recording of the replay says which it skipped too").extracting(RecordedEvent.Skip::arrival)
                 .containsExactly(2L, 3L, 4L);
+    }
+
+    /** What a live run does while it is recorded to {@code file}. */
+    interface LiveRun {
+        void run(Daemon daemon) throws Exception;
+    }
+
+    /**
+     * Starts the daemon of {@code configFile} recording to {@code file}, waits until its link to {@code robot} is up,
+     * runs {@code run}, and stops the daemon (the recording then ends).
+     */
+    private void recordLive(Path file, Path configFile, PluginRegistry registry, FakeLineRobot robot, LiveRun run)
+            throws Exception {
+        HablaConfig cfg = new ConfigLoader(registry).load(configFile);
+        EngineClock clock = EngineClock.system();
+        ObjectNode json = (ObjectNode) new ObjectMapper().readTree(Files.readString(configFile));
+        try (Recorder recorder = Recorder.create(file, new RecordingHeader(clock.nowMicros(), 1, json,
+                dir.toString(), MethodGraph.channels(cfg, registry)), clock);
+                Daemon daemon = Daemon.start(cfg, registry, clock, recorder)) {
+            assertThat(robot.awaitClient(15_000)).isTrue();
+            await(() -> daemon.status().path("interfaces").get(0).path("up").asBoolean(), "the link is up");
+            run.run(daemon);
+        }
     }
 
     private static long conflated(Daemon d, String method) {
