@@ -8,7 +8,8 @@ import java.util.List;
  * [vision] [security] [worker] [mqtt] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up), and the
  * reliability runs of docs/reliability.md with {@code bench/run chaos} (only when named: they take minutes), or
  * its parts {@code hostile} and {@code soak} ({@code --hostile N}, {@code --attack-seconds S},
- * {@code --soak-minutes M}).
+ * {@code --soak-minutes M}); the daemon's start-up time and resident memory with {@code bench/run footprint}
+ * (only when named: minutes; {@code --runs N}, {@code --until S}).
  */
 public final class Benchmarks {
 
@@ -25,7 +26,7 @@ public final class Benchmarks {
         boolean all = list.stream().noneMatch(a -> a.equals("latency") || a.equals("throughput") || a.equals("fanout")
                 || a.equals("vision") || a.equals("worker") || a.equals("monitor") || a.equals("recording") || a.equals("mqtt")
                 || a.equals("chaos") || a.equals("hostile") || a.equals("soak") || a.equals("security")
-                || a.equals("isolation"));
+                || a.equals("isolation") || a.equals("footprint"));
         System.out.printf("HABLA engine benchmarks: %d cores, %s %s, %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name"), System.getProperty("java.version"), System.getProperty("os.name"));
         System.out.println("load average at start (1, 5, 15 min): " + loadAverage());
@@ -58,6 +59,9 @@ public final class Benchmarks {
         }
         if (list.contains("isolation")) {
             new IsolationBench(seconds, option(list, "--rounds", 3)).run();
+        }
+        if (list.contains("footprint")) {
+            new FootprintBench(option(list, "--until", 60), option(list, "--runs", 3)).run();
         }
         if (list.contains("chaos")) {
             new WatchdogChaosBench(20).run();
