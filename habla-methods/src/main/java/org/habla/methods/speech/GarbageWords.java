@@ -164,6 +164,7 @@ final class GarbageWords {
     /** Reads a Sphinx pronouncing dictionary ({@code word PH PH ...}, alternatives as {@code word(2)}). */
     static Map<String, List<List<String>>> readDictionary(InputStream in) throws IOException {
         Map<String, List<List<String>>> dict = new HashMap<>();
+        Map<String, String> phones = new HashMap<>();   // some forty phones, one String each
         try (BufferedReader r = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8))) {
             String line;
             while ((line = r.readLine()) != null) {
@@ -172,7 +173,11 @@ final class GarbageWords {
                     continue;
                 }
                 String word = f[0].replaceFirst("\\(\\d+\\)$", "");
-                dict.computeIfAbsent(word, k -> new ArrayList<>()).add(List.of(Arrays.copyOfRange(f, 1, f.length)));
+                String[] pron = Arrays.copyOfRange(f, 1, f.length);
+                for (int i = 0; i < pron.length; i++) {
+                    pron[i] = phones.computeIfAbsent(pron[i], p -> p);
+                }
+                dict.computeIfAbsent(word, k -> new ArrayList<>(1)).add(List.of(pron));
             }
         }
         return dict;

@@ -188,20 +188,18 @@ public final class SphinxDecoder {
                 Map.entry("cmn", "edu.cmu.sphinx.frontend.feature.BatchCMN"));
     }
 
-    private static Map<String, List<List<String>>> dictionary;
-
-    /** The pronouncing dictionary of the model, read once. */
-    private static synchronized Map<String, List<List<String>>> dictionary() throws IOException {
-        if (dictionary == null) {
-            String resource = DICTIONARY.substring("resource:".length());
-            try (InputStream in = SphinxDecoder.class.getResourceAsStream(resource)) {
-                if (in == null) {
-                    throw new IOException("the pronouncing dictionary " + resource + " is missing from the class path");
-                }
-                dictionary = GarbageWords.readDictionary(in);
+    /**
+     * The pronouncing dictionary of the model, read afresh for each load and let go after it: kept, its
+     * 134 000 words as lists of phones were a third of the daemon's live heap (about 50 MB) for good.
+     */
+    private static Map<String, List<List<String>>> dictionary() throws IOException {
+        String resource = DICTIONARY.substring("resource:".length());
+        try (InputStream in = SphinxDecoder.class.getResourceAsStream(resource)) {
+            if (in == null) {
+                throw new IOException("the pronouncing dictionary " + resource + " is missing from the class path");
             }
+            return GarbageWords.readDictionary(in);
         }
-        return dictionary;
     }
 
     private static Path writeConfig(Map<String, String> values) throws IOException {

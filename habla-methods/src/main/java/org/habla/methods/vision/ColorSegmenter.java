@@ -17,14 +17,29 @@ import org.opencv.imgproc.Imgproc;
 /**
  * Finds the blobs of colour classes in a frame with OpenCV: decode to BGR, convert to HSV, threshold
  * each class (two ranges when its hue wraps around red), open to remove specks, close to fill holes,
- * label 8-connected components and keep those of at least {@code minAreaPx}. Holds no state between
- * frames, so it may run on any thread; the natives must be loaded ({@link OpenCvLibrary#load()}).
+ * label 8-connected components and keep those of at least {@code minAreaPx}. The natives must be loaded
+ * ({@link OpenCvLibrary#load()}).
+ *
+ * <p>One frame at a time (any thread, one after another): the matrices a frame needs are made once and
+ * reused for the next, and a matrix made for one frame is released before {@link #segment} returns. A
+ * matrix left to the garbage collector keeps its native memory until the collector runs its finalizer,
+ * which, for one promoted to the old generation, may be minutes away: at 30 frames a second that was the
+ * daemon's resident memory growing.
  */
 public final class ColorSegmenter {
 
     private final ImageSegmentationParams params;
     private final Mat openKernel;
     private final Mat closeKernel;
+    private final MatOfByte encoded = new MatOfByte();
+    private final Mat gray = new Mat();
+    private final Mat hsv = new Mat();
+    private final Mat mask = new Mat();
+    private final Mat high = new Mat();
+    private final Mat padded = new Mat();
+    private final Mat labels = new Mat();
+    private final Mat stats = new Mat();
+    private final Mat centroids = new Mat();
 
     public ColorSegmenter(ImageSegmentationParams params) {
         this.params = params;
@@ -39,60 +54,79 @@ public final class ColorSegmenter {
             release(bgr);
             return Segmentation.unreadable("cannot decode " + frame);
         }
-        Mat hsv = new Mat();
         Imgproc.cvtColor(bgr, hsv, Imgproc.COLOR_BGR2HSV);
         List<Blob> blobs = new ArrayList<>();
         for (Map.Entry<String, ColorRange> c : params.colors().entrySet()) {
-            Mat mask = threshold(hsv, c.getValue());
-            clean(mask);
-            collect(c.getKey(), mask, blobs);
-            mask.release();
+            threshold(c.getValue());
+            clean();
+            collect(c.getKey(), blobs);
         }
         blobs.sort(Comparator.comparingInt(Blob::area).reversed());
         Segmentation s = new Segmentation(bgr.cols(), bgr.rows(),
                 blobs.subList(0, Math.min(blobs.size(), params.maxBlobs())), "");
         bgr.release();
-        hsv.release();
         return s;
     }
 
-    private static Mat decode(ImageFrame frame) {
-        byte[] data = frame.data();
+    /** The frame as a new BGR matrix (the caller releases it), or null for an unknown encoding. */
+    private Mat decode(ImageFrame frame) {
         return switch (frame.encoding()) {
-            case "jpeg", "png" -> Imgcodecs.imdecode(new MatOfByte(data), Imgcodecs.IMREAD_COLOR);
+            case "jpeg", "png" -> {
+                encoded.create(frame.byteCount(), 1, CvType.CV_8UC1);
+                copyInto(encoded, frame);
+                yield Imgcodecs.imdecode(encoded, Imgcodecs.IMREAD_COLOR);
+            }
             case "bgr8" -> {
                 Mat m = new Mat(frame.height(), frame.width(), CvType.CV_8UC3);
-                m.put(0, 0, data);
+                m.put(0, 0, frame.data());
                 yield m;
             }
             case "gray8" -> {
-                Mat g = new Mat(frame.height(), frame.width(), CvType.CV_8UC1);
-                g.put(0, 0, data);
+                gray.create(frame.height(), frame.width(), CvType.CV_8UC1);
+                gray.put(0, 0, frame.data());
                 Mat m = new Mat();
-                Imgproc.cvtColor(g, m, Imgproc.COLOR_GRAY2BGR);
-                g.release();
+                Imgproc.cvtColor(gray, m, Imgproc.COLOR_GRAY2BGR);
                 yield m;
             }
             default -> null;
         };
     }
 
-    private static Mat threshold(Mat hsv, ColorRange r) {
-        Mat mask = new Mat();
+    /** The frame's bytes into the continuous matrix {@code m}, with no copy on the Java heap between. */
+    private static void copyInto(Mat m, ImageFrame frame) {
+        try {
+            frame.writeTo(new java.io.OutputStream() {
+                private int at;
+
+                @Override
+                public void write(int b) {
+                    write(new byte[] {(byte) b}, 0, 1);
+                }
+
+                @Override
+                public void write(byte[] b, int off, int len) {
+                    m.put(at, 0, b, off, len);
+                    at += len;
+                }
+            });
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    /** The pixels of {@code hsv} in {@code r}, into {@code mask}. */
+    private void threshold(ColorRange r) {
         if (!r.wraps()) {
             Core.inRange(hsv, new Scalar(r.hMin(), r.sMin(), r.vMin()), new Scalar(r.hMax(), r.sMax(), r.vMax()), mask);
-            return mask;
+            return;
         }
-        Mat high = new Mat();
         Core.inRange(hsv, new Scalar(r.hMin(), r.sMin(), r.vMin()),
                 new Scalar(ColorRange.HUE_MAX, r.sMax(), r.vMax()), mask);
         Core.inRange(hsv, new Scalar(0, r.sMin(), r.vMin()), new Scalar(r.hMax(), r.sMax(), r.vMax()), high);
         Core.bitwise_or(mask, high, mask);
-        high.release();
-        return mask;
     }
 
-    private void clean(Mat mask) {
+    private void clean() {
         if (openKernel != null) {
             Imgproc.morphologyEx(mask, mask, Imgproc.MORPH_OPEN, openKernel);
         }
@@ -100,18 +134,15 @@ public final class ColorSegmenter {
             // Outside the frame is "not this colour": without the zero margin OpenCV's closing would
             // glue a region lying a pixel or two from the edge to the edge.
             int pad = params.closePx() / 2 + 1;
-            Mat padded = new Mat();
             Core.copyMakeBorder(mask, padded, pad, pad, pad, pad, Core.BORDER_CONSTANT, new Scalar(0));
             Imgproc.morphologyEx(padded, padded, Imgproc.MORPH_CLOSE, closeKernel);
-            padded.submat(pad, pad + mask.rows(), pad, pad + mask.cols()).copyTo(mask);
-            padded.release();
+            Mat inner = padded.submat(pad, pad + mask.rows(), pad, pad + mask.cols());
+            inner.copyTo(mask);
+            inner.release();
         }
     }
 
-    private void collect(String label, Mat mask, List<Blob> into) {
-        Mat labels = new Mat();
-        Mat stats = new Mat();
-        Mat centroids = new Mat();
+    private void collect(String label, List<Blob> into) {
         int n = Imgproc.connectedComponentsWithStats(mask, labels, stats, centroids, 8, CvType.CV_32S);
         int[] row = new int[5];
         double[] centre = new double[2];
@@ -125,9 +156,6 @@ public final class ColorSegmenter {
             into.add(new Blob(label, centre[0], centre[1], area, row[Imgproc.CC_STAT_LEFT], row[Imgproc.CC_STAT_TOP],
                     row[Imgproc.CC_STAT_WIDTH], row[Imgproc.CC_STAT_HEIGHT]));
         }
-        labels.release();
-        stats.release();
-        centroids.release();
     }
 
     private static Mat kernel(int side) {
