@@ -10,8 +10,11 @@ import java.net.URLClassLoader;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.ServiceLoader;
+import java.util.function.Supplier;
 import java.util.stream.Stream;
 import org.slf4j.LoggerFactory;
 import picocli.CommandLine;
@@ -23,10 +26,28 @@ import picocli.CommandLine.Option;
  * simulator, the scenarios, the worker) join through {@link CommandExtension}.
  */
 @Command(name = "habla", mixinStandardHelpOptions = true, versionProvider = Habla.Version.class,
-        description = "HABLA, the Hardware Abstraction Layer: isolates a robot's control architecture from its hardware.",
-        subcommands = {RunCommand.class, ReplayCommand.class, CheckCommand.class, GraphCommand.class, SchemaCommand.class,
-                PluginsCommand.class, StatusCommand.class, org.habla.worker.WorkerCommand.class})
+        description = "HABLA, the Hardware Abstraction Layer: isolates a robot's control architecture from its hardware.")
 public final class Habla implements Runnable {
+
+    /**
+     * The built-in subcommands, in the order help lists them. They are made when a command line is, and only
+     * the one named when a known one is: picocli reads every command's annotations as it adds it, which was a
+     * fifth of a daemon's time to its first open port.
+     */
+    private static final Map<String, Supplier<Object>> BUILT_IN = builtIn();
+
+    private static Map<String, Supplier<Object>> builtIn() {
+        Map<String, Supplier<Object>> m = new LinkedHashMap<>();
+        m.put("run", RunCommand::new);
+        m.put("replay", ReplayCommand::new);
+        m.put("check", CheckCommand::new);
+        m.put("graph", GraphCommand::new);
+        m.put("schema", SchemaCommand::new);
+        m.put("plugins", PluginsCommand::new);
+        m.put("status", StatusCommand::new);
+        m.put("worker", org.habla.worker.WorkerCommand::new);
+        return java.util.Collections.unmodifiableMap(m);
+    }
 
     @Option(names = "--log-level", scope = CommandLine.ScopeType.INHERIT, paramLabel = "LEVEL",
             description = "error, warn, info (default), debug or trace.")
@@ -55,10 +76,7 @@ public final class Habla implements Runnable {
     public static int execute(String... args) {
         ClassLoader loader = pluginLoader(args);
         Thread.currentThread().setContextClassLoader(loader);
-        CommandLine cli = new CommandLine(new Habla());
-        for (CommandExtension ext : ServiceLoader.load(CommandExtension.class, loader)) {
-            cli.addSubcommand(ext.name(), ext.command());
-        }
+        CommandLine cli = commandLine(loader, subcommand(args));
         cli.setExecutionExceptionHandler((e, cmd, parsed) -> {
             cmd.getErr().println("habla: " + e);
             LoggerFactory.getLogger(Habla.class).error("command failed", e);
@@ -67,6 +85,43 @@ public final class Habla implements Runnable {
         cli.setExitCodeExceptionMapper(e -> ExitCodes.RUNTIME_FAILURE);
         cli.getCommandSpec().exitCodeOnInvalidInput(ExitCodes.USAGE_OR_CONFIG);
         return cli.execute(args);
+    }
+
+    /** The whole command line: every built-in subcommand and every one other modules add. */
+    public static CommandLine commandLine() {
+        return commandLine(Habla.class.getClassLoader(), null);
+    }
+
+    /** The command line with only subcommand {@code only} when it is a known one, else with all of them. */
+    private static CommandLine commandLine(ClassLoader loader, String only) {
+        List<CommandExtension> extensions = new ArrayList<>();
+        ServiceLoader.load(CommandExtension.class, loader).forEach(extensions::add);
+        boolean known = only != null && (BUILT_IN.containsKey(only)
+                || extensions.stream().anyMatch(e -> e.name().equals(only)));
+        CommandLine cli = new CommandLine(new Habla());
+        BUILT_IN.forEach((name, command) -> {
+            if (!known || name.equals(only)) {
+                cli.addSubcommand(name, command.get());
+            }
+        });
+        for (CommandExtension ext : extensions) {
+            if (!known || ext.name().equals(only)) {
+                cli.addSubcommand(ext.name(), ext.command());
+            }
+        }
+        return cli;
+    }
+
+    /** The first argument that is neither an option of {@code habla} itself nor its value, or null. */
+    static String subcommand(String[] args) {
+        for (int i = 0; i < args.length; i++) {
+            if (args[i].equals("--plugins") || args[i].equals("--log-level")) {
+                i++;
+            } else if (!args[i].startsWith("-")) {
+                return args[i];
+            }
+        }
+        return null;
     }
 
     /** A class loader over the plugin jars named by --plugins (or ./plugins), else the application's. */

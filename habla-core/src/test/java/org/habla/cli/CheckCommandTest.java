@@ -17,7 +17,6 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
-import picocli.CommandLine;
 
 class CheckCommandTest {
 
@@ -122,7 +121,7 @@ class CheckCommandTest {
 
     @Test
     void checkIsASubcommandOfHabla() {
-        assertThat(new CommandLine(new Habla()).getSubcommands()).containsKey("check");
+        assertThat(Habla.commandLine().getSubcommands()).containsKey("check");
     }
 
     static Stream<String> brokenConfigs() throws IOException, URISyntaxException {

@@ -7,7 +7,6 @@ import java.nio.file.Path;
 import org.habla.config.TestPlugins;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
 class GraphCommandTest {
 
@@ -68,6 +67,6 @@ class GraphCommandTest {
 
     @Test
     void graphIsASubcommandOfHabla() {
-        assertThat(new CommandLine(new Habla()).getSubcommands()).containsKey("graph");
+        assertThat(Habla.commandLine().getSubcommands()).containsKey("graph");
     }
 }

@@ -16,7 +16,6 @@ import org.habla.worker.WorkerServer;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
 @Timeout(30)
 class RunPlacementTest {
@@ -58,6 +57,6 @@ class RunPlacementTest {
 
     @Test
     void workerIsASubcommandOfHabla() {
-        assertThat(new CommandLine(new Habla()).getSubcommands()).containsKey("worker");
+        assertThat(Habla.commandLine().getSubcommands()).containsKey("worker");
     }
 }

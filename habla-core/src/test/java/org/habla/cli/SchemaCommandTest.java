@@ -11,7 +11,6 @@ import org.habla.config.ConfigSchema;
 import org.habla.config.TestPlugins;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
 class SchemaCommandTest {
 
@@ -53,6 +52,6 @@ class SchemaCommandTest {
 
     @Test
     void schemaIsASubcommandOfHabla() {
-        assertThat(new CommandLine(new Habla()).getSubcommands()).containsKey("schema");
+        assertThat(Habla.commandLine().getSubcommands()).containsKey("schema");
     }
 }
