@@ -9,7 +9,7 @@ import java.util.List;
  * reliability runs of docs/reliability.md with {@code bench/run chaos} (only when named: they take minutes), or
  * its parts {@code hostile} and {@code soak} ({@code --hostile N}, {@code --attack-seconds S},
  * {@code --soak-minutes M}); the daemon's start-up time and resident memory with {@code bench/run footprint}
- * (only when named: minutes; {@code --runs N}, {@code --until S}).
+ * (only when named: minutes; {@code aibo} or {@code pioneer} for one robot, {@code --runs N}, {@code --until S}).
  */
 public final class Benchmarks {
 
@@ -61,7 +61,9 @@ public final class Benchmarks {
             new IsolationBench(seconds, option(list, "--rounds", 3)).run();
         }
         if (list.contains("footprint")) {
-            new FootprintBench(option(list, "--until", 60), option(list, "--runs", 3)).run();
+            List<String> robots = list.stream().filter(a -> a.equals("aibo") || a.equals("pioneer")).toList();
+            new FootprintBench(option(list, "--until", 60), option(list, "--runs", 3),
+                    robots.isEmpty() ? List.of("aibo", "pioneer") : robots).run();
         }
         if (list.contains("chaos")) {
             new WatchdogChaosBench(20).run();

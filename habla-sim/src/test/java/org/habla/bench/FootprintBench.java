@@ -35,10 +35,13 @@ final class FootprintBench {
     private final int seconds;
     private final int runs;
     private final List<Integer> marks;
+    private final List<String> robots;
 
-    FootprintBench(int seconds, int runs) {
+    /** Runs {@code runs} times for each of {@code robots} ("aibo", "pioneer"), measuring up to {@code seconds}. */
+    FootprintBench(int seconds, int runs, List<String> robots) {
         this.seconds = seconds;
         this.runs = runs;
+        this.robots = List.copyOf(robots);
         List<Integer> m = new ArrayList<>();
         for (int s : new int[] {5, 15, 30, 60}) {
             if (s <= seconds) {
@@ -55,7 +58,7 @@ final class FootprintBench {
         ensureBuilt();
         System.out.printf("%n(l) footprint: launch to every port listening, resident memory at %s s; %d runs per robot;"
                 + " daemon JVM options: %s%n", marks, runs, daemonOptions());
-        for (String robot : List.of("aibo", "pioneer")) {
+        for (String robot : robots) {
             List<Figures> all = new ArrayList<>();
             System.out.printf("%-16s %9s  %-34s  %-34s%n", robot, "ports ms", "daemon RSS MB at " + marks,
                     "simulator RSS MB at " + marks);
@@ -117,7 +120,7 @@ final class FootprintBench {
             if (robot.equals("aibo")) {
                 sim = launch(dir, "sim.log", "sim", "aibo", "--world", "aibo-arena", "--seed", "7", "--teacher", "on",
                         "--port-base", "" + (10000 + offset), "--truth-port", "" + (10199 + offset));
-                simPort = 10011 + offset;
+                simPort = 10020 + offset;   // the controller, which the daemon reaches first
             } else {
                 sim = launch(dir, "sim.log", "sim", "pioneer", "--world", "pioneer-hall", "--seed", "7", "--teacher", "on",
                         "--port", "" + (8101 + offset), "--mic-port", "" + (8110 + offset), "--keys-port",
@@ -125,7 +128,8 @@ final class FootprintBench {
                 simPort = 8101 + offset;
             }
             if (awaitPorts(List.of(simPort), PORT_WAIT_MS) < 0) {
-                throw new IOException("the simulator did not listen; see " + dir.resolve("sim.log"));
+                throw new IOException("the simulator did not listen on " + simPort + " (alive: " + sim.isAlive()
+                        + "); see " + dir.resolve("sim.log"));
             }
             long start = System.nanoTime();
             daemon = launch(dir, "daemon.log", "run", config.toString());

@@ -124,7 +124,8 @@ public final class SphinxDecoder {
     /** Loads the model with these settings and, if given, a speaker's adaptation (an MLLR transform file). */
     public static SphinxDecoder load(Settings settings, Optional<Path> adaptation) throws IOException {
         Path file = settings.grammarFile().toAbsolutePath().normalize();
-        Map<String, String> values = values(settings);
+        Map<String, String> values = new java.util.HashMap<>(values(settings));
+        values.put("dictionary", grammarDictionary(settings.grammarFile()).toUri().toURL().toString());
         Map<String, String> phoneValues = new java.util.HashMap<>(values);
         phoneValues.put("useCDUnits", "false");
         try {
@@ -186,6 +187,39 @@ public final class SphinxDecoder {
                 Map.entry("acousticModel", ACOUSTIC_MODEL),
                 Map.entry("denoise", settings.denoise() ? "<item>denoise</item>" : ""),
                 Map.entry("cmn", "edu.cmu.sphinx.frontend.feature.BatchCMN"));
+    }
+
+    /**
+     * The lines of the model's pronouncing dictionary for the words of the grammars in {@code grammar}'s folder
+     * (the grammar and those it may import), as a file. Sphinx keeps every line of the dictionary it is given
+     * for as long as the recognizer lives, 134 000 words (about 20 MB) for the few dozen a grammar says.
+     */
+    private static Path grammarDictionary(Path grammar) throws IOException {
+        java.util.Set<String> words = new java.util.HashSet<>();
+        try (var siblings = Files.list(grammar.toAbsolutePath().normalize().getParent())) {
+            for (Path g : siblings.filter(p -> p.toString().endsWith(".gram")).toList()) {
+                words.addAll(GarbageWords.grammarWords(Files.readString(g, StandardCharsets.UTF_8)));
+            }
+        }
+        String resource = DICTIONARY.substring("resource:".length());
+        StringBuilder kept = new StringBuilder();
+        try (InputStream in = SphinxDecoder.class.getResourceAsStream(resource)) {
+            if (in == null) {
+                throw new IOException("the pronouncing dictionary " + resource + " is missing from the class path");
+            }
+            var lines = new java.io.BufferedReader(new java.io.InputStreamReader(in, StandardCharsets.UTF_8));
+            for (String line; (line = lines.readLine()) != null; ) {
+                int space = line.indexOf(' ');
+                String word = space < 0 ? line : line.substring(0, space).replaceFirst("\\(\\d+\\)$", "");
+                if (words.contains(word.toLowerCase(java.util.Locale.ROOT))) {
+                    kept.append(line).append('\n');
+                }
+            }
+        }
+        Path file = Files.createTempFile("habla-sphinx", ".dict");
+        Files.writeString(file, kept, StandardCharsets.UTF_8);
+        file.toFile().deleteOnExit();
+        return file;
     }
 
     /**
