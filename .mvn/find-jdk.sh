@@ -3,7 +3,13 @@
 # Order: JAVA_HOME, then the java on PATH, then the usual JDK folders.
 
 habla_java_major() {
-  # prints the major version of the java binary $1, or nothing
+  # prints the major version of the java binary $1, or nothing; from the JDK's release file when it has one
+  # (starting a JVM only to ask its version took a tenth of a second of every launch)
+  _rel="$(dirname "$1")/../release"
+  if [ -f "$_rel" ]; then
+    _v=$(sed -n 's/^JAVA_VERSION="\([0-9][0-9.]*\).*/\1/p' "$_rel" | sed 's/^1\.//; s/\..*//' | head -n 1)
+    if [ -n "$_v" ]; then echo "$_v"; return 0; fi
+  fi
   "$1" -XshowSettings:properties -version 2>&1 \
     | sed -n 's/^ *java\.specification\.version = \([0-9][0-9.]*\).*/\1/p' \
     | sed 's/^1\.//; s/\..*//' | head -n 1

@@ -11,8 +11,8 @@ import java.util.List;
  * The JVM options a daemon process runs with ({@code habla run}, {@code habla worker}): the environment's
  * {@code HABLA_JAVA_OPTS} when set, else the options in {@code config/daemon.jvm-options} of the HABLA home,
  * the file the launcher reads too. The file chooses a collector for a process that sits next to a robot for
- * days: a small young generation and a heap that gives memory back, so a burst of garbage (a thousand hostile
- * connections) does not leave the resident memory grown (docs/reliability.md).
+ * days: a bounded heap that gives memory back, so neither a burst of garbage (a thousand hostile connections)
+ * nor the speech model's loading leaves the resident memory grown (docs/deployment.md, "The daemon's JVM").
  */
 public final class DaemonJvm {
 
