@@ -53,7 +53,12 @@ final class MethodRunner implements MethodContext {
     private final Map<Input<?>, ChannelDescriptor> channels = new HashMap<>();
     private final Map<Output<?>, ChannelDescriptor> commandChannels = new HashMap<>();
     private final ConcurrentLinkedQueue<Runnable> turns = new ConcurrentLinkedQueue<>();
-    private final AtomicBoolean signalled = new AtomicBoolean();
+    /**
+     * Whether the method's thread is about to park or parked: set before it looks at its slots one last time,
+     * so a producer that finds it false knows the thread will see its sample, and unparks only a thread that
+     * may sleep (an unpark costs a lock and, for a sleeping thread, a system call).
+     */
+    private volatile boolean parking;
     private final AtomicBoolean tickPending = new AtomicBoolean();
     private final RateMeter handled = new RateMeter();
     private final LatencyStats latency = new LatencyStats();
@@ -295,21 +300,34 @@ final class MethodRunner implements MethodContext {
     }
 
     private void wake() {
-        signalled.set(true);
-        Thread t = thread;
-        if (t != null) {
-            LockSupport.unpark(t);
+        if (parking) {
+            Thread t = thread;
+            if (t != null) {
+                LockSupport.unpark(t);
+            }
         }
     }
 
     private void loop() {
         while (running) {
-            signalled.set(false);
-            boolean worked = drainOnce();
-            if (!worked && !signalled.get() && running) {
-                LockSupport.parkNanos(this, IDLE_PARK_NANOS);
+            if (!drainOnce()) {
+                // Say so before the last look: a sample offered after it finds parking set and unparks us.
+                parking = true;
+                if (running && nothingWaiting()) {
+                    LockSupport.parkNanos(this, IDLE_PARK_NANOS);
+                }
+                parking = false;
             }
         }
+    }
+
+    private boolean nothingWaiting() {
+        for (InputSlot slot : slots) {
+            if (!slot.isEmpty()) {
+                return false;
+            }
+        }
+        return turns.isEmpty();
     }
 
     /** One pass: at most one sample from every input (round robin), then the turns waiting now. */
