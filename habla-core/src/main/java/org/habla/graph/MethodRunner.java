@@ -59,6 +59,15 @@ final class MethodRunner implements MethodContext {
      * may sleep (an unpark costs a lock and, for a sleeping thread, a system call).
      */
     private volatile boolean parking;
+    private static final java.lang.invoke.VarHandle PARKING;
+
+    static {
+        try {
+            PARKING = java.lang.invoke.MethodHandles.lookup().findVarHandle(MethodRunner.class, "parking", boolean.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
     private final AtomicBoolean tickPending = new AtomicBoolean();
     private final RateMeter handled = new RateMeter();
     private final LatencyStats latency = new LatencyStats();
@@ -300,7 +309,9 @@ final class MethodRunner implements MethodContext {
     }
 
     private void wake() {
-        if (parking) {
+        // The first producer to find the thread going to sleep wakes it; the ones after it, while the thread is
+        // still being scheduled, find the flag cleared and leave it (each unpark takes the thread's lock).
+        if (parking && PARKING.compareAndSet(this, true, false)) {
             Thread t = thread;
             if (t != null) {
                 LockSupport.unpark(t);
