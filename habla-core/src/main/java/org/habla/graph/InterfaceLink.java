@@ -3,7 +3,6 @@ package org.habla.graph;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -11,10 +10,9 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.LongAdder;
+import java.util.function.Consumer;
 import org.habla.config.InterfaceConfig;
 import org.habla.driver.ChannelDescriptor;
-import org.habla.driver.ClientConnection;
-import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.ReadingSink;
 import org.habla.sample.NumberValue;
@@ -35,6 +33,10 @@ import org.slf4j.LoggerFactory;
  * paid at once from a thread of its own and, at the latest, just before the next motion command on that
  * connection, under one lock: a new motion never reaches the robot ahead of the stop, and a stop that could
  * not be written while the connection was down is written before the first motion after it comes back.
+ *
+ * <p>What the interface runs on is its {@link InterfaceDriver}: a robot's driver or a recording, taken the same
+ * way. A recording sees the interface at its edges: its reading channels' ports, what {@link #command} says became
+ * of a command, and the link changes {@link #onLinkChange} tells.
  */
 final class InterfaceLink {
 
@@ -42,14 +44,14 @@ final class InterfaceLink {
 
     private final InterfaceConfig config;
     private final EngineClock clock;
-    private final GraphTap tap;
     private final Map<String, ChannelDescriptor> channels = new HashMap<>();
     private final Map<String, OutputPort> readings = new HashMap<>();
     private final Map<String, String> unavailable = new java.util.concurrent.ConcurrentHashMap<>();
     private final Map<String, Link> commandRoutes = new HashMap<>();
-    private final List<Link> connections = new ArrayList<>();
+    private final List<Link> connections;
     private final LinkStates states;
-    private final boolean replayed;
+    /** Whether the engine tells the {@code link} record, or the driver's connections deliver it (a recording). */
+    private final boolean engineTellsLink;
     private final Sink sink = new Sink();
     private final LongAdder malformed = new LongAdder();
     private final LongAdder unknownChannel = new LongAdder();
@@ -60,24 +62,19 @@ final class InterfaceLink {
     private final Set<Link> stopsOwed = new HashSet<>();
     private volatile ObjectNode robotInfo = JsonNodeFactory.instance.objectNode();
     private volatile MotionWatchdog watchdog;
+    private volatile Consumer<Boolean> linkChanges = up -> { };
     private volatile boolean up;
     /** When the link last went up or down (engine clock, µs); its start until the first change. */
     private volatile long sinceMicros;
     private AutoCloseable linkTicker;
 
-    /**
-     * @param replayed true when the readings come from a recording instead of the robot: the driver is then
-     *                 only a description of the channels, readings and link changes are pushed in, and commands
-     *                 are absorbed (counted and tapped as sent) instead of written
-     */
-    InterfaceLink(InterfaceConfig config, Driver driver, EngineClock clock, GraphTap tap, boolean replayed,
-            LinkStates states) {
-        this.replayed = replayed;
+    InterfaceLink(InterfaceConfig config, InterfaceDriver driver, EngineClock clock, LinkStates states) {
         this.states = states;
         this.config = config;
         this.clock = clock;
-        this.tap = tap;
-        for (ChannelDescriptor c : driver.channels()) {
+        List<ChannelDescriptor> described = driver.channels();
+        this.engineTellsLink = described.stream().noneMatch(c -> c.name().equals(Driver.LINK_CHANNEL.name()));
+        for (ChannelDescriptor c : described) {
             channels.put(c.name(), c);
         }
         channels.put(Driver.LINK_CHANNEL.name(), Driver.LINK_CHANNEL);
@@ -86,18 +83,9 @@ final class InterfaceLink {
                 readings.put(c.name(), new OutputPort("@" + config.id() + "." + c.name()));
             }
         }
-        for (Connection c : replayed ? List.<Connection>of() : driver.connections()) {
-            ConnectionLink link = new ConnectionLink(config.id(), config.address().host(), c, config.reconnect(), sink,
-                    this::connectionChanged);
-            connections.add(link);
-            for (String channel : c.commandChannels()) {
-                commandRoutes.put(channel, link);
-            }
-        }
-        for (ClientConnection c : replayed ? List.<ClientConnection>of() : driver.clientConnections()) {
-            ClientLink link = new ClientLink(config.id(), c, config.reconnect(), sink, this::connectionChanged);
-            connections.add(link);
-            for (String channel : c.commandChannels()) {
+        this.connections = List.copyOf(driver.connections(config, sink, this::connectionChanged));
+        for (Link link : connections) {
+            for (String channel : link.commandChannels()) {
                 commandRoutes.put(channel, link);
             }
         }
@@ -123,7 +111,20 @@ final class InterfaceLink {
 
     /** The links of the driver's connections, in the driver's order. */
     List<Link> connections() {
-        return List.copyOf(connections);
+        return connections;
+    }
+
+    /** The reading channels, the engine's {@code link} channel among them. */
+    Set<String> readingChannels() {
+        return readings.keySet();
+    }
+
+    /**
+     * Has {@code changes} told of every change of the interface's state (up or down), under the link-state lock
+     * and before the staleness it causes is in force, so a recording has it before any of its effects.
+     */
+    void onLinkChange(Consumer<Boolean> changes) {
+        this.linkChanges = changes;
     }
 
     void watchdog(MotionWatchdog w) {
@@ -139,8 +140,10 @@ final class InterfaceLink {
         for (Link c : connections) {
             c.start();
         }
-        linkTicker = clock.every(1_000_000, () -> states.locked(this::publishLink));
-        states.locked(this::publishLink);
+        if (engineTellsLink) {
+            linkTicker = clock.every(1_000_000, () -> states.locked(this::publishLink));
+            states.locked(this::publishLink);
+        }
     }
 
     void stop() {
@@ -156,38 +159,28 @@ final class InterfaceLink {
         }
     }
 
+    /** What became of a command: written to its connection, refused (counted), or on no connection at all. */
+    enum Delivery { WRITTEN, REFUSED, UNROUTED }
+
     /** Sends a command sample from an actuator method to its channel. */
-    void command(String channel, Sample sample) {
+    Delivery command(String channel, Sample sample) {
         ChannelDescriptor d = channels.get(channel);
         Link link = commandRoutes.get(channel);
-        if (d == null || (link == null && !replayed)) {
+        if (d == null || link == null) {
             drop(channel, sample, "no connection carries it");
-            return;
+            return Delivery.UNROUTED;
         }
-        if (replayed) {
-            if (d.motion() && !motionAllowed()) {
-                refuse(channel, sample, "the motion watchdog has stopped the robot");
-            } else if (!up) {
-                refuse(channel, sample, "link " + config.id() + " is down in the recording");
-            } else {
-                tap.command(config.id(), channel, sample, true);
-                commandsSent.increment();
-            }
-            return;
+        if (!d.motion()) {
+            return send(channel, sample, link);
         }
-        if (d.motion()) {
-            // Under the motion lock: a trip either comes before the check (and the command is dropped) or
-            // after the write (and its stop follows the command).
-            synchronized (motionLock) {
-                if (!motionAllowed()) {
-                    refuse(channel, sample, "the motion watchdog has stopped the robot");
-                    return;
-                }
-                payOwedStop(link);
-                send(channel, sample, link);
+        // Under the motion lock: a trip either comes before the check (and the command is dropped) or after the
+        // write (and its stop follows the command).
+        synchronized (motionLock) {
+            if (!motionAllowed()) {
+                return refuse(channel, sample, "the motion watchdog has stopped the robot");
             }
-        } else {
-            send(channel, sample, link);
+            payOwedStop(link);
+            return send(channel, sample, link);
         }
     }
 
@@ -196,39 +189,17 @@ final class InterfaceLink {
         return w == null || w.allowsMotion();
     }
 
-    private void send(String channel, Sample sample, Link link) {
+    private Delivery send(String channel, Sample sample, Link link) {
         if (!link.command(channel, sample.payload())) {
-            refuse(channel, sample, "link " + config.id() + "/" + link.connectionName() + " is down");
-            return;
+            return refuse(channel, sample, "link " + config.id() + "/" + link.connectionName() + " is down");
         }
-        tap.command(config.id(), channel, sample, true);
         commandsSent.increment();
+        return Delivery.WRITTEN;
     }
 
-    private void refuse(String channel, Sample sample, String why) {
-        tap.command(config.id(), channel, sample, false);
+    private Delivery refuse(String channel, Sample sample, String why) {
         drop(channel, sample, why);
-    }
-
-    /** A recorded reading, replayed: published exactly as the driver's session (or the link heartbeat) did. */
-    void replayReading(String channel, Payload value, long sourceMicros) {
-        if (Driver.LINK_CHANNEL.name().equals(channel)) {
-            readings.get(channel).publish(value, sourceMicros, false, s -> tap.reading(config.id(), channel, s));
-            return;
-        }
-        sink.reading(channel, value, sourceMicros);
-    }
-
-    /** A recorded link change, replayed. */
-    void replayLink(boolean isUp) {
-        states.locked(() -> {
-            if (isUp != up) {
-                up = isUp;
-                sinceMicros = clock.nowMicros();
-                tap.link(config.id(), isUp, clock.nowMicros());
-                states.refreshStaleness();
-            }
-        });
+        return Delivery.REFUSED;
     }
 
     /** Owes a stop on every connection that carries a motion channel (see the class comment). */
@@ -336,7 +307,7 @@ final class InterfaceLink {
             if (all != up) {
                 up = all;
                 sinceMicros = clock.nowMicros();
-                tap.link(config.id(), all, clock.nowMicros());
+                linkChanges.accept(all);
                 states.refreshStaleness();
                 publishLink();
             } else if (connections.size() > 1) {
@@ -348,8 +319,7 @@ final class InterfaceLink {
 
     /** Publishes the link record; under the link-state lock, so it never overtakes a change. */
     private void publishLink() {
-        if (replayed) {
-            // A replay publishes the link records of the recording instead, as they were.
+        if (!engineTellsLink) {
             return;
         }
         StringBuilder detail = new StringBuilder();
@@ -365,8 +335,7 @@ final class InterfaceLink {
         RecordValue value = RecordValue.builder().put("up", up).put("interface", config.id())
                 .put("detail", detail.length() == 0 ? "all connections up" : detail.toString())
                 .set("connections", each).build();
-        readings.get(Driver.LINK_CHANNEL.name()).publish(value, clock.nowMicros(), false,
-                s -> tap.reading(config.id(), Driver.LINK_CHANNEL.name(), s));
+        readings.get(Driver.LINK_CHANNEL.name()).publish(value, clock.nowMicros(), false);
     }
 
     ObjectNode status() {
@@ -376,9 +345,6 @@ final class InterfaceLink {
         n.put("address", config.address().toString());
         n.put("up", up);
         n.put("sinceMicros", sinceMicros);
-        if (replayed) {
-            n.put("replayed", true);
-        }
         n.set("robot", robotInfo);
         ArrayNode conns = n.putArray("connections");
         connections.forEach(c -> conns.add(c.status()));
@@ -406,7 +372,7 @@ final class InterfaceLink {
         public void reading(String channel, Payload value, long sourceMicros) {
             OutputPort port = readings.get(channel);
             ChannelDescriptor d = channels.get(channel);
-            if (port == null || Driver.LINK_CHANNEL.name().equals(channel)) {
+            if (port == null || (engineTellsLink && Driver.LINK_CHANNEL.name().equals(channel))) {
                 unknownChannel.increment();
                 LOG.debug("interface {}: reading on unknown channel '{}' ignored", config.id(), channel);
                 return;
@@ -416,7 +382,7 @@ final class InterfaceLink {
                         + d.kind().wireName());
                 return;
             }
-            port.publish(value, sourceMicros, false, s -> tap.reading(config.id(), channel, s));
+            port.publish(value, sourceMicros, false);
         }
 
         @Override

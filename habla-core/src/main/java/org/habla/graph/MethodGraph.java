@@ -65,12 +65,14 @@ public final class MethodGraph implements AutoCloseable {
 
     private final GraphTap tap;
     private final WorkCount work = new WorkCount();
-    private final boolean replayed;
 
+    /**
+     * @param drivers  what each interface runs on, by interface id
+     * @param recorded the same drivers when they are a recording's, which {@link #replay()} then feeds; else null
+     */
     private MethodGraph(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
-            Map<String, List<ChannelDescriptor>> recordedChannels) {
+            Map<String, ? extends InterfaceDriver> drivers, Map<String, RecordedDriver> recorded) {
         this.tap = tap;
-        this.replayed = recordedChannels != null;
         this.config = config;
         this.topology = new GraphTopology(config);
         this.clock = clock;
@@ -83,12 +85,13 @@ public final class MethodGraph implements AutoCloseable {
                     return t;
                 });
         for (InterfaceConfig ic : config.interfaces()) {
-            org.habla.driver.Driver driver = replayed ? new RecordedDriver(recordedChannels.getOrDefault(ic.id(), List.of()))
-                    : createDriver(registry, ic);
-            links.put(ic.id(), new InterfaceLink(ic, driver, clock, tap, replayed, linkStates));
+            InterfaceLink link = new InterfaceLink(ic, drivers.get(ic.id()), clock, linkStates);
+            InterfaceTap.attach(link, tap, clock);
+            links.put(ic.id(), link);
         }
         this.watchdog = new MotionWatchdog(config.safety().watchdogMs(), clock, List.copyOf(links.values()));
-        this.replay = new GraphReplay(links, runners, upstreamInterfaces, exposed, topology, watchdog, work);
+        this.replay = recorded == null ? null
+                : new GraphReplay(recorded, runners, upstreamInterfaces, exposed, topology, watchdog, work);
         links.values().forEach(l -> l.watchdog(watchdog));
         for (MethodConfig mc : config.methods()) {
             runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc), clock, backgroundPool,
@@ -124,7 +127,7 @@ public final class MethodGraph implements AutoCloseable {
 
     /** Builds the graph of a checked config. Nothing runs until {@link #start()}. */
     public static MethodGraph build(HablaConfig config, PluginRegistry registry, EngineClock clock) {
-        return new MethodGraph(config, registry, clock, GraphTap.NONE, null);
+        return build(config, registry, clock, GraphTap.NONE);
     }
 
     /** Hands an audit log's entry to the graph's tap (a recording). */
@@ -134,17 +137,25 @@ public final class MethodGraph implements AutoCloseable {
 
     /** Builds the graph with a tap that sees everything crossing its edges (for recording). */
     public static MethodGraph build(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap) {
-        return new MethodGraph(config, registry, clock, tap, null);
+        Map<String, InterfaceDriver> drivers = new HashMap<>();
+        for (InterfaceConfig ic : config.interfaces()) {
+            drivers.put(ic.id(), new LiveDriver(createDriver(registry, ic)));
+        }
+        return new MethodGraph(config, registry, clock, tap, drivers, null);
     }
 
     /**
-     * Builds a graph that replays a recording: every interface has the recorded channels but no connection;
-     * readings and link changes come in through {@link #replay()}, and commands
-     * are absorbed — counted and tapped, never written anywhere.
+     * Builds the same graph on a recording: every interface runs on a {@link RecordedDriver} with the recorded
+     * channels, through which {@link #replay()} feeds the readings and link changes; commands are absorbed —
+     * counted and tapped, never written anywhere.
      */
     public static MethodGraph replaying(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
             Map<String, List<ChannelDescriptor>> channels) {
-        return new MethodGraph(config, registry, clock, tap, Map.copyOf(channels));
+        Map<String, RecordedDriver> drivers = new HashMap<>();
+        for (InterfaceConfig ic : config.interfaces()) {
+            drivers.put(ic.id(), new RecordedDriver(channels.getOrDefault(ic.id(), List.of())));
+        }
+        return new MethodGraph(config, registry, clock, tap, drivers, drivers);
     }
 
     /**
@@ -154,7 +165,7 @@ public final class MethodGraph implements AutoCloseable {
      * @throws IllegalStateException if the graph runs live interfaces, not a recording
      */
     public GraphReplay replay() {
-        if (!replayed) {
+        if (replay == null) {
             throw new IllegalStateException("this graph runs live interfaces, not a recording");
         }
         return replay;
@@ -222,7 +233,7 @@ public final class MethodGraph implements AutoCloseable {
             if (descriptor != null) {
                 runner.bindCommandChannel(out, descriptor);
             }
-            runner.port(out).subscribe(sample -> link.command(channel, sample));
+            runner.port(out).subscribe(InterfaceTap.commands(link, channel, tap));
         }
         mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner,
                 x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap, topology.actuates(mc.id()))));
