@@ -27,9 +27,9 @@ final class InterfaceTap {
      */
     static Consumer<Sample> commands(InterfaceLink link, String channel, GraphTap tap) {
         return sample -> {
-            InterfaceLink.Delivery d = link.command(channel, sample);
-            if (d != InterfaceLink.Delivery.UNROUTED) {
-                tap.command(link.id(), channel, sample, d == InterfaceLink.Delivery.WRITTEN);
+            InterfaceCommands.Delivery d = link.command(channel, sample);
+            if (d != InterfaceCommands.Delivery.UNROUTED) {
+                tap.command(link.id(), channel, sample, d == InterfaceCommands.Delivery.WRITTEN);
             }
         };
     }

@@ -70,9 +70,9 @@ class RecordedDriverTest {
     void aCommandCountsAsWrittenWhileTheRecordedLinkIsUpAndIsRefusedWhileItIsDown() {
         link.start();
 
-        assertThat(link.command("speed", command(0.2))).isEqualTo(InterfaceLink.Delivery.REFUSED);
+        assertThat(link.command("speed", command(0.2))).isEqualTo(InterfaceCommands.Delivery.REFUSED);
         driver.link(true);
-        assertThat(link.command("speed", command(0.2))).isEqualTo(InterfaceLink.Delivery.WRITTEN);
+        assertThat(link.command("speed", command(0.2))).isEqualTo(InterfaceCommands.Delivery.WRITTEN);
         assertThat(link.status().get("commandsSent").asLong()).isEqualTo(1);
         assertThat(link.status().get("connections").get(0).get("replayed").booleanValue()).isTrue();
     }
