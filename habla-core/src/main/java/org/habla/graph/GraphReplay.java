@@ -1,5 +1,6 @@
 package org.habla.graph;
 
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -16,18 +17,19 @@ public final class GraphReplay {
 
     private final Map<String, RecordedDriver> drivers;
     private final Map<String, MethodRunner> runners;
-    private final Map<String, Set<String>> upstreamInterfaces;
+    private final Map<String, Set<String>> upstreamInterfaces = new HashMap<>();
     private final List<ExposedMethod> exposed;
     private final GraphTopology topology;
     private final MotionWatchdog watchdog;
     private final WorkCount work;
 
-    GraphReplay(Map<String, RecordedDriver> drivers, Map<String, MethodRunner> runners,
-            Map<String, Set<String>> upstreamInterfaces, List<ExposedMethod> exposed, GraphTopology topology,
-            MotionWatchdog watchdog, WorkCount work) {
+    GraphReplay(Map<String, RecordedDriver> drivers, Map<String, MethodRunner> runners, List<ExposedMethod> exposed,
+            GraphTopology topology, MotionWatchdog watchdog, WorkCount work) {
         this.drivers = drivers;
         this.runners = runners;
-        this.upstreamInterfaces = upstreamInterfaces;
+        for (String id : runners.keySet()) {
+            upstreamInterfaces.put(id, topology.upstreamInterfaces(id));
+        }
         this.exposed = exposed;
         this.topology = topology;
         this.watchdog = watchdog;

@@ -8,6 +8,8 @@ import org.habla.driver.ClientConnection;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.ReadingSink;
+import org.habla.plugin.DriverProvider;
+import org.habla.plugin.PluginRegistry;
 
 /**
  * A robot's plugin {@link Driver} as an interface runs on it: its channels, and a link the engine keeps for each
@@ -19,6 +21,14 @@ final class LiveDriver implements InterfaceDriver {
 
     LiveDriver(Driver driver) {
         this.driver = driver;
+    }
+
+    /** The driver of a configured interface, made by its provider; connects to nothing yet. */
+    @SuppressWarnings({"unchecked", "rawtypes"})
+    static LiveDriver create(PluginRegistry registry, InterfaceConfig ic) {
+        DriverProvider provider = registry.driver(ic.driver()).orElseThrow(() ->
+                new IllegalStateException("no driver type '" + ic.driver() + "'"));
+        return new LiveDriver(provider.create(ic.address(), ic.params()));
     }
 
     @Override
