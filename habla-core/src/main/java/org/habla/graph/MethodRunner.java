@@ -8,12 +8,9 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.Callable;
-import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.RejectedExecutionException;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
-import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import org.habla.driver.ChannelDescriptor;
@@ -33,12 +30,13 @@ import org.slf4j.LoggerFactory;
 /**
  * Runs one method on a thread of its own: waits for samples in its input slots, ticks and
  * background results, and hands them to the method one at a time. Because every method has its
- * own thread, a slow method (speech, vision) never holds up a light one.
+ * own thread, a slow method (speech, vision) never holds up a light one. The thread and the order of
+ * messages are its {@link MethodScheduler}'s; the runner is what the method sees of the engine (its
+ * {@link MethodContext}: outputs, channels, readiness, background work, notices) and what the status says of it.
  */
 final class MethodRunner implements MethodContext {
 
     private static final Logger LOG = LoggerFactory.getLogger(MethodRunner.class);
-    private static final long IDLE_PARK_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
 
     private final String id;
     private final String type;
@@ -51,22 +49,14 @@ final class MethodRunner implements MethodContext {
     private final Map<Output<?>, OutputPort> ports = new HashMap<>();
     private final Map<Input<?>, ChannelDescriptor> channels = new HashMap<>();
     private final Map<Output<?>, ChannelDescriptor> commandChannels = new HashMap<>();
-    private final ConcurrentLinkedQueue<Runnable> turns = new ConcurrentLinkedQueue<>();
-    private final AtomicBoolean signalled = new AtomicBoolean();
     private final AtomicBoolean tickPending = new AtomicBoolean();
-    private final RateMeter handled = new RateMeter();
-    private final LatencyStats latency = new LatencyStats();
-    private volatile boolean running;
     private volatile boolean stale;
     private volatile boolean ready = true;
     private volatile String readinessDetail = "";
     private AutoCloseable ticker;
-    private Thread thread;
     private final MethodHost.Local local;
-    private volatile MethodHost host;
+    private final MethodScheduler scheduler;
     private volatile Consumer<ControlNotice> controlNotices = n -> { };
-    private LongSupplier motionResets;
-    private long motionResetsSeen;
 
     static final String TICK_PREFIX = "tick:";
 
@@ -114,7 +104,7 @@ final class MethodRunner implements MethodContext {
         lifecycle = MethodLifecycle.attach(method, this);
         local = new MethodHost.Local(lifecycle, () -> method.tickPeriod()
                 .ifPresent(p -> ticker = clock.every(p.toNanos() / 1_000, this::requestTick)));
-        host = local;
+        scheduler = new MethodScheduler(id, slots, clock, work, local);
     }
 
     String id() {
@@ -183,8 +173,7 @@ final class MethodRunner implements MethodContext {
      * before {@link #start}.
      */
     void followMotionResets(LongSupplier resets) {
-        this.motionResets = resets;
-        this.motionResetsSeen = resets.getAsLong();
+        scheduler.followMotionResets(resets);
     }
 
     /**
@@ -193,7 +182,7 @@ final class MethodRunner implements MethodContext {
      * Call before {@link #start}.
      */
     void placeOn(RemotePlacement remote) {
-        this.host = new MethodHost.OnWorker(id, remote, local);
+        scheduler.host(new MethodHost.OnWorker(id, remote, local));
         if (!remote.fallsBackToLocal()) {
             ready = false;
             readinessDetail = "waiting for worker " + remote.host();
@@ -210,39 +199,27 @@ final class MethodRunner implements MethodContext {
 
     /** Starts the method and its thread; a method placed on a worker starts here only when it must run locally. */
     void start() {
-        running = true;
-        thread = new Thread(this::loop, "habla-method-" + id);
-        thread.setDaemon(true);
-        host.start();
-        thread.start();
+        scheduler.start();
+    }
+
+    /** A slot has a sample: wakes the method's thread. */
+    private void wake() {
+        scheduler.wake();
     }
 
     /** From the placement, on any thread: the worker was lost and the fallback is to run here. */
     void fallBackToLocal() {
-        addTurn(() -> {
-            if (host instanceof MethodHost.OnWorker w) {
+        scheduler.turn(() -> {
+            if (scheduler.host() instanceof MethodHost.OnWorker w) {
                 w.fallBack();
             }
         });
-        wake();
     }
 
     /** Stops the thread, then the method. Waits at most {@code waitMillis} for the current turn. */
     void stop(long waitMillis) {
-        running = false;
         closeTicker();
-        if (thread != null) {
-            LockSupport.unpark(thread);
-            try {
-                thread.join(waitMillis);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-            if (thread.isAlive()) {
-                LOG.warn("method {} is still busy after {} ms; stopping it anyway", id, waitMillis);
-            }
-        }
-        host.stop();
+        scheduler.stop(waitMillis);
     }
 
     /**
@@ -275,91 +252,12 @@ final class MethodRunner implements MethodContext {
     /** Asks for a tick; one already waiting takes this one's place (ticks never pile up behind a busy method). */
     void requestTick() {
         if (tickPending.compareAndSet(false, true)) {
-            addTurn(() -> {
+            scheduler.turn(() -> {
                 tickPending.set(false);
                 tap.periodic(TICK_PREFIX + id, clock.nowMicros(), consumed());
-                host.tick(clock.nowMicros());
+                scheduler.host().tick(clock.nowMicros());
             });
-            wake();
         }
-    }
-
-    private void addTurn(Runnable turn) {
-        work.begin();
-        turns.add(turn);
-    }
-
-    private void wake() {
-        signalled.set(true);
-        Thread t = thread;
-        if (t != null) {
-            LockSupport.unpark(t);
-        }
-    }
-
-    private void loop() {
-        while (running) {
-            signalled.set(false);
-            boolean worked = drainOnce();
-            if (!worked && !signalled.get() && running) {
-                LockSupport.parkNanos(this, IDLE_PARK_NANOS);
-            }
-        }
-    }
-
-    /** One pass: at most one sample from every input (round robin), then the turns waiting now. */
-    private boolean drainOnce() {
-        boolean worked = false;
-        for (InputSlot slot : slots) {
-            Sample s = slot.poll();
-            if (s != null) {
-                worked = true;
-                catchUpMotionReset();
-                long now = clock.nowMicros();
-                latency.record(now - s.sourceMicros());
-                handled.mark(now);
-                try {
-                    route(slot.input(), s);
-                } finally {
-                    work.end();
-                }
-            }
-        }
-        for (int n = turns.size(); n > 0; n--) {
-            Runnable turn = turns.poll();
-            if (turn == null) {
-                break;
-            }
-            worked = true;
-            catchUpMotionReset();
-            try {
-                turn.run();
-            } finally {
-                work.end();
-            }
-        }
-        return worked;
-    }
-
-    /**
-     * Tells the method of a motion reset it has not heard of yet. Read after the message was taken, so a message
-     * that came after a reset (a value written once control is back) always finds the reset told first.
-     */
-    private void catchUpMotionReset() {
-        LongSupplier resets = motionResets;
-        if (resets == null) {
-            return;
-        }
-        long now = resets.getAsLong();
-        if (now != motionResetsSeen) {
-            motionResetsSeen = now;
-            host.motionStopped();
-        }
-    }
-
-    /** Hands a sample to where the method runs. */
-    private void route(Input<?> input, Sample s) {
-        host.deliver(input, s);
     }
 
     // ------------------------------------------------------------------ MethodContext
@@ -419,13 +317,12 @@ final class MethodRunner implements MethodContext {
             backgroundPool.execute(() -> {
                 try {
                     T result = task.call();
-                    addTurn(() -> lifecycle.runTurn(what, () -> done.accept(result)));
+                    scheduler.turn(() -> lifecycle.runTurn(what, () -> done.accept(result)));
                 } catch (Exception | LinkageError e) {
-                    addTurn(() -> lifecycle.fail(what, e));
+                    scheduler.turn(() -> lifecycle.fail(what, e));
                 } finally {
                     work.end();
                 }
-                wake();
             });
         } catch (RejectedExecutionException e) {
             work.end();
@@ -449,10 +346,8 @@ final class MethodRunner implements MethodContext {
             n.put("readiness", readinessDetail);
         }
         n.put("stale", stale);
-        host.status(n);
-        n.put("handled", handled.total());
-        n.put("handledPerS", handled.perSecond(nowMicros));
-        n.set("latency", latency.snapshot());
+        scheduler.host().status(n);
+        scheduler.statusTo(n, nowMicros);
         ObjectNode inputs = n.putObject("inputs");
         for (InputSlot slot : slots) {
             ObjectNode i = inputs.putObject(slot.input().name());
