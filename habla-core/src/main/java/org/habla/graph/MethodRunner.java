@@ -6,10 +6,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
-import java.util.concurrent.Callable;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
@@ -18,12 +15,10 @@ import org.habla.method.ControlNotice;
 import org.habla.method.Delivery;
 import org.habla.method.Input;
 import org.habla.method.Method;
-import org.habla.method.MethodContext;
 import org.habla.method.MethodLifecycle;
 import org.habla.method.MethodState;
 import org.habla.method.Output;
 import org.habla.sample.Payload;
-import org.habla.sample.Sample;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -31,10 +26,10 @@ import org.slf4j.LoggerFactory;
  * Runs one method on a thread of its own: waits for samples in its input slots, ticks and
  * background results, and hands them to the method one at a time. Because every method has its
  * own thread, a slow method (speech, vision) never holds up a light one. The thread and the order of
- * messages are its {@link MethodScheduler}'s; the runner is what the method sees of the engine (its
- * {@link MethodContext}: outputs, channels, readiness, background work, notices) and what the status says of it.
+ * messages are its {@link MethodScheduler}'s, what the method sees of the engine its {@link RunnerContext}'s;
+ * the runner puts them together, ticks the method, and says in the status how it is doing.
  */
-final class MethodRunner implements MethodContext {
+final class MethodRunner {
 
     private static final Logger LOG = LoggerFactory.getLogger(MethodRunner.class);
 
@@ -43,20 +38,13 @@ final class MethodRunner implements MethodContext {
     private final Method method;
     private final MethodLifecycle lifecycle;
     private final EngineClock clock;
-    private final ExecutorService backgroundPool;
     private final List<InputSlot> slots = new ArrayList<>();
     private final Map<Input<?>, InputSlot> slotByInput = new HashMap<>();
-    private final Map<Output<?>, OutputPort> ports = new HashMap<>();
-    private final Map<Input<?>, ChannelDescriptor> channels = new HashMap<>();
-    private final Map<Output<?>, ChannelDescriptor> commandChannels = new HashMap<>();
     private final AtomicBoolean tickPending = new AtomicBoolean();
-    private volatile boolean stale;
-    private volatile boolean ready = true;
-    private volatile String readinessDetail = "";
     private AutoCloseable ticker;
     private final MethodHost.Local local;
+    private final RunnerContext context;
     private final MethodScheduler scheduler;
-    private volatile Consumer<ControlNotice> controlNotices = n -> { };
 
     static final String TICK_PREFIX = "tick:";
 
@@ -80,7 +68,6 @@ final class MethodRunner implements MethodContext {
         this.type = type;
         this.method = method;
         this.clock = clock;
-        this.backgroundPool = backgroundPool;
         for (Input<?> in : method.inputs()) {
             String input = in.name();
             InputSlot slot = new InputSlot(in, latestInputs.contains(input) ? Delivery.latest() : in.delivery(),
@@ -98,10 +85,18 @@ final class MethodRunner implements MethodContext {
             slots.add(slot);
             slotByInput.put(in, slot);
         }
-        for (Output<?> out : method.outputs()) {
-            ports.put(out, new OutputPort(id + "." + out.name()));
-        }
-        lifecycle = MethodLifecycle.attach(method, this);
+        context = new RunnerContext(id, method, clock, backgroundPool, work, new RunnerContext.Turns() {
+            @Override
+            public void done(String what, MethodLifecycle.ThrowingRunnable result) {
+                scheduler.turn(() -> lifecycle.runTurn(what, result));
+            }
+
+            @Override
+            public void failed(String what, Throwable cause) {
+                scheduler.turn(() -> lifecycle.fail(what, cause));
+            }
+        });
+        lifecycle = MethodLifecycle.attach(method, context);
         local = new MethodHost.Local(lifecycle, () -> method.tickPeriod()
                 .ifPresent(p -> ticker = clock.every(p.toNanos() / 1_000, this::requestTick)));
         scheduler = new MethodScheduler(id, slots, clock, work, local);
@@ -134,37 +129,33 @@ final class MethodRunner implements MethodContext {
     }
 
     OutputPort port(Output<?> output) {
-        return ports.get(output);
+        return context.port(output);
     }
 
     void bindChannel(Input<?> input, ChannelDescriptor channel) {
-        channels.put(input, channel);
+        context.bindChannel(input, channel);
     }
 
     void bindCommandChannel(Output<?> output, ChannelDescriptor channel) {
-        commandChannels.put(output, channel);
+        context.bindCommandChannel(output, channel);
     }
 
     /** The interface channels the inputs read, by input name (for a worker running the method). */
     Map<String, ChannelDescriptor> channelsByInput() {
-        Map<String, ChannelDescriptor> m = new java.util.LinkedHashMap<>();
-        channels.forEach((in, c) -> m.put(in.name(), c));
-        return m;
+        return context.channelsByInput();
     }
 
     /** The interface channels the outputs write, by output name (for a worker running the method). */
     Map<String, ChannelDescriptor> commandChannelsByOutput() {
-        Map<String, ChannelDescriptor> m = new java.util.LinkedHashMap<>();
-        commandChannels.forEach((out, c) -> m.put(out.name(), c));
-        return m;
+        return context.commandChannelsByOutput();
     }
 
     void stale(boolean isStale) {
-        stale = isStale;
+        context.stale(isStale);
     }
 
     boolean stale() {
-        return stale;
+        return context.stale();
     }
 
     /**
@@ -184,17 +175,30 @@ final class MethodRunner implements MethodContext {
     void placeOn(RemotePlacement remote) {
         scheduler.host(new MethodHost.OnWorker(id, remote, local));
         if (!remote.fallsBackToLocal()) {
-            ready = false;
-            readinessDetail = "waiting for worker " + remote.host();
+            context.startNotReady("waiting for worker " + remote.host());
         }
     }
 
     boolean ready() {
-        return ready;
+        return context.ready();
     }
 
     String readinessDetail() {
-        return readinessDetail;
+        return context.readinessDetail();
+    }
+
+    /** The method's readiness, as its worker tells it (see {@link RunnerContext#readiness}). */
+    void readiness(boolean isReady, String detail) {
+        context.readiness(isReady, detail);
+    }
+
+    long nowMicros() {
+        return clock.nowMicros();
+    }
+
+    /** Where the method's notices to control clients go (the exposed methods whose values reach it). */
+    void tellControlVia(Consumer<ControlNotice> sink) {
+        context.tellControlVia(sink);
     }
 
     /** Starts the method and its thread; a method placed on a worker starts here only when it must run locally. */
@@ -236,7 +240,7 @@ final class MethodRunner implements MethodContext {
 
     /** A sample the method published on its worker, published here as if the method had emitted it. */
     void publishFromWorker(Output<?> output, Payload value, long sourceMicros) {
-        emit(output, value, sourceMicros);
+        context.emit(output, value, sourceMicros);
     }
 
     private void closeTicker() {
@@ -260,78 +264,6 @@ final class MethodRunner implements MethodContext {
         }
     }
 
-    // ------------------------------------------------------------------ MethodContext
-
-    @Override
-    public String methodId() {
-        return id;
-    }
-
-    @Override
-    public long nowMicros() {
-        return clock.nowMicros();
-    }
-
-    @Override
-    public void emit(Output<?> output, Payload value, long sourceMicros) {
-        if (!output.type().isInstance(value)) {
-            throw new IllegalArgumentException(output + " of " + id + " cannot carry " + value.kind().wireName());
-        }
-        ports.get(output).publish(value, sourceMicros, stale);
-    }
-
-    /** Where the method's notices to control clients go (the exposed methods whose values reach it). */
-    void tellControlVia(Consumer<ControlNotice> sink) {
-        controlNotices = sink;
-    }
-
-    @Override
-    public void tellControl(ControlNotice notice) {
-        controlNotices.accept(notice);
-    }
-
-    @Override
-    public Optional<ChannelDescriptor> channelOf(Input<?> input) {
-        return Optional.ofNullable(channels.get(input));
-    }
-
-    @Override
-    public Optional<ChannelDescriptor> commandChannelOf(Output<?> output) {
-        return Optional.ofNullable(commandChannels.get(output));
-    }
-
-    @Override
-    public void readiness(boolean isReady, String detail) {
-        if (isReady != ready) {
-            LOG.info("method {} is {}{}", id, isReady ? "ready" : "not ready",
-                    detail == null || detail.isEmpty() ? "" : ": " + detail);
-        }
-        ready = isReady;
-        readinessDetail = detail == null ? "" : detail;
-    }
-
-    @Override
-    public <T> void background(String what, Callable<T> task, Consumer<T> done) {
-        work.begin();
-        try {
-            backgroundPool.execute(() -> {
-                try {
-                    T result = task.call();
-                    scheduler.turn(() -> lifecycle.runTurn(what, () -> done.accept(result)));
-                } catch (Exception | LinkageError e) {
-                    scheduler.turn(() -> lifecycle.fail(what, e));
-                } finally {
-                    work.end();
-                }
-            });
-        } catch (RejectedExecutionException e) {
-            work.end();
-            LOG.debug("background work '{}' of {} refused: the engine is stopping", what, id);
-        }
-    }
-
-    // ------------------------------------------------------------------ status
-
     ObjectNode status(long nowMicros) {
         ObjectNode n = JsonNodeFactory.instance.objectNode();
         n.put("id", id);
@@ -341,11 +273,11 @@ final class MethodRunner implements MethodContext {
         if (!lifecycle.failure().isEmpty()) {
             n.put("failure", lifecycle.failure());
         }
-        n.put("ready", ready);
-        if (!readinessDetail.isEmpty()) {
-            n.put("readiness", readinessDetail);
+        n.put("ready", context.ready());
+        if (!context.readinessDetail().isEmpty()) {
+            n.put("readiness", context.readinessDetail());
         }
-        n.put("stale", stale);
+        n.put("stale", context.stale());
         scheduler.host().status(n);
         scheduler.statusTo(n, nowMicros);
         ObjectNode inputs = n.putObject("inputs");
@@ -359,7 +291,7 @@ final class MethodRunner implements MethodContext {
         }
         ObjectNode outputs = n.putObject("outputs");
         for (Output<?> out : method.outputs()) {
-            outputs.put(out.name(), ports.get(out).published());
+            outputs.put(out.name(), context.port(out).published());
         }
         return n;
     }
