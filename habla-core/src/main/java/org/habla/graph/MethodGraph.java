@@ -55,7 +55,7 @@ public final class MethodGraph implements AutoCloseable {
     private AutoCloseable watchdogTicker;
     private boolean started;
     private final GraphTap tap;
-    private final WorkCount work = new WorkCount();
+    private final WorkCount work;
 
     /**
      * @param drivers  what each interface runs on, by interface id
@@ -64,6 +64,7 @@ public final class MethodGraph implements AutoCloseable {
     private MethodGraph(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
             Map<String, ? extends InterfaceDriver> drivers, Map<String, RecordedDriver> recorded) {
         this.tap = tap;
+        this.work = recorded == null ? WorkCount.NONE : new WorkCount();
         this.config = config;
         GraphTopology topology = new GraphTopology(config);
         this.clock = clock;
@@ -151,7 +152,8 @@ public final class MethodGraph implements AutoCloseable {
 
     /**
      * Waits until every effect of what came in has been handled — no sample waiting or being handled, no turn
-     * or background task under way; false if that took longer than {@code millis}.
+     * or background task under way; false if that took longer than {@code millis}. Only a graph that replays a
+     * recording counts its work; a live one throws {@link IllegalStateException}.
      */
     public boolean awaitIdle(long millis) throws InterruptedException {
         return work.awaitIdle(millis);

@@ -3,7 +3,6 @@ package org.habla.graph;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ExecutorService;
@@ -39,7 +38,8 @@ final class MethodRunner {
     private final MethodLifecycle lifecycle;
     private final EngineClock clock;
     private final List<InputSlot> slots = new ArrayList<>();
-    private final Map<Input<?>, InputSlot> slotByInput = new HashMap<>();
+    /** The input slots by their input's declaration index ({@link Input#index()}). */
+    private final InputSlot[] slotByInput;
     private final AtomicBoolean tickPending = new AtomicBoolean();
     private AutoCloseable ticker;
     private final MethodHost.Local local;
@@ -47,8 +47,6 @@ final class MethodRunner {
     private final MethodScheduler scheduler;
 
     static final String TICK_PREFIX = "tick:";
-
-    private final WorkCount work;
     private final GraphTap tap;
 
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
@@ -62,7 +60,6 @@ final class MethodRunner {
      */
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
             WorkCount work, GraphTap tap, java.util.Set<String> latestInputs) {
-        this.work = work;
         this.tap = tap;
         this.id = id;
         this.type = type;
@@ -83,8 +80,8 @@ final class MethodRunner {
                         }
                     });
             slots.add(slot);
-            slotByInput.put(in, slot);
         }
+        slotByInput = slots.toArray(InputSlot[]::new);
         context = new RunnerContext(id, method, clock, backgroundPool, work, new RunnerContext.Turns() {
             @Override
             public void done(String what, MethodLifecycle.ThrowingRunnable result) {
@@ -124,10 +121,13 @@ final class MethodRunner {
         return method;
     }
 
+    /** The slot of one of this method's inputs; null for another method's input. */
     InputSlot slot(Input<?> input) {
-        return slotByInput.get(input);
+        int i = input.index();
+        return i >= 0 && i < slotByInput.length && slotByInput[i].input() == input ? slotByInput[i] : null;
     }
 
+    /** The port of one of this method's outputs (the method checked that it is one of its own). */
     OutputPort port(Output<?> output) {
         return context.port(output);
     }

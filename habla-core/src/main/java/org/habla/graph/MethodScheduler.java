@@ -4,7 +4,6 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.LongSupplier;
 import org.habla.sample.Sample;
@@ -28,7 +27,12 @@ final class MethodScheduler {
     private final EngineClock clock;
     private final WorkCount work;
     private final ConcurrentLinkedQueue<Runnable> turns = new ConcurrentLinkedQueue<>();
-    private final AtomicBoolean signalled = new AtomicBoolean();
+    /**
+     * Whether the thread is about to park or parked: set before it looks at its slots one last time, so a
+     * producer that finds it false knows the thread will see its sample, and unparks only a thread that may
+     * sleep (an unpark costs a lock and, for a sleeping thread, a system call).
+     */
+    private volatile boolean parking;
     private final RateMeter handled = new RateMeter();
     private final LatencyStats latency = new LatencyStats();
     private volatile MethodHost host;
@@ -97,10 +101,11 @@ final class MethodScheduler {
 
     /** Wakes the thread: a slot has a sample, or a turn is waiting. */
     void wake() {
-        signalled.set(true);
-        Thread t = thread;
-        if (t != null) {
-            LockSupport.unpark(t);
+        if (parking) {
+            Thread t = thread;
+            if (t != null) {
+                LockSupport.unpark(t);
+            }
         }
     }
 
@@ -113,12 +118,24 @@ final class MethodScheduler {
 
     private void loop() {
         while (running) {
-            signalled.set(false);
-            boolean worked = drainOnce();
-            if (!worked && !signalled.get() && running) {
-                LockSupport.parkNanos(this, IDLE_PARK_NANOS);
+            if (!drainOnce()) {
+                // Say so before the last look: a sample offered after it finds parking set and unparks us.
+                parking = true;
+                if (running && nothingWaiting()) {
+                    LockSupport.parkNanos(this, IDLE_PARK_NANOS);
+                }
+                parking = false;
             }
         }
+    }
+
+    private boolean nothingWaiting() {
+        for (InputSlot slot : slots) {
+            if (!slot.isEmpty()) {
+                return false;
+            }
+        }
+        return turns.isEmpty();
     }
 
     /** One pass: at most one sample from every input (round robin), then the turns waiting now. */

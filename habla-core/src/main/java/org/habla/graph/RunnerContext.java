@@ -42,7 +42,8 @@ final class RunnerContext implements MethodContext {
     private final ExecutorService backgroundPool;
     private final WorkCount work;
     private final Turns turns;
-    private final Map<Output<?>, OutputPort> ports = new HashMap<>();
+    /** The output ports by their output's declaration index ({@link Output#index()}). */
+    private final OutputPort[] ports;
     private final Map<Input<?>, ChannelDescriptor> channels = new HashMap<>();
     private final Map<Output<?>, ChannelDescriptor> commandChannels = new HashMap<>();
     private volatile boolean stale;
@@ -57,13 +58,14 @@ final class RunnerContext implements MethodContext {
         this.backgroundPool = backgroundPool;
         this.work = work;
         this.turns = turns;
+        ports = new OutputPort[method.outputs().size()];
         for (Output<?> out : method.outputs()) {
-            ports.put(out, new OutputPort(id + "." + out.name()));
+            ports[out.index()] = new OutputPort(id + "." + out.name());
         }
     }
 
     OutputPort port(Output<?> output) {
-        return ports.get(output);
+        return ports[output.index()];
     }
 
     void bindChannel(Input<?> input, ChannelDescriptor channel) {
@@ -130,7 +132,7 @@ final class RunnerContext implements MethodContext {
         if (!output.type().isInstance(value)) {
             throw new IllegalArgumentException(output + " of " + id + " cannot carry " + value.kind().wireName());
         }
-        ports.get(output).publish(value, sourceMicros, stale);
+        ports[output.index()].publish(value, sourceMicros, stale);
     }
 
     @Override
