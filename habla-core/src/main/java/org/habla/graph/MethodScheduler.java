@@ -1,6 +1,8 @@
 package org.habla.graph;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.TimeUnit;
@@ -33,6 +35,15 @@ final class MethodScheduler {
      * sleep (an unpark costs a lock and, for a sleeping thread, a system call).
      */
     private volatile boolean parking;
+    private static final VarHandle PARKING;
+
+    static {
+        try {
+            PARKING = MethodHandles.lookup().findVarHandle(MethodScheduler.class, "parking", boolean.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
     private final RateMeter handled = new RateMeter();
     private final LatencyStats latency = new LatencyStats();
     private volatile MethodHost host;
@@ -101,7 +112,9 @@ final class MethodScheduler {
 
     /** Wakes the thread: a slot has a sample, or a turn is waiting. */
     void wake() {
-        if (parking) {
+        // The first producer to find the thread going to sleep wakes it; the ones after it, while the thread is
+        // still being scheduled, find the flag cleared and leave it (each unpark takes the thread's lock).
+        if (parking && PARKING.compareAndSet(this, true, false)) {
             Thread t = thread;
             if (t != null) {
                 LockSupport.unpark(t);
