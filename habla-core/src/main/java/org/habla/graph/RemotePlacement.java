@@ -35,6 +35,7 @@ final class RemotePlacement {
     /** Silence after which a worker is declared lost (three missed heartbeats). */
     static final long LOST_AFTER_MILLIS = 3 * WorkerProtocol.HEARTBEAT_MILLIS;
 
+    // Package-private where the connection (PlacementSession) reads or counts them.
     final MethodConfig config;
     final String host;
     final int port;
