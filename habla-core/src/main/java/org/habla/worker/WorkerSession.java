@@ -1,3 +1,6 @@
+// Over 300 lines, on purpose: this is one connection's whole life on the worker (TLS, hello, the daemon's proof,
+// the place line, the read loop, the writer with its heartbeat, eviction), and every stage reads and writes the
+// same socket, write lock and eviction flag; what the place line makes is PlaceLine's.
 package org.habla.worker;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
