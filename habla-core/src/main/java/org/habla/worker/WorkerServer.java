@@ -72,6 +72,9 @@ public final class WorkerServer implements AutoCloseable {
                 r -> {
                     Thread t = new Thread(r, "habla-worker-background-" + n.incrementAndGet());
                     t.setDaemon(true);
+                    // Heavy work (models, decoding, segmentation) yields to the method threads; the system
+                    // honours it where the JVM maps priorities (config/daemon.jvm-options, docs/deployment.md).
+                    t.setPriority(Thread.MIN_PRIORITY);
                     return t;
                 });
     }
