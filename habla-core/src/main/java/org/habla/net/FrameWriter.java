@@ -13,8 +13,6 @@ import java.io.OutputStream;
  */
 public final class FrameWriter {
 
-    private static final byte NEWLINE = '\n';
-
     private final OutputStream out;
 
     public FrameWriter(OutputStream out) {
@@ -25,13 +23,18 @@ public final class FrameWriter {
 
     /** Writes a frame without flushing; a frame with a body gets {@code "bytes"} set to its length. */
     public void write(Frame frame) throws IOException {
-        ObjectNode header = frame.header();
-        boolean declares = frame.body().length > 0 || frame.hasBody();
-        if (declares && header.path("bytes").asLong(-1) != frame.body().length) {
-            header = header.deepCopy().put("bytes", frame.body().length);
+        EncodedFrame encoded;
+        try {
+            encoded = EncodedFrame.of(frame);
+        } catch (java.io.UncheckedIOException e) {
+            throw e.getCause();
         }
-        out.write(toLine(header));
-        out.write(NEWLINE);
+        write(encoded);
+    }
+
+    /** Writes a frame encoded before, as it is, without flushing. */
+    void write(EncodedFrame frame) throws IOException {
+        out.write(frame.line());
         if (frame.body().length > 0) {
             out.write(frame.body());
         }
