@@ -9,7 +9,7 @@ import java.util.List;
  * reliability runs of docs/reliability.md with {@code bench/run chaos} (only when named: they take minutes), or
  * its parts {@code hostile} and {@code soak} ({@code --hostile N}, {@code --attack-seconds S},
  * {@code --soak-minutes M}). {@code fanout --clients N --hz N} runs only the fan-out crowd round, with N readers at
- * N Hz.
+ * N Hz ({@code --reader-threads}: a thread per reader instead of one selector).
  */
 public final class Benchmarks {
 
@@ -37,7 +37,8 @@ public final class Benchmarks {
             new ThroughputBench(3, seconds).run();
         }
         if (list.contains("fanout") && (list.contains("--clients") || list.contains("--hz"))) {
-            new FanOutCrowd(option(list, "--clients", 200), option(list, "--hz", 100), 2, seconds).run();
+            new FanOutCrowd(option(list, "--clients", 200), option(list, "--hz", 100), 2, seconds,
+                    list.contains("--reader-threads")).run();
         } else if (all || list.contains("fanout")) {
             new FanOutBench(2, seconds).run();
         }

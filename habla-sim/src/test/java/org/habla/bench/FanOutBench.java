@@ -36,7 +36,7 @@ final class FanOutBench {
             round(rateHz, false);
         }
         round(5_000, true);
-        new FanOutCrowd(200, 100, warmupS, seconds).run();
+        new FanOutCrowd(200, 100, warmupS, seconds, false).run();
     }
 
     private void round(int rateHz, boolean stalled) throws Exception {

@@ -14,50 +14,84 @@ import org.habla.daemon.Daemon;
  * client that connects and never reads. Prints each client's p50 and p99 by its place in the connection
  * order, so a delivery that writes to clients one after another shows as a slope: the first twenty, the
  * middle twenty and the last twenty, the worst client, and how many microseconds a client's p50 grows per
- * client connected before it.
+ * client connected before it. The readers are one selector thread ({@link CrowdReader}), or with
+ * {@code threadPerClient} one {@link SampleClient} thread each.
  */
 final class FanOutCrowd {
 
     private static final int GROUP = 20;
 
+    /** What one reading client counted while recording. */
+    interface Figures {
+        /** Samples received since connecting, recorded or not. */
+        long total();
+
+        Histogram latencyMicros();
+
+        long samples();
+
+        /** Samples the sequence numbers say were never received. */
+        long missing();
+    }
+
     private final int clients;
     private final int rateHz;
     private final int warmupS;
     private final int seconds;
+    private final boolean threadPerClient;
 
-    FanOutCrowd(int clients, int rateHz, int warmupS, int seconds) {
+    FanOutCrowd(int clients, int rateHz, int warmupS, int seconds, boolean threadPerClient) {
         this.clients = clients;
         this.rateHz = rateHz;
         this.warmupS = warmupS;
         this.seconds = seconds;
+        this.threadPerClient = threadPerClient;
     }
 
     void run() throws Exception {
-        System.out.printf("%n(c) fan-out crowd: %d reading clients + 1 that never reads, robot at %d Hz, %d s warm-up, "
-                + "%d s measured%n", clients, rateHz, warmupS, seconds);
+        System.out.printf("%n(c) fan-out crowd: %d reading clients (%s) + 1 that never reads, robot at %d Hz, %d s "
+                + "warm-up, %d s measured%n", clients, threadPerClient ? "a thread each" : "one selector thread",
+                rateHz, warmupS, seconds);
         try (BenchRobot robot = new BenchRobot(1_000_000_000L / rateHz)) {
             Daemon daemon = BenchDaemon.start(robot.port());
-            List<SampleClient> readers = new ArrayList<>();
+            List<SampleClient> threads = new ArrayList<>();
+            CrowdReader crowd = null;
             Socket silent = new Socket();
             try {
                 int port = daemon.port("value");
-                for (int i = 0; i < clients; i++) {
-                    readers.add(new SampleClient(port));
+                List<Figures> readers = new ArrayList<>();
+                if (threadPerClient) {
+                    for (int i = 0; i < clients; i++) {
+                        threads.add(new SampleClient(port));
+                    }
+                    readers.addAll(threads);
+                } else {
+                    crowd = new CrowdReader(port, clients);
+                    readers.addAll(crowd.clients());
                 }
                 silent.setReceiveBufferSize(4096);
                 silent.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), port));
-                for (SampleClient c : readers) {
+                for (Figures c : readers) {
                     LatencyBench.await(() -> c.total() > 0, 20_000, "no sample reached a fan-out client");
                 }
                 Thread.sleep(warmupS * 1000L);
                 long droppedBefore = FanOutBench.dropped(daemon);
-                readers.forEach(SampleClient::startRecording);
+                threads.forEach(SampleClient::startRecording);
+                if (crowd != null) {
+                    crowd.startRecording();
+                }
                 Thread.sleep(seconds * 1000L);
-                readers.forEach(SampleClient::stopRecording);
+                threads.forEach(SampleClient::stopRecording);
+                if (crowd != null) {
+                    crowd.stopRecording();
+                }
                 print(readers, FanOutBench.dropped(daemon) - droppedBefore);
             } finally {
-                for (SampleClient c : readers) {
+                for (SampleClient c : threads) {
                     c.close();
+                }
+                if (crowd != null) {
+                    crowd.close();
                 }
                 silent.close();
                 daemon.close();
@@ -65,7 +99,7 @@ final class FanOutCrowd {
         }
     }
 
-    private void print(List<SampleClient> readers, long dropped) {
+    private void print(List<Figures> readers, long dropped) {
         int n = readers.size();
         long[] p50 = new long[n];
         long[] p99 = new long[n];
