@@ -64,13 +64,14 @@ public final class MethodGraph implements AutoCloseable {
     private boolean started;
 
     private final GraphTap tap;
-    private final WorkCount work = new WorkCount();
+    private final WorkCount work;
     private final boolean replayed;
 
     private MethodGraph(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
             Map<String, List<ChannelDescriptor>> recordedChannels) {
         this.tap = tap;
         this.replayed = recordedChannels != null;
+        this.work = replayed ? new WorkCount() : WorkCount.NONE;
         this.config = config;
         this.topology = new GraphTopology(config);
         this.clock = clock;
@@ -162,7 +163,8 @@ public final class MethodGraph implements AutoCloseable {
 
     /**
      * Waits until every effect of what came in has been handled — no sample waiting or being handled, no turn
-     * or background task under way; false if that took longer than {@code millis}.
+     * or background task under way; false if that took longer than {@code millis}. Only a graph that replays a
+     * recording counts its work; a live one throws {@link IllegalStateException}.
      */
     public boolean awaitIdle(long millis) throws InterruptedException {
         return work.awaitIdle(millis);

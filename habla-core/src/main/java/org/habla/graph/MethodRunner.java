@@ -47,12 +47,18 @@ final class MethodRunner implements MethodContext {
     private final EngineClock clock;
     private final ExecutorService backgroundPool;
     private final List<InputSlot> slots = new ArrayList<>();
-    private final Map<Input<?>, InputSlot> slotByInput = new HashMap<>();
-    private final Map<Output<?>, OutputPort> ports = new HashMap<>();
+    /** The input slots and output ports by their port's declaration index ({@link Input#index()}). */
+    private final InputSlot[] slotByInput;
+    private final OutputPort[] ports;
     private final Map<Input<?>, ChannelDescriptor> channels = new HashMap<>();
     private final Map<Output<?>, ChannelDescriptor> commandChannels = new HashMap<>();
     private final ConcurrentLinkedQueue<Runnable> turns = new ConcurrentLinkedQueue<>();
-    private final AtomicBoolean signalled = new AtomicBoolean();
+    /**
+     * Whether the method's thread is about to park or parked: set before it looks at its slots one last time,
+     * so a producer that finds it false knows the thread will see its sample, and unparks only a thread that
+     * may sleep (an unpark costs a lock and, for a sleeping thread, a system call).
+     */
+    private volatile boolean parking;
     private final AtomicBoolean tickPending = new AtomicBoolean();
     private final RateMeter handled = new RateMeter();
     private final LatencyStats latency = new LatencyStats();
@@ -106,10 +112,11 @@ final class MethodRunner implements MethodContext {
                         }
                     });
             slots.add(slot);
-            slotByInput.put(in, slot);
         }
+        slotByInput = slots.toArray(InputSlot[]::new);
+        ports = new OutputPort[method.outputs().size()];
         for (Output<?> out : method.outputs()) {
-            ports.put(out, new OutputPort(id + "." + out.name()));
+            ports[out.index()] = new OutputPort(id + "." + out.name());
         }
         lifecycle = MethodLifecycle.attach(method, this);
         local = new MethodHost.Local(lifecycle, () -> method.tickPeriod()
@@ -139,12 +146,15 @@ final class MethodRunner implements MethodContext {
         return method;
     }
 
+    /** The slot of one of this method's inputs; null for another method's input. */
     InputSlot slot(Input<?> input) {
-        return slotByInput.get(input);
+        int i = input.index();
+        return i >= 0 && i < slotByInput.length && slotByInput[i].input() == input ? slotByInput[i] : null;
     }
 
+    /** The port of one of this method's outputs (the method checked that it is one of its own). */
     OutputPort port(Output<?> output) {
-        return ports.get(output);
+        return ports[output.index()];
     }
 
     void bindChannel(Input<?> input, ChannelDescriptor channel) {
@@ -290,21 +300,34 @@ final class MethodRunner implements MethodContext {
     }
 
     private void wake() {
-        signalled.set(true);
-        Thread t = thread;
-        if (t != null) {
-            LockSupport.unpark(t);
+        if (parking) {
+            Thread t = thread;
+            if (t != null) {
+                LockSupport.unpark(t);
+            }
         }
     }
 
     private void loop() {
         while (running) {
-            signalled.set(false);
-            boolean worked = drainOnce();
-            if (!worked && !signalled.get() && running) {
-                LockSupport.parkNanos(this, IDLE_PARK_NANOS);
+            if (!drainOnce()) {
+                // Say so before the last look: a sample offered after it finds parking set and unparks us.
+                parking = true;
+                if (running && nothingWaiting()) {
+                    LockSupport.parkNanos(this, IDLE_PARK_NANOS);
+                }
+                parking = false;
             }
         }
+    }
+
+    private boolean nothingWaiting() {
+        for (InputSlot slot : slots) {
+            if (!slot.isEmpty()) {
+                return false;
+            }
+        }
+        return turns.isEmpty();
     }
 
     /** One pass: at most one sample from every input (round robin), then the turns waiting now. */
@@ -379,7 +402,7 @@ final class MethodRunner implements MethodContext {
         if (!output.type().isInstance(value)) {
             throw new IllegalArgumentException(output + " of " + id + " cannot carry " + value.kind().wireName());
         }
-        ports.get(output).publish(value, sourceMicros, stale);
+        ports[output.index()].publish(value, sourceMicros, stale);
     }
 
     /** Where the method's notices to control clients go (the exposed methods whose values reach it). */
@@ -464,7 +487,7 @@ final class MethodRunner implements MethodContext {
         }
         ObjectNode outputs = n.putObject("outputs");
         for (Output<?> out : method.outputs()) {
-            outputs.put(out.name(), ports.get(out).published());
+            outputs.put(out.name(), ports[out.index()].published());
         }
         return n;
     }

@@ -85,6 +85,10 @@ final class RemotePlacement {
                 new ReconnectingLink.StateListener() {
                     @Override
                     public void flip(boolean nowUp, boolean wasUp, Runnable flip) {
+                        if (!nowUp && !fallsBackToLocal()) {
+                            // Before the placement reads down: whoever sees it down or the method stale sees why.
+                            runner.readiness(false, "worker " + host() + " is lost");
+                        }
                         flipUnderStates(nowUp, wasUp, flip);
                     }
 
@@ -218,12 +222,13 @@ final class RemotePlacement {
         });
     }
 
-    /** The worker is lost (or never came): nothing waits for it, and the method runs here if the config says so. */
+    /**
+     * The worker is lost (or never came): nothing waits for it, and the method runs here if the config says so
+     * (without a fallback the method was marked not ready as the placement went down).
+     */
     private void lost() {
         outbound.clear();
-        if (!fallsBackToLocal()) {
-            runner.readiness(false, "worker " + host() + " is lost");
-        } else if (connection.running()) {
+        if (fallsBackToLocal() && connection.running()) {
             runner.fallBackToLocal();
         }
     }
