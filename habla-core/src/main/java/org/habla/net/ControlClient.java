@@ -244,10 +244,7 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
             FrameWriter out = new FrameWriter(socket.getOutputStream());
             List<EncodedFrame> batch;
             while ((batch = outbox.take()) != null) {
-                for (EncodedFrame f : batch) {
-                    out.write(f);
-                }
-                out.flush();
+                out.send(batch);
                 activity.delivered();
                 counters.linesOut.addAndGet(batch.size());
             }
