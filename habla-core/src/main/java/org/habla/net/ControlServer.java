@@ -27,7 +27,7 @@ import org.slf4j.LoggerFactory;
  *
  * <pre>
  *   engine --samples, staleness--&gt; listener (encodes once, only enqueues) --&gt; client 1 outbox --&gt; writer
- *                                                                       \--&gt; client 2 outbox --&gt; writer
+ *                                    (same bytes, rotating order)      \--&gt; client 2 outbox --&gt; writer
  *   acceptor thread --&gt; ConnectionGuard (cap, eviction, deadlines) --&gt; ControlClient per connection
  *                                                                       (virtual threads)
  * </pre>
@@ -325,24 +325,28 @@ public final class ControlServer implements AutoCloseable {
         }
     }
 
-    /** The engine's listener: encodes each sample once and hands it to every client's outbox. */
+    /**
+     * The engine's listener: encodes each sample once and hands the same bytes to every client's outbox, starting
+     * one client further along each time ({@link DeliveryRing}).
+     */
     private final class Fanout implements ControlPoint.Listener {
+
+        private final DeliveryRing ring = new DeliveryRing();
 
         @Override
         public void onSample(Output<?> output, Sample sample) {
             if (clients.isEmpty()) {
                 return;
             }
-            Frame frame;
+            EncodedFrame frame;
             try {
-                frame = SampleCodec.sampleFrame(output.name(), sample);
+                frame = EncodedFrame.of(SampleCodec.sampleFrame(output.name(), sample));
             } catch (RuntimeException e) {
                 LOG.warn("control socket '{}': cannot encode a sample of {}: {}", point.name(), output, e.toString());
                 return;
             }
-            for (ControlClient c : clients) {
-                c.offerSample(output.name(), frame);
-            }
+            String name = output.name();
+            ring.forEach(clients, c -> c.offerSample(name, frame));
         }
 
         @Override
@@ -354,26 +358,26 @@ public final class ControlServer implements AutoCloseable {
                     .put("t", notice.sourceMicros())
                     .put("message", notice.message());
             line.set("detail", notice.detail().json());
-            Frame frame = Frame.of(line);
-            for (ControlClient c : clients) {
-                c.offerNotice(frame);
-            }
+            toAll(Frame.of(line));
         }
 
         @Override
         public void onControl(Frame line) {
-            for (ControlClient c : clients) {
-                c.offerNotice(line);
-            }
+            toAll(line);
         }
 
         @Override
         public void onStale(boolean stale, String why) {
-            Frame notice = Frame.of(JsonNodeFactory.instance.objectNode()
-                    .put("type", "stale").put("stale", stale).put("why", why == null ? "" : why));
-            for (ControlClient c : clients) {
-                c.offerNotice(notice);
+            toAll(Frame.of(JsonNodeFactory.instance.objectNode()
+                    .put("type", "stale").put("stale", stale).put("why", why == null ? "" : why)));
+        }
+
+        private void toAll(Frame notice) {
+            if (clients.isEmpty()) {
+                return;
             }
+            EncodedFrame encoded = EncodedFrame.of(notice);
+            ring.forEach(clients, c -> c.offerNotice(encoded));
         }
     }
 }

@@ -8,7 +8,8 @@ import java.util.List;
  * [vision] [security] [worker] [mqtt] [--seconds N]} (all by default; the timed ones 10 s each after a warm-up), and the
  * reliability runs of docs/reliability.md with {@code bench/run chaos} (only when named: they take minutes), or
  * its parts {@code hostile} and {@code soak} ({@code --hostile N}, {@code --attack-seconds S},
- * {@code --soak-minutes M}).
+ * {@code --soak-minutes M}). {@code fanout --clients N --hz N} runs only the fan-out crowd round, with N readers at
+ * N Hz ({@code --reader-threads}: a thread per reader instead of one selector).
  */
 public final class Benchmarks {
 
@@ -35,7 +36,10 @@ public final class Benchmarks {
         if (all || list.contains("throughput")) {
             new ThroughputBench(3, seconds).run();
         }
-        if (all || list.contains("fanout")) {
+        if (list.contains("fanout") && (list.contains("--clients") || list.contains("--hz"))) {
+            new FanOutCrowd(option(list, "--clients", 200), option(list, "--hz", 100), 2, seconds,
+                    list.contains("--reader-threads")).run();
+        } else if (all || list.contains("fanout")) {
             new FanOutBench(2, seconds).run();
         }
         if (all || list.contains("vision")) {
