@@ -8,8 +8,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.habla.config.HablaConfig;
 import org.habla.config.InterfaceConfig;
 import org.habla.config.MethodConfig;
@@ -69,16 +67,7 @@ public final class MethodGraph implements AutoCloseable {
         GraphTopology topology = new GraphTopology(config);
         this.clock = clock;
         this.startedMicros = clock.nowMicros();
-        AtomicInteger n = new AtomicInteger();
-        this.backgroundPool = Executors.newFixedThreadPool(Math.max(2, Runtime.getRuntime().availableProcessors()),
-                r -> {
-                    Thread t = new Thread(r, "habla-background-" + n.incrementAndGet());
-                    t.setDaemon(true);
-                    // Heavy work (models, decoding, segmentation) yields to the method threads; the system
-                    // honours it where the JVM maps priorities (config/daemon.jvm-options, docs/deployment.md).
-                    t.setPriority(Thread.MIN_PRIORITY);
-                    return t;
-                });
+        this.backgroundPool = BackgroundPool.create("habla-background-");
         for (InterfaceConfig ic : config.interfaces()) {
             InterfaceLink link = new InterfaceLink(ic, drivers.get(ic.id()), clock, linkStates);
             InterfaceTap.attach(link, tap, clock);
