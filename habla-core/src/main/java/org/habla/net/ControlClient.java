@@ -1,3 +1,6 @@
+// Over 300 lines, on purpose: one client's connection (the reader, the writer, eviction with its lingering error
+// line, closing once) shares one socket, outbox and pair of flags; the protocol is ControlProtocol's, the queue
+// Outbox's, the hello ControlHello's.
 package org.habla.net;
 
 import java.io.IOException;
