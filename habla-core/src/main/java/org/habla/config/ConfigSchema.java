@@ -1,15 +1,22 @@
 package org.habla.config;
 
+import static org.habla.config.SchemaNodes.bool;
+import static org.habla.config.SchemaNodes.integer;
+import static org.habla.config.SchemaNodes.object;
+import static org.habla.config.SchemaNodes.props;
+import static org.habla.config.SchemaNodes.ref;
+import static org.habla.config.SchemaNodes.sortKeys;
+import static org.habla.config.SchemaNodes.string;
+import static org.habla.config.SchemaNodes.strings;
+import static org.habla.config.SchemaNodes.when;
+import static org.habla.config.SchemaNodes.withRequired;
+
 import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.SerializationFeature;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.Map;
 import org.habla.method.Layer;
 import org.habla.plugin.DriverProvider;
 import org.habla.plugin.MethodProvider;
@@ -109,10 +116,6 @@ public final class ConfigSchema {
                                         "key", string("Its unencrypted PKCS#8 PEM key, readable by its owner only."))),
                         "workerTrust", string("The PEM certificate workers must present: the worker link speaks "
                                 + "TLS.")));
-    }
-
-    private static ObjectNode bool(boolean dflt, String description) {
-        return NODES.objectNode().put("type", "boolean").put("default", dflt).put("description", description);
     }
 
     private static ObjectNode limits() {
@@ -234,75 +237,5 @@ public final class ConfigSchema {
 
     private static ObjectNode params(DriverProvider<?> provider) {
         return ParamsSchema.of(provider.paramsType()).put("description", provider.description());
-    }
-
-    private static ObjectNode when(String key, String value, ObjectNode thenProperties) {
-        ObjectNode c = NODES.objectNode();
-        ObjectNode condition = withRequired(c.putObject("if"), key);
-        condition.set("properties", props(key, NODES.objectNode().put("const", value)));
-        c.putObject("then").set("properties", thenProperties);
-        return c;
-    }
-
-    private static ObjectNode withRequired(ObjectNode schema, String... keys) {
-        schema.set("required", strings(keys));
-        return schema;
-    }
-
-    private static ObjectNode object(String description) {
-        return NODES.objectNode().put("description", description).put("type", "object")
-                .put("additionalProperties", false);
-    }
-
-    private static ObjectNode string(String description) {
-        return NODES.objectNode().put("description", description).put("type", "string");
-    }
-
-    private static ObjectNode integer(long min, long max, long dflt, String description) {
-        return integer(min, max, description).put("default", dflt);
-    }
-
-    private static ObjectNode integer(long min, long max, String description) {
-        return NODES.objectNode().put("description", description).put("type", "integer")
-                .put("minimum", min).put("maximum", max);
-    }
-
-    private static ObjectNode ref(String def) {
-        return NODES.objectNode().put("$ref", "#/$defs/" + def);
-    }
-
-    private static ObjectNode props(Object... keysAndSchemas) {
-        ObjectNode p = NODES.objectNode();
-        for (int i = 0; i < keysAndSchemas.length; i += 2) {
-            p.set((String) keysAndSchemas[i], (JsonNode) keysAndSchemas[i + 1]);
-        }
-        return p;
-    }
-
-    private static ArrayNode strings(String... values) {
-        return strings(List.of(values));
-    }
-
-    private static ArrayNode strings(java.util.Collection<String> values) {
-        ArrayNode a = NODES.arrayNode();
-        values.forEach(a::add);
-        return a;
-    }
-
-    /** Sorts the keys of every {@code properties} and {@code $defs} object, recursively. */
-    private static void sortKeys(JsonNode node) {
-        if (node instanceof ObjectNode o) {
-            for (String key : List.of("properties", "$defs")) {
-                if (o.get(key) instanceof ObjectNode inner) {
-                    List<Map.Entry<String, JsonNode>> entries = new ArrayList<>(inner.properties());
-                    entries.sort(Map.Entry.comparingByKey());
-                    inner.removeAll();
-                    entries.forEach(e -> inner.set(e.getKey(), e.getValue()));
-                }
-            }
-            o.elements().forEachRemaining(ConfigSchema::sortKeys);
-        } else if (node instanceof ArrayNode a) {
-            a.elements().forEachRemaining(ConfigSchema::sortKeys);
-        }
     }
 }

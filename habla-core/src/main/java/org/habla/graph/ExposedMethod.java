@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.atomic.AtomicLongArray;
 import org.habla.config.Expose;
 import org.habla.method.ControlNotice;
 import org.habla.method.Input;
@@ -26,7 +27,8 @@ final class ExposedMethod implements ControlPoint {
     private final MotionWatchdog watchdog;
     private final GraphTap tap;
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
-    private final Map<String, Long> controlSequences = new HashMap<>();
+    /** The sequence number of the last value written to each input, by the input's declaration index. */
+    private final AtomicLongArray controlSequences;
     private final boolean actuating;
     private final ControlLease lease;
 
@@ -39,6 +41,7 @@ final class ExposedMethod implements ControlPoint {
                 this::writerLeft, line -> listeners.forEach(l -> l.onControl(line))) : null;
         this.expose = expose;
         this.controlInputs = List.copyOf(controlInputs);
+        this.controlSequences = new AtomicLongArray(runner.method().inputs().size());
         this.watchdog = watchdog;
         this.tap = tap;
         for (Output<?> out : runner.method().outputs()) {
@@ -140,10 +143,7 @@ final class ExposedMethod implements ControlPoint {
             throw new Rejected("method_unavailable", "method " + runner.id() + " is " + state
                     + (runner.failure().isEmpty() ? "" : ": " + runner.failure()));
         }
-        long seq;
-        synchronized (controlSequences) {
-            seq = controlSequences.merge(input.name(), 1L, Long::sum);
-        }
+        long seq = controlSequences.incrementAndGet(input.index());
         if (actuating) {
             watchdog.controlWrite();
         }

@@ -1,5 +1,6 @@
 package org.habla.graph;
 
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -14,34 +15,35 @@ public final class GraphReplay {
 
     static final String WATCHDOG_TASK = "watchdog";
 
-    private final Map<String, InterfaceLink> links;
+    private final Map<String, RecordedDriver> drivers;
     private final Map<String, MethodRunner> runners;
-    private final Map<String, Set<String>> upstreamInterfaces;
+    private final Map<String, Set<String>> upstreamInterfaces = new HashMap<>();
     private final List<ExposedMethod> exposed;
     private final GraphTopology topology;
     private final MotionWatchdog watchdog;
     private final WorkCount work;
 
-    GraphReplay(Map<String, InterfaceLink> links, Map<String, MethodRunner> runners,
-            Map<String, Set<String>> upstreamInterfaces, List<ExposedMethod> exposed, GraphTopology topology,
-            MotionWatchdog watchdog, WorkCount work) {
-        this.links = links;
+    GraphReplay(Map<String, RecordedDriver> drivers, Map<String, MethodRunner> runners, List<ExposedMethod> exposed,
+            GraphTopology topology, MotionWatchdog watchdog, WorkCount work) {
+        this.drivers = drivers;
         this.runners = runners;
-        this.upstreamInterfaces = upstreamInterfaces;
+        for (String id : runners.keySet()) {
+            upstreamInterfaces.put(id, topology.upstreamInterfaces(id));
+        }
         this.exposed = exposed;
         this.topology = topology;
         this.watchdog = watchdog;
         this.work = work;
     }
 
-    /** Publishes a recorded reading on an interface channel. */
+    /** Feeds a recorded reading to an interface, through its driver as the robot's session delivered it. */
     public void reading(String interfaceId, String channel, Payload value, long sourceMicros) {
-        link(interfaceId).replayReading(channel, value, sourceMicros);
+        driver(interfaceId).reading(channel, value, sourceMicros);
     }
 
-    /** Sets the state of an interface link, as recorded. */
+    /** Sets the state of an interface link, as recorded, through its driver's connection. */
     public void link(String interfaceId, boolean up) {
-        link(interfaceId).replayLink(up);
+        driver(interfaceId).link(up);
     }
 
     /** Runs recorded periodic work ({@link GraphTap#periodic}'s task names); false for a task this graph lacks. */
@@ -92,11 +94,11 @@ public final class GraphReplay {
         return work.awaitIdle(millis);
     }
 
-    private InterfaceLink link(String interfaceId) {
-        InterfaceLink link = links.get(interfaceId);
-        if (link == null) {
+    private RecordedDriver driver(String interfaceId) {
+        RecordedDriver driver = drivers.get(interfaceId);
+        if (driver == null) {
             throw new IllegalArgumentException("no interface '" + interfaceId + "' in the config");
         }
-        return link;
+        return driver;
     }
 }

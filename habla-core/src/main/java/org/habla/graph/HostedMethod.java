@@ -27,7 +27,7 @@ public final class HostedMethod implements AutoCloseable {
     private boolean started;
 
     public HostedMethod(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool) {
-        this.runner = new MethodRunner(id, type, method, clock, backgroundPool, new WorkCount(), GraphTap.NONE);
+        this.runner = new MethodRunner(id, type, method, clock, backgroundPool, WorkCount.NONE, GraphTap.NONE);
     }
 
     public List<String> inputNames() {

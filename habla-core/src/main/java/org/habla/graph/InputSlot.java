@@ -1,6 +1,5 @@
 package org.habla.graph;
 
-import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.atomic.LongAdder;
@@ -42,7 +41,7 @@ final class InputSlot {
     private final Input<?> input;
     private final Delivery delivery;
     private final AtomicReference<Arrival> latest;
-    private final ArrayBlockingQueue<Arrival> queue;
+    private final SlotQueue<Arrival> queue;
     private final AtomicLong offered = new AtomicLong();
     private final LongAdder dropped = new LongAdder();
     private final LongAdder conflated = new LongAdder();
@@ -70,7 +69,7 @@ final class InputSlot {
             queue = null;
         } else {
             latest = null;
-            queue = new ArrayBlockingQueue<>(delivery.capacity());
+            queue = new SlotQueue<>(delivery.capacity());
         }
     }
 

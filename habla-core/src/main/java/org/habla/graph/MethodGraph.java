@@ -1,39 +1,32 @@
 package org.habla.graph;
 
-import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.atomic.AtomicInteger;
-import org.habla.config.ChannelRef;
 import org.habla.config.HablaConfig;
 import org.habla.config.InterfaceConfig;
 import org.habla.config.MethodConfig;
 import org.habla.config.Reconnect;
-import org.habla.config.Source;
 import org.habla.driver.ChannelDescriptor;
-import org.habla.method.Input;
 import org.habla.method.Method;
 import org.habla.method.Output;
 import org.habla.net.ControlPoint;
-import org.habla.plugin.DriverProvider;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.PluginRegistry;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The running form of a valid config: every method on its runner, every wire connected, every
- * interface link keeping its robot connections, and the motion watchdog. The config was checked
- * by the loader, so building only fails on what cannot be known before (a provider that throws).
+ * The running form of a valid config: every method on its runner, every wire connected ({@link GraphWiring}), every
+ * interface link keeping its robot connections, staleness ({@link GraphStaleness}), the motion watchdog and the
+ * status. The config was checked by the loader, so building only fails on what cannot be known before (a provider
+ * that throws). A graph on a recording is built the same way, its interfaces on recorded drivers, fed by
+ * {@link #replay()}.
  *
  * <pre>
  *   interface ──reading──▶ [sensors &amp; actuators] ──▶ [processing] ──▶ [virtual] ──sample──▶ control socket
@@ -46,49 +39,41 @@ public final class MethodGraph implements AutoCloseable {
     private static final long STOP_WAIT_MILLIS = 2_000;
 
     private final HablaConfig config;
-    private final GraphTopology topology;
     private final GraphReplay replay;
     private final EngineClock clock;
     private final ExecutorService backgroundPool;
     private final Map<String, MethodRunner> runners = new LinkedHashMap<>();
     private final Map<String, InterfaceLink> links = new LinkedHashMap<>();
-    private final Map<String, Set<String>> upstreamInterfaces = new HashMap<>();
-    private final Map<String, Set<Source.Channel>> upstreamChannels = new HashMap<>();
     private final Map<String, RemotePlacement> placements = new LinkedHashMap<>();
-    private final Map<String, Set<String>> upstreamPlacements = new HashMap<>();
     private final LinkStates linkStates = new LinkStates();
-    private final List<ExposedMethod> exposed = new ArrayList<>();
+    private final List<ExposedMethod> exposed;
+    private final GraphStaleness staleness;
     private final MotionWatchdog watchdog;
     private final long startedMicros;
     private AutoCloseable watchdogTicker;
     private boolean started;
-
     private final GraphTap tap;
-    private final WorkCount work = new WorkCount();
-    private final boolean replayed;
+    private final WorkCount work;
 
+    /**
+     * @param drivers  what each interface runs on, by interface id
+     * @param recorded the same drivers when they are a recording's, which {@link #replay()} then feeds; else null
+     */
     private MethodGraph(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
-            Map<String, List<ChannelDescriptor>> recordedChannels) {
+            Map<String, ? extends InterfaceDriver> drivers, Map<String, RecordedDriver> recorded) {
         this.tap = tap;
-        this.replayed = recordedChannels != null;
+        this.work = recorded == null ? WorkCount.NONE : new WorkCount();
         this.config = config;
-        this.topology = new GraphTopology(config);
+        GraphTopology topology = new GraphTopology(config);
         this.clock = clock;
         this.startedMicros = clock.nowMicros();
-        AtomicInteger n = new AtomicInteger();
-        this.backgroundPool = Executors.newFixedThreadPool(Math.max(2, Runtime.getRuntime().availableProcessors()),
-                r -> {
-                    Thread t = new Thread(r, "habla-background-" + n.incrementAndGet());
-                    t.setDaemon(true);
-                    return t;
-                });
+        this.backgroundPool = BackgroundPool.create("habla-background-");
         for (InterfaceConfig ic : config.interfaces()) {
-            org.habla.driver.Driver driver = replayed ? new RecordedDriver(recordedChannels.getOrDefault(ic.id(), List.of()))
-                    : createDriver(registry, ic);
-            links.put(ic.id(), new InterfaceLink(ic, driver, clock, tap, replayed, linkStates));
+            InterfaceLink link = new InterfaceLink(ic, drivers.get(ic.id()), clock, linkStates);
+            InterfaceTap.attach(link, tap, clock);
+            links.put(ic.id(), link);
         }
         this.watchdog = new MotionWatchdog(config.safety().watchdogMs(), clock, List.copyOf(links.values()));
-        this.replay = new GraphReplay(links, runners, upstreamInterfaces, exposed, topology, watchdog, work);
         links.values().forEach(l -> l.watchdog(watchdog));
         for (MethodConfig mc : config.methods()) {
             runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc), clock, backgroundPool,
@@ -105,26 +90,15 @@ public final class MethodGraph implements AutoCloseable {
                 placements.put(mc.id(), p);
             }
         }
-        for (MethodConfig mc : config.methods()) {
-            wire(mc);
-        }
-        routeNotices();
-        for (String id : motionPath()) {
-            runners.get(id).followMotionResets(watchdog::resets);
-        }
-        for (MethodConfig mc : config.methods()) {
-            upstreamInterfaces.put(mc.id(), topology.upstreamInterfaces(mc.id()));
-            upstreamChannels.put(mc.id(), topology.upstreamChannels(mc.id()));
-            Set<String> placedUpstream = new LinkedHashSet<>(topology.feeding(mc.id()));
-            placedUpstream.retainAll(placements.keySet());
-            upstreamPlacements.put(mc.id(), placedUpstream);
-        }
-        linkStates.onChange(this::refreshStale);
+        this.exposed = GraphWiring.wire(config, topology, runners, links, watchdog, tap);
+        this.staleness = new GraphStaleness(topology, runners, links, placements, exposed);
+        linkStates.onChange(staleness::refresh);
+        this.replay = recorded == null ? null : new GraphReplay(recorded, runners, exposed, topology, watchdog, work);
     }
 
     /** Builds the graph of a checked config. Nothing runs until {@link #start()}. */
     public static MethodGraph build(HablaConfig config, PluginRegistry registry, EngineClock clock) {
-        return new MethodGraph(config, registry, clock, GraphTap.NONE, null);
+        return build(config, registry, clock, GraphTap.NONE);
     }
 
     /** Hands an audit log's entry to the graph's tap (a recording). */
@@ -134,17 +108,25 @@ public final class MethodGraph implements AutoCloseable {
 
     /** Builds the graph with a tap that sees everything crossing its edges (for recording). */
     public static MethodGraph build(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap) {
-        return new MethodGraph(config, registry, clock, tap, null);
+        Map<String, InterfaceDriver> drivers = new HashMap<>();
+        for (InterfaceConfig ic : config.interfaces()) {
+            drivers.put(ic.id(), LiveDriver.create(registry, ic));
+        }
+        return new MethodGraph(config, registry, clock, tap, drivers, null);
     }
 
     /**
-     * Builds a graph that replays a recording: every interface has the recorded channels but no connection;
-     * readings and link changes come in through {@link #replay()}, and commands
-     * are absorbed — counted and tapped, never written anywhere.
+     * Builds the same graph on a recording: every interface runs on a {@link RecordedDriver} with the recorded
+     * channels, through which {@link #replay()} feeds the readings and link changes; commands are absorbed —
+     * counted and tapped, never written anywhere.
      */
     public static MethodGraph replaying(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
             Map<String, List<ChannelDescriptor>> channels) {
-        return new MethodGraph(config, registry, clock, tap, Map.copyOf(channels));
+        Map<String, RecordedDriver> drivers = new HashMap<>();
+        for (InterfaceConfig ic : config.interfaces()) {
+            drivers.put(ic.id(), new RecordedDriver(channels.getOrDefault(ic.id(), List.of())));
+        }
+        return new MethodGraph(config, registry, clock, tap, drivers, drivers);
     }
 
     /**
@@ -154,7 +136,7 @@ public final class MethodGraph implements AutoCloseable {
      * @throws IllegalStateException if the graph runs live interfaces, not a recording
      */
     public GraphReplay replay() {
-        if (!replayed) {
+        if (replay == null) {
             throw new IllegalStateException("this graph runs live interfaces, not a recording");
         }
         return replay;
@@ -162,7 +144,8 @@ public final class MethodGraph implements AutoCloseable {
 
     /**
      * Waits until every effect of what came in has been handled — no sample waiting or being handled, no turn
-     * or background task under way; false if that took longer than {@code millis}.
+     * or background task under way; false if that took longer than {@code millis}. Only a graph that replays a
+     * recording counts its work; a live one throws {@link IllegalStateException}.
      */
     public boolean awaitIdle(long millis) throws InterruptedException {
         return work.awaitIdle(millis);
@@ -175,16 +158,9 @@ public final class MethodGraph implements AutoCloseable {
     public static Map<String, List<ChannelDescriptor>> channels(HablaConfig config, PluginRegistry registry) {
         Map<String, List<ChannelDescriptor>> m = new LinkedHashMap<>();
         for (InterfaceConfig ic : config.interfaces()) {
-            m.put(ic.id(), List.copyOf(createDriver(registry, ic).channels()));
+            m.put(ic.id(), List.copyOf(LiveDriver.create(registry, ic).channels()));
         }
         return m;
-    }
-
-    @SuppressWarnings({"unchecked", "rawtypes"})
-    private static org.habla.driver.Driver createDriver(PluginRegistry registry, InterfaceConfig ic) {
-        DriverProvider provider = registry.driver(ic.driver()).orElseThrow(() ->
-                new IllegalStateException("no driver type '" + ic.driver() + "'"));
-        return provider.create(ic.address(), ic.params());
     }
 
     @SuppressWarnings({"unchecked", "rawtypes"})
@@ -194,121 +170,13 @@ public final class MethodGraph implements AutoCloseable {
         return provider.create(mc.layer(), mc.params());
     }
 
-    private void wire(MethodConfig mc) {
-        MethodRunner runner = runners.get(mc.id());
-        Map<String, Source> controlSources = new HashMap<>();
-        for (Map.Entry<String, Source> e : mc.inputs().entrySet()) {
-            Input<?> input = runner.method().input(e.getKey()).orElseThrow();
-            InputSlot slot = runner.slot(input);
-            switch (e.getValue()) {
-                case Source.MethodOutput mo -> {
-                    MethodRunner from = runners.get(mo.methodId());
-                    Output<?> out = from.method().output(mo.output()).orElseThrow();
-                    from.port(out).subscribe(slot::offer);
-                }
-                case Source.Channel ch -> {
-                    InterfaceLink link = links.get(ch.interfaceId());
-                    link.reading(ch.channel()).subscribe(slot::offer);
-                    runner.bindChannel(input, link.channel(ch.channel()));
-                }
-                case Source.Control c -> controlSources.put(e.getKey(), c);
-            }
-        }
-        for (Map.Entry<String, ChannelRef> e : mc.commands().entrySet()) {
-            Output<?> out = runner.method().output(e.getKey()).orElseThrow();
-            InterfaceLink link = links.get(e.getValue().interfaceId());
-            String channel = e.getValue().channel();
-            ChannelDescriptor descriptor = link.channel(channel);
-            if (descriptor != null) {
-                runner.bindCommandChannel(out, descriptor);
-            }
-            runner.port(out).subscribe(sample -> link.command(channel, sample));
-        }
-        mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner,
-                x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap, topology.actuates(mc.id()))));
-    }
-
-    /** Sends what each method tells control clients to the sockets whose values reach it. */
-    private void routeNotices() {
-        for (MethodRunner r : runners.values()) {
-            List<ExposedMethod> told = exposed.stream().filter(x -> !x.controlInputs().isEmpty()
-                    && topology.downstream(x.methodId()).contains(r.id())).toList();
-            if (!told.isEmpty()) {
-                r.tellControlVia(notice -> told.forEach(x -> x.notice(notice)));
-            }
-        }
-    }
-
-    /**
-     * The methods whose outputs lead, through other methods or directly, to a motion command channel: the ones
-     * that must forget their motion when the watchdog stops the robot.
-     */
-    private Set<String> motionPath() {
-        Set<String> found = new LinkedHashSet<>();
-        for (MethodConfig mc : config.methods()) {
-            boolean drives = mc.commands().values().stream().anyMatch(ref -> {
-                ChannelDescriptor d = links.get(ref.interfaceId()).channel(ref.channel());
-                return d != null && d.motion();
-            });
-            if (drives) {
-                topology.feeding(mc.id(), found);
-            }
-        }
-        return found;
-    }
-
-    /**
-     * Marks stale every method that depends on an interface that is down or on a worker that is lost
-     * without a local fallback, and fresh again the others. Runs under the link-state lock, as part of the
-     * change that caused it.
-     */
-    private void refreshStale() {
-        for (MethodRunner r : runners.values()) {
-            String why = staleness(r.id());
-            boolean stale = why != null;
-            if (r.stale() != stale) {
-                r.stale(stale);
-                for (ExposedMethod x : exposed) {
-                    if (x.methodId().equals(r.id())) {
-                        x.staleChanged(stale, stale ? why : "all links up");
-                    }
-                }
-            }
-        }
-    }
-
-    /** Why a method's outputs are stale now, or null. */
-    private String staleness(String methodId) {
-        for (String id : upstreamInterfaces.getOrDefault(methodId, Set.of())) {
-            if (!links.get(id).up()) {
-                return "interface " + id + " is down";
-            }
-        }
-        for (Source.Channel ch : upstreamChannels.getOrDefault(methodId, Set.of())) {
-            String why = links.get(ch.interfaceId()).unavailable(ch.channel());
-            if (why != null) {
-                return "the device of @" + ch.interfaceId() + "." + ch.channel() + " is unavailable: " + why;
-            }
-        }
-        for (String id : upstreamPlacements.getOrDefault(methodId, Set.of())) {
-            RemotePlacement p = placements.get(id);
-            if (!p.healthy()) {
-                return "worker " + p.host() + " of method " + id + " is lost";
-            }
-        }
-        return null;
-    }
-
     /** Starts every method, then every link, then the watchdog. */
     public synchronized void start() {
         if (started) {
             throw new IllegalStateException("the graph is already started");
         }
         started = true;
-        // Until a link reports up, what depends on it is stale.
-        for (MethodRunner r : runners.values()) {
-            r.stale(staleness(r.id()) != null);
-        }
+        staleness.markAll();
         runners.values().forEach(MethodRunner::start);
         links.values().forEach(InterfaceLink::start);
         placements.values().forEach(RemotePlacement::start);
@@ -388,17 +256,9 @@ public final class MethodGraph implements AutoCloseable {
         ObjectNode n = JsonNodeFactory.instance.objectNode();
         n.put("system", config.system());
         n.put("uptimeS", (now - startedMicros) / 1e6);
-        ObjectNode w = n.putObject("watchdog");
-        w.put("timeoutMs", watchdog.timeoutMillis());
-        w.put("tripped", watchdog.tripped());
-        w.put("trips", watchdog.trips());
-        if (!watchdog.lastReason().isEmpty()) {
-            w.put("lastReason", watchdog.lastReason());
-        }
-        ArrayNode ifs = n.putArray("interfaces");
-        links.values().forEach(l -> ifs.add(l.status()));
-        ArrayNode ms = n.putArray("methods");
-        runners.values().forEach(r -> ms.add(r.status(now)));
+        n.set("watchdog", watchdog.status());
+        links.values().stream().map(InterfaceLink::status).forEach(n.putArray("interfaces")::add);
+        runners.values().stream().map(r -> r.status(now)).forEach(n.putArray("methods")::add);
         return n;
     }
 

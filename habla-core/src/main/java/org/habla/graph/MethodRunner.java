@@ -3,17 +3,10 @@ package org.habla.graph;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Optional;
-import java.util.concurrent.Callable;
-import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.RejectedExecutionException;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
-import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 import java.util.function.LongSupplier;
 import org.habla.driver.ChannelDescriptor;
@@ -21,56 +14,39 @@ import org.habla.method.ControlNotice;
 import org.habla.method.Delivery;
 import org.habla.method.Input;
 import org.habla.method.Method;
-import org.habla.method.MethodContext;
 import org.habla.method.MethodLifecycle;
 import org.habla.method.MethodState;
 import org.habla.method.Output;
 import org.habla.sample.Payload;
-import org.habla.sample.Sample;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
  * Runs one method on a thread of its own: waits for samples in its input slots, ticks and
  * background results, and hands them to the method one at a time. Because every method has its
- * own thread, a slow method (speech, vision) never holds up a light one.
+ * own thread, a slow method (speech, vision) never holds up a light one. The thread and the order of
+ * messages are its {@link MethodScheduler}'s, what the method sees of the engine its {@link RunnerContext}'s;
+ * the runner puts them together, ticks the method, and says in the status how it is doing.
  */
-final class MethodRunner implements MethodContext {
+final class MethodRunner {
 
     private static final Logger LOG = LoggerFactory.getLogger(MethodRunner.class);
-    private static final long IDLE_PARK_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
 
     private final String id;
     private final String type;
     private final Method method;
     private final MethodLifecycle lifecycle;
     private final EngineClock clock;
-    private final ExecutorService backgroundPool;
     private final List<InputSlot> slots = new ArrayList<>();
-    private final Map<Input<?>, InputSlot> slotByInput = new HashMap<>();
-    private final Map<Output<?>, OutputPort> ports = new HashMap<>();
-    private final Map<Input<?>, ChannelDescriptor> channels = new HashMap<>();
-    private final Map<Output<?>, ChannelDescriptor> commandChannels = new HashMap<>();
-    private final ConcurrentLinkedQueue<Runnable> turns = new ConcurrentLinkedQueue<>();
-    private final AtomicBoolean signalled = new AtomicBoolean();
+    /** The input slots by their input's declaration index ({@link Input#index()}). */
+    private final InputSlot[] slotByInput;
     private final AtomicBoolean tickPending = new AtomicBoolean();
-    private final RateMeter handled = new RateMeter();
-    private final LatencyStats latency = new LatencyStats();
-    private volatile boolean running;
-    private volatile boolean stale;
-    private volatile boolean ready = true;
-    private volatile String readinessDetail = "";
     private AutoCloseable ticker;
-    private Thread thread;
     private final MethodHost.Local local;
-    private volatile MethodHost host;
-    private volatile Consumer<ControlNotice> controlNotices = n -> { };
-    private LongSupplier motionResets;
-    private long motionResetsSeen;
+    private final RunnerContext context;
+    private final MethodScheduler scheduler;
 
     static final String TICK_PREFIX = "tick:";
-
-    private final WorkCount work;
     private final GraphTap tap;
 
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
@@ -84,13 +60,11 @@ final class MethodRunner implements MethodContext {
      */
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
             WorkCount work, GraphTap tap, java.util.Set<String> latestInputs) {
-        this.work = work;
         this.tap = tap;
         this.id = id;
         this.type = type;
         this.method = method;
         this.clock = clock;
-        this.backgroundPool = backgroundPool;
         for (Input<?> in : method.inputs()) {
             String input = in.name();
             InputSlot slot = new InputSlot(in, latestInputs.contains(input) ? Delivery.latest() : in.delivery(),
@@ -106,15 +80,23 @@ final class MethodRunner implements MethodContext {
                         }
                     });
             slots.add(slot);
-            slotByInput.put(in, slot);
         }
-        for (Output<?> out : method.outputs()) {
-            ports.put(out, new OutputPort(id + "." + out.name()));
-        }
-        lifecycle = MethodLifecycle.attach(method, this);
+        slotByInput = slots.toArray(InputSlot[]::new);
+        context = new RunnerContext(id, method, clock, backgroundPool, work, new RunnerContext.Turns() {
+            @Override
+            public void done(String what, MethodLifecycle.ThrowingRunnable result) {
+                scheduler.turn(() -> lifecycle.runTurn(what, result));
+            }
+
+            @Override
+            public void failed(String what, Throwable cause) {
+                scheduler.turn(() -> lifecycle.fail(what, cause));
+            }
+        });
+        lifecycle = MethodLifecycle.attach(method, context);
         local = new MethodHost.Local(lifecycle, () -> method.tickPeriod()
                 .ifPresent(p -> ticker = clock.every(p.toNanos() / 1_000, this::requestTick)));
-        host = local;
+        scheduler = new MethodScheduler(id, slots, clock, work, local);
     }
 
     String id() {
@@ -139,42 +121,41 @@ final class MethodRunner implements MethodContext {
         return method;
     }
 
+    /** The slot of one of this method's inputs; null for another method's input. */
     InputSlot slot(Input<?> input) {
-        return slotByInput.get(input);
+        int i = input.index();
+        return i >= 0 && i < slotByInput.length && slotByInput[i].input() == input ? slotByInput[i] : null;
     }
 
+    /** The port of one of this method's outputs (the method checked that it is one of its own). */
     OutputPort port(Output<?> output) {
-        return ports.get(output);
+        return context.port(output);
     }
 
     void bindChannel(Input<?> input, ChannelDescriptor channel) {
-        channels.put(input, channel);
+        context.bindChannel(input, channel);
     }
 
     void bindCommandChannel(Output<?> output, ChannelDescriptor channel) {
-        commandChannels.put(output, channel);
+        context.bindCommandChannel(output, channel);
     }
 
     /** The interface channels the inputs read, by input name (for a worker running the method). */
     Map<String, ChannelDescriptor> channelsByInput() {
-        Map<String, ChannelDescriptor> m = new java.util.LinkedHashMap<>();
-        channels.forEach((in, c) -> m.put(in.name(), c));
-        return m;
+        return context.channelsByInput();
     }
 
     /** The interface channels the outputs write, by output name (for a worker running the method). */
     Map<String, ChannelDescriptor> commandChannelsByOutput() {
-        Map<String, ChannelDescriptor> m = new java.util.LinkedHashMap<>();
-        commandChannels.forEach((out, c) -> m.put(out.name(), c));
-        return m;
+        return context.commandChannelsByOutput();
     }
 
     void stale(boolean isStale) {
-        stale = isStale;
+        context.stale(isStale);
     }
 
     boolean stale() {
-        return stale;
+        return context.stale();
     }
 
     /**
@@ -183,8 +164,7 @@ final class MethodRunner implements MethodContext {
      * before {@link #start}.
      */
     void followMotionResets(LongSupplier resets) {
-        this.motionResets = resets;
-        this.motionResetsSeen = resets.getAsLong();
+        scheduler.followMotionResets(resets);
     }
 
     /**
@@ -193,56 +173,57 @@ final class MethodRunner implements MethodContext {
      * Call before {@link #start}.
      */
     void placeOn(RemotePlacement remote) {
-        this.host = new MethodHost.OnWorker(id, remote, local);
+        scheduler.host(new MethodHost.OnWorker(id, remote, local));
         if (!remote.fallsBackToLocal()) {
-            ready = false;
-            readinessDetail = "waiting for worker " + remote.host();
+            context.startNotReady("waiting for worker " + remote.host());
         }
     }
 
     boolean ready() {
-        return ready;
+        return context.ready();
     }
 
     String readinessDetail() {
-        return readinessDetail;
+        return context.readinessDetail();
+    }
+
+    /** The method's readiness, as its worker tells it (see {@link RunnerContext#readiness}). */
+    void readiness(boolean isReady, String detail) {
+        context.readiness(isReady, detail);
+    }
+
+    long nowMicros() {
+        return clock.nowMicros();
+    }
+
+    /** Where the method's notices to control clients go (the exposed methods whose values reach it). */
+    void tellControlVia(Consumer<ControlNotice> sink) {
+        context.tellControlVia(sink);
     }
 
     /** Starts the method and its thread; a method placed on a worker starts here only when it must run locally. */
     void start() {
-        running = true;
-        thread = new Thread(this::loop, "habla-method-" + id);
-        thread.setDaemon(true);
-        host.start();
-        thread.start();
+        scheduler.start();
+    }
+
+    /** A slot has a sample: wakes the method's thread. */
+    private void wake() {
+        scheduler.wake();
     }
 
     /** From the placement, on any thread: the worker was lost and the fallback is to run here. */
     void fallBackToLocal() {
-        addTurn(() -> {
-            if (host instanceof MethodHost.OnWorker w) {
+        scheduler.turn(() -> {
+            if (scheduler.host() instanceof MethodHost.OnWorker w) {
                 w.fallBack();
             }
         });
-        wake();
     }
 
     /** Stops the thread, then the method. Waits at most {@code waitMillis} for the current turn. */
     void stop(long waitMillis) {
-        running = false;
         closeTicker();
-        if (thread != null) {
-            LockSupport.unpark(thread);
-            try {
-                thread.join(waitMillis);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-            if (thread.isAlive()) {
-                LOG.warn("method {} is still busy after {} ms; stopping it anyway", id, waitMillis);
-            }
-        }
-        host.stop();
+        scheduler.stop(waitMillis);
     }
 
     /**
@@ -259,7 +240,7 @@ final class MethodRunner implements MethodContext {
 
     /** A sample the method published on its worker, published here as if the method had emitted it. */
     void publishFromWorker(Output<?> output, Payload value, long sourceMicros) {
-        emit(output, value, sourceMicros);
+        context.emit(output, value, sourceMicros);
     }
 
     private void closeTicker() {
@@ -275,165 +256,13 @@ final class MethodRunner implements MethodContext {
     /** Asks for a tick; one already waiting takes this one's place (ticks never pile up behind a busy method). */
     void requestTick() {
         if (tickPending.compareAndSet(false, true)) {
-            addTurn(() -> {
+            scheduler.turn(() -> {
                 tickPending.set(false);
                 tap.periodic(TICK_PREFIX + id, clock.nowMicros(), consumed());
-                host.tick(clock.nowMicros());
+                scheduler.host().tick(clock.nowMicros());
             });
-            wake();
         }
     }
-
-    private void addTurn(Runnable turn) {
-        work.begin();
-        turns.add(turn);
-    }
-
-    private void wake() {
-        signalled.set(true);
-        Thread t = thread;
-        if (t != null) {
-            LockSupport.unpark(t);
-        }
-    }
-
-    private void loop() {
-        while (running) {
-            signalled.set(false);
-            boolean worked = drainOnce();
-            if (!worked && !signalled.get() && running) {
-                LockSupport.parkNanos(this, IDLE_PARK_NANOS);
-            }
-        }
-    }
-
-    /** One pass: at most one sample from every input (round robin), then the turns waiting now. */
-    private boolean drainOnce() {
-        boolean worked = false;
-        for (InputSlot slot : slots) {
-            Sample s = slot.poll();
-            if (s != null) {
-                worked = true;
-                catchUpMotionReset();
-                long now = clock.nowMicros();
-                latency.record(now - s.sourceMicros());
-                handled.mark(now);
-                try {
-                    route(slot.input(), s);
-                } finally {
-                    work.end();
-                }
-            }
-        }
-        for (int n = turns.size(); n > 0; n--) {
-            Runnable turn = turns.poll();
-            if (turn == null) {
-                break;
-            }
-            worked = true;
-            catchUpMotionReset();
-            try {
-                turn.run();
-            } finally {
-                work.end();
-            }
-        }
-        return worked;
-    }
-
-    /**
-     * Tells the method of a motion reset it has not heard of yet. Read after the message was taken, so a message
-     * that came after a reset (a value written once control is back) always finds the reset told first.
-     */
-    private void catchUpMotionReset() {
-        LongSupplier resets = motionResets;
-        if (resets == null) {
-            return;
-        }
-        long now = resets.getAsLong();
-        if (now != motionResetsSeen) {
-            motionResetsSeen = now;
-            host.motionStopped();
-        }
-    }
-
-    /** Hands a sample to where the method runs. */
-    private void route(Input<?> input, Sample s) {
-        host.deliver(input, s);
-    }
-
-    // ------------------------------------------------------------------ MethodContext
-
-    @Override
-    public String methodId() {
-        return id;
-    }
-
-    @Override
-    public long nowMicros() {
-        return clock.nowMicros();
-    }
-
-    @Override
-    public void emit(Output<?> output, Payload value, long sourceMicros) {
-        if (!output.type().isInstance(value)) {
-            throw new IllegalArgumentException(output + " of " + id + " cannot carry " + value.kind().wireName());
-        }
-        ports.get(output).publish(value, sourceMicros, stale);
-    }
-
-    /** Where the method's notices to control clients go (the exposed methods whose values reach it). */
-    void tellControlVia(Consumer<ControlNotice> sink) {
-        controlNotices = sink;
-    }
-
-    @Override
-    public void tellControl(ControlNotice notice) {
-        controlNotices.accept(notice);
-    }
-
-    @Override
-    public Optional<ChannelDescriptor> channelOf(Input<?> input) {
-        return Optional.ofNullable(channels.get(input));
-    }
-
-    @Override
-    public Optional<ChannelDescriptor> commandChannelOf(Output<?> output) {
-        return Optional.ofNullable(commandChannels.get(output));
-    }
-
-    @Override
-    public void readiness(boolean isReady, String detail) {
-        if (isReady != ready) {
-            LOG.info("method {} is {}{}", id, isReady ? "ready" : "not ready",
-                    detail == null || detail.isEmpty() ? "" : ": " + detail);
-        }
-        ready = isReady;
-        readinessDetail = detail == null ? "" : detail;
-    }
-
-    @Override
-    public <T> void background(String what, Callable<T> task, Consumer<T> done) {
-        work.begin();
-        try {
-            backgroundPool.execute(() -> {
-                try {
-                    T result = task.call();
-                    addTurn(() -> lifecycle.runTurn(what, () -> done.accept(result)));
-                } catch (Exception | LinkageError e) {
-                    addTurn(() -> lifecycle.fail(what, e));
-                } finally {
-                    work.end();
-                }
-                wake();
-            });
-        } catch (RejectedExecutionException e) {
-            work.end();
-            LOG.debug("background work '{}' of {} refused: the engine is stopping", what, id);
-        }
-    }
-
-    // ------------------------------------------------------------------ status
 
     ObjectNode status(long nowMicros) {
         ObjectNode n = JsonNodeFactory.instance.objectNode();
@@ -444,15 +273,13 @@ final class MethodRunner implements MethodContext {
         if (!lifecycle.failure().isEmpty()) {
             n.put("failure", lifecycle.failure());
         }
-        n.put("ready", ready);
-        if (!readinessDetail.isEmpty()) {
-            n.put("readiness", readinessDetail);
+        n.put("ready", context.ready());
+        if (!context.readinessDetail().isEmpty()) {
+            n.put("readiness", context.readinessDetail());
         }
-        n.put("stale", stale);
-        host.status(n);
-        n.put("handled", handled.total());
-        n.put("handledPerS", handled.perSecond(nowMicros));
-        n.set("latency", latency.snapshot());
+        n.put("stale", context.stale());
+        scheduler.host().status(n);
+        scheduler.statusTo(n, nowMicros);
         ObjectNode inputs = n.putObject("inputs");
         for (InputSlot slot : slots) {
             ObjectNode i = inputs.putObject(slot.input().name());
@@ -464,7 +291,7 @@ final class MethodRunner implements MethodContext {
         }
         ObjectNode outputs = n.putObject("outputs");
         for (Output<?> out : method.outputs()) {
-            outputs.put(out.name(), ports.get(out).published());
+            outputs.put(out.name(), context.port(out).published());
         }
         return n;
     }

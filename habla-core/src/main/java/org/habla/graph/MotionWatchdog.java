@@ -1,5 +1,7 @@
 package org.habla.graph;
 
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicLong;
 import org.slf4j.Logger;
@@ -81,19 +83,20 @@ final class MotionWatchdog {
         return !tripped;
     }
 
-    boolean tripped() {
-        return tripped;
-    }
-
-    long trips() {
-        return trips.get();
-    }
-
-    String lastReason() {
-        return lastReason;
-    }
-
     long timeoutMillis() {
         return timeoutMicros / 1_000;
+    }
+
+    /** The watchdog's part of the graph's status: its timeout, whether it has tripped, how often and why last. */
+    ObjectNode status() {
+        ObjectNode w = JsonNodeFactory.instance.objectNode();
+        w.put("timeoutMs", timeoutMillis());
+        w.put("tripped", tripped);
+        w.put("trips", trips.get());
+        String why = lastReason;
+        if (!why.isEmpty()) {
+            w.put("lastReason", why);
+        }
+        return w;
     }
 }

@@ -18,6 +18,8 @@ final class OutputPort {
     private final List<Consumer<Sample>> subscribers = new CopyOnWriteArrayList<>();
     private final AtomicLong sequence = new AtomicLong();
     private volatile Sample latest;
+    /** Sees every sample before the subscribers do; set while the graph is built, before anything publishes. */
+    private Consumer<Sample> first = s -> { };
 
     OutputPort(String producer) {
         this.producer = producer;
@@ -35,16 +37,16 @@ final class OutputPort {
         subscribers.remove(subscriber);
     }
 
-    /** Makes a sample of {@code payload} and hands it to every subscriber. */
-    Sample publish(Payload payload, long sourceMicros, boolean stale) {
-        return publish(payload, sourceMicros, stale, s -> { });
+    /**
+     * Has {@code tap} (a recording's, at the graph's edge) see every sample before any subscriber does, so the
+     * sample is written down before any of its effects can be. Called while the graph is built.
+     */
+    void tapFirst(Consumer<Sample> tap) {
+        this.first = tap;
     }
 
-    /**
-     * Makes a sample, shows it to {@code first} (a recording's tap, so the reading is written down before any
-     * of its effects can be), then hands it to every subscriber.
-     */
-    Sample publish(Payload payload, long sourceMicros, boolean stale, Consumer<Sample> first) {
+    /** Makes a sample of {@code payload}, shows it to the tap, then hands it to every subscriber. */
+    Sample publish(Payload payload, long sourceMicros, boolean stale) {
         Sample s = new Sample(payload, producer, sequence.incrementAndGet(), sourceMicros, stale);
         first.accept(s);
         latest = s;

@@ -150,9 +150,15 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
         this.listener = listener;
     }
 
+    /**
+     * Starts the link's thread: a platform thread, because a daemon has a handful of links and every reading
+     * waits on this thread's blocking read — a platform thread is woken by the kernel when bytes arrive, a
+     * virtual one only after the JDK's poller has noticed them and handed it to a carrier (two more hand-offs
+     * on every sample's way in).
+     */
     void start() {
         running = true;
-        thread = Thread.ofVirtual().name(threadName).start(this::loop);
+        thread = Thread.ofPlatform().daemon().name(threadName).start(this::loop);
     }
 
     /** Says goodbye if up, closes the connection and stops reconnecting; waits a bounded time for the thread. */

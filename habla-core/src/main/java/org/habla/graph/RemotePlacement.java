@@ -2,27 +2,15 @@ package org.habla.graph;
 
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import java.io.BufferedInputStream;
-import java.io.IOException;
-import java.net.InetSocketAddress;
-import java.net.Socket;
 import java.util.concurrent.ArrayBlockingQueue;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import org.habla.config.Fallback;
 import org.habla.config.Limits;
 import org.habla.config.MethodConfig;
-import org.habla.config.ParamsJson;
 import org.habla.config.Reconnect;
 import org.habla.method.Input;
-import org.habla.method.Output;
 import org.habla.net.Frame;
-import org.habla.net.FrameException;
-import org.habla.net.FrameReader;
-import org.habla.net.FrameWriter;
-import org.habla.net.SampleCodec;
 import org.habla.net.WorkerProtocol;
-import org.habla.sample.Payload;
 import org.habla.sample.Sample;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -47,20 +35,21 @@ final class RemotePlacement {
     /** Silence after which a worker is declared lost (three missed heartbeats). */
     static final long LOST_AFTER_MILLIS = 3 * WorkerProtocol.HEARTBEAT_MILLIS;
 
-    private final MethodConfig config;
-    private final String host;
-    private final int port;
-    private final MethodRunner runner;
-    private final Limits limits;
-    private final Reconnect reconnect;
-    private final org.habla.security.WorkerLink link;
+    // Package-private where the connection (PlacementSession) reads or counts them.
+    final MethodConfig config;
+    final String host;
+    final int port;
+    final MethodRunner runner;
+    final Limits limits;
+    final Reconnect reconnect;
+    final org.habla.security.WorkerLink link;
     private final LinkStates states;
-    private final ReconnectingLink<WorkerSession> connection;
-    private final ArrayBlockingQueue<Frame> outbound = new ArrayBlockingQueue<>(QUEUE_SAMPLES);
-    private final AtomicLong sent = new AtomicLong();
-    private final AtomicLong received = new AtomicLong();
+    final ReconnectingLink<PlacementSession> connection;
+    final ArrayBlockingQueue<Frame> outbound = new ArrayBlockingQueue<>(QUEUE_SAMPLES);
+    final AtomicLong sent = new AtomicLong();
+    final AtomicLong received = new AtomicLong();
     private final AtomicLong dropped = new AtomicLong();
-    private final AtomicLong badLines = new AtomicLong();
+    final AtomicLong badLines = new AtomicLong();
 
     RemotePlacement(MethodConfig config, MethodRunner runner, Limits limits, Reconnect reconnect, LinkStates states) {
         this(config, runner, limits, reconnect, states, org.habla.security.WorkerLink.PLAIN);
@@ -80,11 +69,15 @@ final class RemotePlacement {
         this.limits = limits;
         this.reconnect = reconnect;
         this.states = states;
-        this.connection = new ReconnectingLink<>("habla-worker-link-" + config.id(), reconnect, WorkerSession::new,
+        this.connection = new ReconnectingLink<>("habla-worker-link-" + config.id(), reconnect, () -> new PlacementSession(this),
                 new OutageLog(LOG, "worker " + config.host().orElseThrow() + " of method " + config.id()),
                 new ReconnectingLink.StateListener() {
                     @Override
                     public void flip(boolean nowUp, boolean wasUp, Runnable flip) {
+                        if (!nowUp && !fallsBackToLocal()) {
+                            // Before the placement reads down: whoever sees it down or the method stale sees why.
+                            runner.readiness(false, "worker " + host() + " is lost");
+                        }
                         flipUnderStates(nowUp, wasUp, flip);
                     }
 
@@ -140,74 +133,6 @@ final class RemotePlacement {
         return connection.backOff();
     }
 
-    private static Frame next(FrameReader reader) throws IOException {
-        Frame f = reader.read();
-        if (f == null) {
-            throw new IOException("the worker closed the connection");
-        }
-        return f;
-    }
-
-    private void take(Frame f) {
-        switch (f.type()) {
-            case "sample" -> {
-                String name = f.header().path("output").asText("");
-                Output<?> out = runner.method().output(name).orElse(null);
-                if (out == null) {
-                    badLine("a sample of an unknown output '" + name + "'");
-                    return;
-                }
-                try {
-                    Payload value = SampleCodec.value(f, out.kind());
-                    received.incrementAndGet();
-                    runner.publishFromWorker(out, value, f.header().path("t").asLong(0));
-                } catch (FrameException | RuntimeException e) {
-                    badLine(e.getMessage());
-                }
-            }
-            case "heartbeat" -> {
-                boolean ready = f.header().path("ready").asBoolean(true);
-                String detail = f.header().path("readiness").asText("");
-                runner.readiness(ready, detail.isEmpty() ? "" : "on worker " + host() + ": " + detail);
-            }
-            case "error" -> badLine(f.header().path("code").asText("") + ": " + f.header().path("message").asText(""));
-            default -> badLine("an unexpected line of type '" + f.type() + "'");
-        }
-    }
-
-    private void badLine(String what) {
-        long n = badLines.incrementAndGet();
-        if (n == 1 || n % 1_000 == 0) {
-            LOG.warn("worker {} of method {}: {} ({} so far)", host(), config.id(), what, n);
-        }
-    }
-
-    private void writeLoop(FrameWriter writer, Socket s) {
-        try {
-            while (connection.running()) {
-                Frame f = outbound.poll(250, TimeUnit.MILLISECONDS);
-                if (f == null) {
-                    continue;
-                }
-                do {
-                    writer.write(f);
-                    sent.incrementAndGet();
-                    f = outbound.poll();
-                } while (f != null);
-                writer.flush();
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        } catch (IOException e) {
-            LOG.debug("writing to worker {} failed: {}", host(), e.toString());
-            try {
-                s.close();
-            } catch (IOException ignored) {
-                // the reader notices the closed socket
-            }
-        }
-    }
-
     /** Makes the placement up or down under the link-state lock, and brings staleness up to date with it. */
     private void flipUnderStates(boolean nowUp, boolean wasUp, Runnable flip) {
         states.locked(() -> {
@@ -218,12 +143,13 @@ final class RemotePlacement {
         });
     }
 
-    /** The worker is lost (or never came): nothing waits for it, and the method runs here if the config says so. */
+    /**
+     * The worker is lost (or never came): nothing waits for it, and the method runs here if the config says so
+     * (without a fallback the method was marked not ready as the placement went down).
+     */
     private void lost() {
         outbound.clear();
-        if (!fallsBackToLocal()) {
-            runner.readiness(false, "worker " + host() + " is lost");
-        } else if (connection.running()) {
+        if (fallsBackToLocal() && connection.running()) {
             runner.fallBackToLocal();
         }
     }
@@ -243,83 +169,5 @@ final class RemotePlacement {
             n.put("lastError", connection.lastError());
         }
         return n;
-    }
-
-    /** One connection to the worker, over which the method is placed and its samples go both ways. */
-    private final class WorkerSession implements ReconnectingLink.Session {
-
-        private volatile Socket socket;
-        private volatile boolean closed;
-        private volatile Thread writerThread;
-        private FrameReader reader;
-
-        @Override
-        public void open() throws IOException {
-            Socket plain = LinkSocket.create(reconnect.tcpKeepAlive());
-            socket = plain;
-            if (closed) {
-                plain.close(); // the link was stopped before this socket existed: the connect below fails
-            }
-            plain.connect(new InetSocketAddress(host, port), (int) reconnect.connectTimeoutMs());
-            plain.setSoTimeout((int) reconnect.connectTimeoutMs());
-            Socket s = link.secure(plain, host, port, (int) reconnect.connectTimeoutMs());
-            socket = s;
-            FrameReader r = new FrameReader(new BufferedInputStream(s.getInputStream(), 65_536),
-                    limits.maxLineBytes(), limits.maxBinaryBytes());
-            FrameWriter writer = new FrameWriter(s.getOutputStream());
-            WorkerProtocol.Hello hello = WorkerProtocol.Hello.of(next(r));
-            String refusal = hello.refusal(config.type());
-            if (refusal != null) {
-                throw new IOException(refusal);
-            }
-            WorkerProtocol.prove(hello, link.secret(), r, writer, host());
-            writer.send(WorkerProtocol.place(config.id(), config.type(), config.layer().configName(),
-                    ParamsJson.write(config.params()), runner.channelsByInput(), runner.commandChannelsByOutput()));
-            Frame answer = next(r);
-            if (!answer.type().equals("placed")) {
-                throw new IOException("the worker did not place the method: " + answer.header().path("message")
-                        .asText(answer.header().toString()));
-            }
-            s.setSoTimeout((int) LOST_AFTER_MILLIS);
-            reader = r;
-            outbound.clear();
-            writerThread = Thread.ofVirtual().name("habla-worker-out-" + config.id())
-                    .start(() -> writeLoop(writer, s));
-        }
-
-        @Override
-        public void readNext() throws IOException {
-            Frame f;
-            try {
-                f = reader.read();
-            } catch (FrameException e) {
-                if (e.fatal()) {
-                    throw e;
-                }
-                badLine(e.getMessage());
-                return;
-            }
-            if (f == null) {
-                throw new IOException("the worker closed the connection");
-            }
-            take(f);
-        }
-
-        @Override
-        public void close() {
-            closed = true;
-            Thread w = writerThread;
-            if (w != null) {
-                w.interrupt();
-            }
-            Socket s = socket;
-            if (s != null) {
-                try {
-                    s.close();
-                } catch (IOException e) {
-                    LOG.debug("close: {}", e.toString());
-                }
-            }
-        }
     }
 }

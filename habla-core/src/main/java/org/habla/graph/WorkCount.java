@@ -9,8 +9,33 @@ import java.util.concurrent.locks.LockSupport;
  * background tasks under way. A producer counts a sample in before its own turn ends, so the count reaches
  * zero only when every effect of what came in has been handled — the graph is idle. A replay feeds the next
  * recorded reading only then, so every method sees the same sequence as in the recorded run.
+ *
+ * <p>Only a replay needs the count, and every thread of the graph writes it twice per sample (one counter
+ * for the whole graph: the cores hand its cache line back and forth), so a live graph takes {@link #NONE},
+ * which counts nothing.
  */
-final class WorkCount {
+class WorkCount {
+
+    /** Counts nothing: for a graph that nothing waits on (a live one). */
+    static final WorkCount NONE = new WorkCount() {
+        @Override
+        void begin() {
+        }
+
+        @Override
+        void end() {
+        }
+
+        @Override
+        long now() {
+            throw new IllegalStateException("this graph does not count its work: only a replay does");
+        }
+
+        @Override
+        boolean awaitIdle(long millis) {
+            throw new IllegalStateException("this graph does not count its work: only a replay does");
+        }
+    };
 
     private static final long PARK_NANOS = TimeUnit.MICROSECONDS.toNanos(20);
 

@@ -20,6 +20,7 @@ public final class Input<P extends Payload> {
     private final InputHandler<P> handler;
     private final boolean optional;
     private final Function<? super P, String> refusal;
+    private int index = -1;
 
     Input(String name, Class<P> type, Delivery delivery, InputHandler<P> handler, boolean optional) {
         this(name, type, delivery, handler, optional, null);
@@ -37,6 +38,19 @@ public final class Input<P extends Payload> {
 
     public String name() {
         return name;
+    }
+
+    /**
+     * Where the input stands among its method's inputs, in the order they were declared (0 first): the
+     * engine keeps a method's input queues in an array by this index, so a sample finds its queue without
+     * a map look-up.
+     */
+    public int index() {
+        return index;
+    }
+
+    void declaredAt(int position) {
+        index = position;
     }
 
     public Class<P> type() {

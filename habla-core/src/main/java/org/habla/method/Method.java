@@ -122,6 +122,7 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
                 throw new IllegalArgumentException("input '" + in.name() + "' is declared twice");
             }
         }
+        in.declaredAt(inputs.size());
         inputs.add(in);
         return in;
     }
@@ -140,6 +141,7 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
             }
         }
         Output<P> out = new Output<>(name, type, shape);
+        out.declaredAt(outputs.size());
         outputs.add(out);
         return out;
     }
@@ -192,7 +194,7 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
 
     /** Publishes a value stamped with an explicit source time. */
     protected final <P extends Payload> void emit(Output<P> output, P value, long sourceMicros) {
-        if (!outputs.contains(output)) {
+        if (output.index() < 0 || output.index() >= outputs.size() || outputs.get(output.index()) != output) {
             throw new IllegalArgumentException(output + " is not an output of " + id());
         }
         if (!output.shape().admits(value)) {

@@ -13,6 +13,7 @@ public final class Output<P extends Payload> {
     private final String name;
     private final Class<P> type;
     private final Shape shape;
+    private int index = -1;
 
     Output(String name, Class<P> type, Shape shape) {
         this.name = PortNames.check(name);
@@ -26,6 +27,19 @@ public final class Output<P extends Payload> {
 
     public String name() {
         return name;
+    }
+
+    /**
+     * Where the output stands among its method's outputs, in the order they were declared (0 first): the
+     * engine keeps a method's output ports in an array by this index, so an emitted value finds its port
+     * without a map look-up.
+     */
+    public int index() {
+        return index;
+    }
+
+    void declaredAt(int position) {
+        index = position;
     }
 
     public Class<P> type() {

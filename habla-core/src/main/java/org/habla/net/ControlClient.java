@@ -1,3 +1,6 @@
+// Over 300 lines, on purpose: one client's connection (the reader, the writer, eviction with its lingering error
+// line, closing once) shares one socket, outbox and pair of flags; the protocol is ControlProtocol's, the queue
+// Outbox's, the hello ControlHello's.
 package org.habla.net;
 
 import java.io.IOException;
@@ -62,7 +65,7 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
         this.outbox = new Outbox(limits.clientQueueSamples(), REPLY_CAPACITY);
         this.admitted = protocol.initialAccess();
         try {
-            outbox.putReply(protocol.hello()); // first in the queue, before any sample; never waits when empty
+            outbox.putReply(EncodedFrame.of(protocol.hello())); // first in the queue, before any sample; never waits when empty
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
@@ -101,7 +104,7 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
             return;
         }
         counters.errors.incrementAndGet();
-        outbox.finishWith(ControlProtocol.error(code, message, null));
+        outbox.finishWith(EncodedFrame.of(ControlProtocol.error(code, message, null)));
         Thread.ofVirtual().name(label + "-evicted").start(this::lingerThenClose);
     }
 
@@ -126,13 +129,13 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     }
 
     /** Queues a sample for the client, once it may read (it has authenticated, or the port is open). */
-    void offerSample(String output, Frame frame) {
+    void offerSample(String output, EncodedFrame frame) {
         if (admitted != null) {
             outbox.offerSample(output, frame);
         }
     }
 
-    void offerNotice(Frame frame) {
+    void offerNotice(EncodedFrame frame) {
         if (admitted != null) {
             outbox.offerNotice(frame);
         }
@@ -169,7 +172,7 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
         if (frame.type().equals("error")) {
             counters.errors.incrementAndGet();
         }
-        outbox.putReply(frame);
+        outbox.putReply(EncodedFrame.of(frame));
     }
 
     @Override
@@ -242,12 +245,9 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     private void writeLoop() {
         try {
             FrameWriter out = new FrameWriter(socket.getOutputStream());
-            List<Frame> batch;
+            List<EncodedFrame> batch;
             while ((batch = outbox.take()) != null) {
-                for (Frame f : batch) {
-                    out.write(f);
-                }
-                out.flush();
+                out.send(batch);
                 activity.delivered();
                 counters.linesOut.addAndGet(batch.size());
             }

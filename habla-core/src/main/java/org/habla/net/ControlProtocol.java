@@ -1,7 +1,6 @@
 package org.habla.net;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.time.Instant;
@@ -98,62 +97,8 @@ final class ControlProtocol {
      * the protocol, the socket's name and {@code "auth":"required"}.
      */
     Frame hello() {
-        if (security.access().required()) {
-            ObjectNode h = NODES.objectNode()
-                    .put("type", "hello")
-                    .put("protocol", PROTOCOL)
-                    .put("socket", point.name())
-                    .put("auth", "required");
-            h.putObject("limits").put("maxLineBytes", limits.maxLineBytes())
-                    .put("idleTimeoutMs", limits.idleTimeoutMs());
-            return Frame.of(h);
-        }
-        return fullHello(null);
-    }
-
-    /** The whole hello; with the client's name and role once it has authenticated. */
-    private Frame fullHello(PortAccess.Admitted who) {
-        ObjectNode h = NODES.objectNode()
-                .put("type", "hello")
-                .put("protocol", PROTOCOL)
-                .put("socket", point.name())
-                .put("method", point.methodId())
-                .put("layer", point.layer().configName())
-                .put("direction", direction())
-                .put("auth", who == null ? "off" : "ok");
-        if (who != null) {
-            h.put("client", who.principal().name()).put("role", who.role().fileName());
-        }
-        ArrayNode outputs = h.putArray("outputs");
-        for (Output<?> o : point.outputs()) {
-            ObjectNode out = outputs.addObject()
-                    .put("name", o.name())
-                    .put("kind", o.kind().wireName())
-                    .put("unit", o.shape().unit());
-            o.shape().fields().forEach(out.putArray("fields")::add);
-            out.put("doc", o.shape().doc());
-        }
-        ArrayNode inputs = h.putArray("inputs");
-        for (Input<?> i : point.controlInputs()) {
-            inputs.addObject().put("name", i.name()).put("kind", i.kind().wireName());
-        }
-        h.put("stale", point.stale());
-        if (lease != null) {
-            h.set("control", lease.status());
-        }
-        h.putObject("limits")
-                .put("maxLineBytes", limits.maxLineBytes())
-                .put("maxBinaryBytes", limits.maxBinaryBytes())
-                .put("clientQueueSamples", limits.clientQueueSamples())
-                .put("idleTimeoutMs", limits.idleTimeoutMs())
-                .put("frameTimeoutMs", limits.frameTimeoutMs());
-        return Frame.of(h);
-    }
-
-    private String direction() {
-        boolean out = !point.outputs().isEmpty();
-        boolean in = !point.controlInputs().isEmpty();
-        return out && in ? "both" : in ? "in" : "out";
+        return security.access().required() ? ControlHello.authRequired(point, limits)
+                : ControlHello.full(point, limits, lease, null);
     }
 
     /** Answers one request. */
@@ -265,13 +210,13 @@ final class ControlProtocol {
             return;
         }
         if (!security.access().required()) {
-            replies.reply(fullHello(null)); // an open port: a client configured with a token still gets on
+            replies.reply(ControlHello.full(point, limits, lease, null)); // an open port: a client configured with a token still gets on
             return;
         }
         switch (security.access().authenticate(h)) {
             case PortAccess.Admitted a -> {
                 replies.admit(a);
-                replies.reply(fullHello(a));
+                replies.reply(ControlHello.full(point, limits, lease, a));
             }
             case PortAccess.Refused r -> {
                 ClientId who = replies.id();

@@ -13,9 +13,6 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
 import org.habla.config.Expose;
 import org.habla.config.Limits;
-import org.habla.method.ControlNotice;
-import org.habla.method.Output;
-import org.habla.sample.Sample;
 import org.habla.security.PortSecurity;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -27,7 +24,7 @@ import org.slf4j.LoggerFactory;
  *
  * <pre>
  *   engine --samples, staleness--&gt; listener (encodes once, only enqueues) --&gt; client 1 outbox --&gt; writer
- *                                                                       \--&gt; client 2 outbox --&gt; writer
+ *                                    (same bytes, rotating order)      \--&gt; client 2 outbox --&gt; writer
  *   acceptor thread --&gt; ConnectionGuard (cap, eviction, deadlines) --&gt; ControlClient per connection
  *                                                                       (virtual threads)
  * </pre>
@@ -54,12 +51,8 @@ public final class ControlServer implements AutoCloseable {
     private final List<ControlClient> clients = new CopyOnWriteArrayList<>();
     private final Counters counters = new Counters();
     private final AtomicLong droppedByGone = new AtomicLong();
-    /** TLS handshakes in progress, at most {@code limits.maxPendingPerPort}. */
-    private final java.util.concurrent.Semaphore handshakes;
-    private final AtomicLong guardRefused = new AtomicLong();
-    private final AtomicLong plainClients = new AtomicLong();
-    private final AtomicLong tlsFailures = new AtomicLong();
-    private final byte[] plainClientError;
+    /** TLS handshakes in progress, at most {@code limits.maxPendingPerPort}; null on a plain socket. */
+    private final TlsHandshakes handshakes;
     /**
      * The longest {@link #close} waits for the acceptor to leave its {@code accept}: the operating system releases
      * the port only then, so a daemon started right after this one closed can have it.
@@ -104,10 +97,8 @@ public final class ControlServer implements AutoCloseable {
         this.guard = new ConnectionGuard("control socket '" + point.name() + "'", limits.maxClientsPerPort(),
                 "limits.maxClientsPerPort", limits);
         this.budget = processBudget.child("limits.socketBlockBudgetBytes", limits.socketBlockBudgetBytes());
-        this.handshakes = new java.util.concurrent.Semaphore(limits.maxPendingPerPort());
-        this.plainClientError = (ControlProtocol.error("tls_required", "socket '" + point.name() + "' speaks TLS "
-                + "only: connect with TLS (openssl s_client -connect HOST:PORT, Python's ssl module); see "
-                + "docs/security.md", null).header().toString() + "\n").getBytes(java.nio.charset.StandardCharsets.UTF_8);
+        this.handshakes = security.tls() == null ? null
+                : new TlsHandshakes(point.name(), security.tls(), limits.maxPendingPerPort());
     }
 
     /**
@@ -140,7 +131,7 @@ public final class ControlServer implements AutoCloseable {
             bind();
         }
         String bind = bindAddress();
-        subscription = point.subscribe(new Fanout());
+        subscription = point.subscribe(new ControlFanout(point.name(), clients));
         guard.start();
         Thread a = new Thread(this::acceptLoop, "control-" + point.name() + "-accept");
         a.setDaemon(true);
@@ -180,7 +171,7 @@ public final class ControlServer implements AutoCloseable {
                 .put("port", listener == null ? expose.port() : port())
                 .put("clients", clients.size())
                 .put("connections", counters.connections.get())
-                .put("refused", guard.refusedTotal() + guardRefused.get())
+                .put("refused", guard.refusedTotal() + (handshakes == null ? 0 : handshakes.refused()))
                 .put("linesIn", counters.linesIn.get())
                 .put("linesOut", counters.linesOut.get())
                 .put("dropped", dropped)
@@ -188,8 +179,8 @@ public final class ControlServer implements AutoCloseable {
         guard.putStats(stats);
         security.access().putStats(stats);
         stats.put("tls", security.tls() != null);
-        if (security.tls() != null) {
-            stats.put("plainClientsRefused", plainClients.get()).put("tlsFailures", tlsFailures.get());
+        if (handshakes != null) {
+            stats.put("plainClientsRefused", handshakes.plainClients()).put("tlsFailures", handshakes.failures());
         }
         stats.put("blockBytes", budget.reserved());
         if (lease != null) {
@@ -250,8 +241,8 @@ public final class ControlServer implements AutoCloseable {
                 return;
             }
             long number = ++n;
-            if (security.tls() != null) {
-                upgradeThenAdmit(socket, number);
+            if (handshakes != null) {
+                handshakes.upgradeThenAdmit(socket, number, () -> closed, this::admit);
                 continue;
             }
             try {
@@ -259,43 +250,9 @@ public final class ControlServer implements AutoCloseable {
             } catch (IOException | RuntimeException e) {
                 LOG.warn("control socket '{}': could not admit {}: {}", point.name(),
                         socket.getRemoteSocketAddress(), e.toString());
-                closeQuietly(socket);
+                TlsHandshakes.closeQuietly(socket);
             }
         }
-    }
-
-    /**
-     * On a TLS socket, the handshake runs on a thread of the connection's own, at most
-     * {@code limits.maxPendingPerPort} at once (a connection beyond that is closed at once); a plain client gets
-     * a plain error line ({@code tls_required}) instead of a silence.
-     */
-    private void upgradeThenAdmit(Socket socket, long n) {
-        if (!handshakes.tryAcquire()) {
-            guardRefused.incrementAndGet();
-            closeQuietly(socket);
-            return;
-        }
-        Thread.ofVirtual().name("control-" + point.name() + "-" + n + "-tls").start(() -> {
-            try {
-                Socket secured = security.tls().upgrade(socket, plainClientError);
-                if (closed) {
-                    closeQuietly(secured);
-                    return;
-                }
-                admit(secured, n);
-            } catch (org.habla.security.Tls.PlainClient e) {
-                plainClients.incrementAndGet();
-                LOG.info("control socket '{}': refused a connection from {}: {}", point.name(),
-                        socket.getRemoteSocketAddress(), e.getMessage());
-            } catch (IOException | RuntimeException e) {
-                tlsFailures.incrementAndGet();
-                LOG.info("control socket '{}': TLS handshake with {} failed: {}", point.name(),
-                        socket.getRemoteSocketAddress(), e.toString());
-                closeQuietly(socket);
-            } finally {
-                handshakes.release();
-            }
-        });
     }
 
     private void admit(Socket socket, long n) throws IOException {
@@ -315,65 +272,5 @@ public final class ControlServer implements AutoCloseable {
         counters.connections.incrementAndGet();
         LOG.debug("{}: connected from {}", label, socket.getRemoteSocketAddress());
         self[0].start();
-    }
-
-    private static void closeQuietly(Socket socket) {
-        try {
-            socket.close();
-        } catch (IOException e) {
-            // nothing left to do with it
-        }
-    }
-
-    /** The engine's listener: encodes each sample once and hands it to every client's outbox. */
-    private final class Fanout implements ControlPoint.Listener {
-
-        @Override
-        public void onSample(Output<?> output, Sample sample) {
-            if (clients.isEmpty()) {
-                return;
-            }
-            Frame frame;
-            try {
-                frame = SampleCodec.sampleFrame(output.name(), sample);
-            } catch (RuntimeException e) {
-                LOG.warn("control socket '{}': cannot encode a sample of {}: {}", point.name(), output, e.toString());
-                return;
-            }
-            for (ControlClient c : clients) {
-                c.offerSample(output.name(), frame);
-            }
-        }
-
-        @Override
-        public void onNotice(ControlNotice notice) {
-            ObjectNode line = JsonNodeFactory.instance.objectNode()
-                    .put("type", "notice")
-                    .put("notice", notice.notice())
-                    .put("method", notice.methodId())
-                    .put("t", notice.sourceMicros())
-                    .put("message", notice.message());
-            line.set("detail", notice.detail().json());
-            Frame frame = Frame.of(line);
-            for (ControlClient c : clients) {
-                c.offerNotice(frame);
-            }
-        }
-
-        @Override
-        public void onControl(Frame line) {
-            for (ControlClient c : clients) {
-                c.offerNotice(line);
-            }
-        }
-
-        @Override
-        public void onStale(boolean stale, String why) {
-            Frame notice = Frame.of(JsonNodeFactory.instance.objectNode()
-                    .put("type", "stale").put("stale", stale).put("why", why == null ? "" : why));
-            for (ControlClient c : clients) {
-                c.offerNotice(notice);
-            }
-        }
     }
 }

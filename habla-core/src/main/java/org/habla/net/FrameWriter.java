@@ -13,28 +13,49 @@ import java.io.OutputStream;
  */
 public final class FrameWriter {
 
-    private static final byte NEWLINE = '\n';
-
+    private final OutputStream raw;
     private final OutputStream out;
 
     public FrameWriter(OutputStream out) {
         // Without a size, a stream made on a virtual thread (every served connection's writer) starts with a
         // small buffer that grows as batches need it: an idle connection holds 512 bytes, not 16 KB.
+        this.raw = out;
         this.out = new BufferedOutputStream(out);
     }
 
     /** Writes a frame without flushing; a frame with a body gets {@code "bytes"} set to its length. */
     public void write(Frame frame) throws IOException {
-        ObjectNode header = frame.header();
-        boolean declares = frame.body().length > 0 || frame.hasBody();
-        if (declares && header.path("bytes").asLong(-1) != frame.body().length) {
-            header = header.deepCopy().put("bytes", frame.body().length);
+        EncodedFrame encoded;
+        try {
+            encoded = EncodedFrame.of(frame);
+        } catch (java.io.UncheckedIOException e) {
+            throw e.getCause();
         }
-        out.write(toLine(header));
-        out.write(NEWLINE);
+        write(encoded);
+    }
+
+    /** Writes a frame encoded before, as it is, without flushing. */
+    void write(EncodedFrame frame) throws IOException {
+        out.write(frame.line());
         if (frame.body().length > 0) {
             out.write(frame.body());
         }
+    }
+
+    /**
+     * Writes a batch of encoded frames and flushes. A batch of one frame without a body (a sample to a client that
+     * keeps up) goes to the stream as it is, in one write and without a copy into the buffer.
+     */
+    void send(java.util.List<EncodedFrame> batch) throws IOException {
+        if (batch.size() == 1 && batch.getFirst().body().length == 0) {
+            out.flush(); // nothing is buffered between batches; kept so the order can never change
+            raw.write(batch.getFirst().line());
+            return;
+        }
+        for (EncodedFrame f : batch) {
+            write(f);
+        }
+        out.flush();
     }
 
     /** Writes a header-only frame without flushing. */

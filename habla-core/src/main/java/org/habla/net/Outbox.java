@@ -12,7 +12,8 @@ import java.util.concurrent.locks.Condition;
 import java.util.concurrent.locks.ReentrantLock;
 
 /**
- * What waits to be written to one control client, in order: samples, replies and notices.
+ * What waits to be written to one control client, in order: samples, replies and notices, each already encoded
+ * (a sample once for all the clients of its socket).
  *
  * <ul>
  *   <li>Samples come from engine threads and never wait: at most {@code sampleCapacity} are held; the
@@ -33,7 +34,7 @@ final class Outbox {
     private final Condition changed = lock.newCondition();
     private final ArrayDeque<Entry> queue = new ArrayDeque<>();
     private final Map<String, Long> lastSampleNanos = new HashMap<>();
-    private final Map<String, Frame> held = new HashMap<>();
+    private final Map<String, EncodedFrame> held = new HashMap<>();
     private int samples;
     private int replies;
     private long minIntervalNanos;
@@ -41,7 +42,7 @@ final class Outbox {
     private long droppedTotal;
     private boolean finished;
 
-    private record Entry(Frame frame, Kind kind) {
+    private record Entry(EncodedFrame frame, Kind kind) {
     }
 
     private enum Kind { SAMPLE, REPLY, NOTICE }
@@ -59,7 +60,7 @@ final class Outbox {
      *
      * @return whether an older sample was dropped to make room
      */
-    boolean offerSample(String output, Frame frame) {
+    boolean offerSample(String output, EncodedFrame frame) {
         lock.lock();
         try {
             if (finished) {
@@ -90,7 +91,7 @@ final class Outbox {
     }
 
     /** Queues a reply, waiting while {@code replyCapacity} replies are unsent; dropped once finished. */
-    void putReply(Frame frame) throws InterruptedException {
+    void putReply(EncodedFrame frame) throws InterruptedException {
         lock.lock();
         try {
             while (replies >= replyCapacity && !finished) {
@@ -108,7 +109,7 @@ final class Outbox {
     }
 
     /** Queues a notice that replaces any notice of the same type not yet sent; never blocks. */
-    void offerNotice(Frame frame) {
+    void offerNotice(EncodedFrame frame) {
         lock.lock();
         try {
             if (finished) {
@@ -139,7 +140,7 @@ final class Outbox {
      *
      * @return the batch, or {@code null} once {@link #finish}ed and empty
      */
-    List<Frame> take() throws InterruptedException {
+    List<EncodedFrame> take() throws InterruptedException {
         lock.lock();
         try {
             while (true) {
@@ -177,7 +178,7 @@ final class Outbox {
      * Drops whatever waits and accepts nothing more but {@code last}, which {@link #take} hands out next
      * (an eviction's error line); then {@code take} returns {@code null}.
      */
-    void finishWith(Frame last) {
+    void finishWith(EncodedFrame last) {
         lock.lock();
         try {
             if (finished) {
@@ -204,13 +205,13 @@ final class Outbox {
         }
     }
 
-    private List<Frame> drain() {
-        List<Frame> batch = new ArrayList<>(queue.size() + 1);
+    private List<EncodedFrame> drain() {
+        List<EncodedFrame> batch = new ArrayList<>(queue.size() + 1);
         boolean toldDrops = droppedUntold == 0;
         for (Entry e : queue) {
             if (e.kind == Kind.SAMPLE && !toldDrops) {
-                batch.add(Frame.of(JsonNodeFactory.instance.objectNode().put("type", "dropped")
-                        .put("count", droppedUntold).put("total", droppedTotal)));
+                batch.add(EncodedFrame.of(Frame.of(JsonNodeFactory.instance.objectNode().put("type", "dropped")
+                        .put("count", droppedUntold).put("total", droppedTotal))));
                 droppedUntold = 0;
                 toldDrops = true;
             }
@@ -230,8 +231,8 @@ final class Outbox {
         }
         long now = System.nanoTime();
         long next = Long.MAX_VALUE;
-        for (Iterator<Map.Entry<String, Frame>> it = held.entrySet().iterator(); it.hasNext(); ) {
-            Map.Entry<String, Frame> h = it.next();
+        for (Iterator<Map.Entry<String, EncodedFrame>> it = held.entrySet().iterator(); it.hasNext(); ) {
+            Map.Entry<String, EncodedFrame> h = it.next();
             long due = lastSampleNanos.getOrDefault(h.getKey(), 0L) + minIntervalNanos;
             if (minIntervalNanos == 0 || now - due >= 0) {
                 it.remove();

@@ -1,12 +1,9 @@
 package org.habla.recording;
 
-import com.github.luben.zstd.Zstd;
 import java.io.IOException;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.channels.FileChannel;
-import java.nio.charset.StandardCharsets;
-import java.util.zip.CRC32;
 
 /**
  * A whole MCAP chunk record, for {@link WholeRecordSearch}: the Chunk opcode, a length that fits in the file, a
@@ -22,9 +19,11 @@ final class McapChunkProbe implements WholeRecordSearch.Probe {
 
     static final McapChunkProbe INSTANCE = new McapChunkProbe();
 
-    /** Opcode and length (9), then start, end, uncompressed size and CRC (28), then the compression's length (4). */
+    /**
+     * Opcode and length (9), then start, end, uncompressed size and CRC (28), then the compression's length (4):
+     * the least a chunk record holds.
+     */
     private static final int FIXED_HEAD = 9 + 28 + 4;
-    private static final String ZSTD = "zstd";
 
     private McapChunkProbe() {
     }
@@ -36,53 +35,24 @@ final class McapChunkProbe implements WholeRecordSearch.Probe {
 
     @Override
     public boolean wholeRecordAt(FileChannel ch, long at, long size) throws IOException {
-        ByteBuffer head = WholeRecordSearch.read(ch, at, FIXED_HEAD + ZSTD.length() + 8).order(ByteOrder.LITTLE_ENDIAN);
-        if (head.remaining() < FIXED_HEAD + 8) {
+        ByteBuffer head = WholeRecordSearch.read(ch, at, 9).order(ByteOrder.LITTLE_ENDIAN);
+        if (head.remaining() < 9) {
             return false;
         }
         head.get();
         long length = head.getLong();
-        if (length < 0 || length > McapRecordingReader.MAX_RECORD_BYTES || at + 9 + length > size) {
+        if (length < FIXED_HEAD - 9 || length > McapRecordingReader.MAX_RECORD_BYTES || at + 9 + length > size) {
             return false;
         }
-        head.getLong();
-        head.getLong();
-        long uncompressed = head.getLong();
-        long crc = Integer.toUnsignedLong(head.getInt());
-        int compressionLength = head.getInt();
-        if (compressionLength != 0 && compressionLength != ZSTD.length()
-                || uncompressed < 0 || uncompressed > McapRecordingReader.MAX_RECORD_BYTES) {
+        ByteBuffer content = WholeRecordSearch.read(ch, at + 9, (int) length).order(ByteOrder.LITTLE_ENDIAN);
+        if (content.remaining() < length) {
             return false;
         }
-        if (head.remaining() < compressionLength + 8) {
+        try {
+            McapChunk.records(content, at);
+            return true;
+        } catch (RecordingException | RuntimeException e) {
             return false;
         }
-        byte[] compression = new byte[compressionLength];
-        head.get(compression);
-        if (compressionLength > 0 && !ZSTD.equals(new String(compression, StandardCharsets.US_ASCII))) {
-            return false;
-        }
-        long recordsLength = head.getLong();
-        if (recordsLength != length - (28 + 4 + compressionLength + 8)) {
-            return false;
-        }
-        ByteBuffer stored = WholeRecordSearch.read(ch, at + FIXED_HEAD + compressionLength + 8, (int) recordsLength);
-        if (stored.remaining() < recordsLength) {
-            return false;
-        }
-        byte[] records = stored.array();
-        if (compressionLength > 0) {
-            try {
-                records = Zstd.decompress(records, (int) uncompressed);
-            } catch (RuntimeException e) {
-                return false;
-            }
-        }
-        if (records.length != uncompressed) {
-            return false;
-        }
-        CRC32 c = new CRC32();
-        c.update(records);
-        return crc == 0 || c.getValue() == crc;
     }
 }

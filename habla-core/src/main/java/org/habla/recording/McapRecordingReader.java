@@ -3,7 +3,6 @@ package org.habla.recording;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import com.github.luben.zstd.Zstd;
 import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.io.InputStream;
@@ -19,7 +18,6 @@ import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Optional;
-import java.util.zip.CRC32;
 import org.habla.net.Frame;
 
 /**
@@ -137,41 +135,7 @@ public final class McapRecordingReader implements RecordingSource {
     }
 
     private void chunk(ByteBuffer b, long at) throws RecordingException {
-        b.getLong();
-        b.getLong();
-        long uncompressedSize = b.getLong();
-        long crc = Integer.toUnsignedLong(b.getInt());
-        String compression = string(b);
-        long length = b.getLong();
-        if (length != b.remaining() || uncompressedSize > MAX_RECORD_BYTES) {
-            throw new RecordingException("the chunk at byte " + at + " declares " + length + " bytes of records, has "
-                    + b.remaining());
-        }
-        byte[] stored = new byte[(int) length];
-        b.get(stored);
-        byte[] records = switch (compression) {
-            case "" -> stored;
-            case "zstd" -> {
-                try {
-                    yield Zstd.decompress(stored, (int) uncompressedSize);
-                } catch (RuntimeException e) {
-                    throw new RecordingException("the chunk at byte " + at + " does not decompress: " + e.getMessage());
-                }
-            }
-            default -> throw new RecordingException("the chunk at byte " + at + " is compressed with '" + compression
-                    + "', which HABLA does not read");
-        };
-        if (records.length != uncompressedSize) {
-            throw new RecordingException("the chunk at byte " + at + " holds " + records.length + " bytes, not "
-                    + uncompressedSize);
-        }
-        if (crc != 0) {
-            CRC32 c = new CRC32();
-            c.update(records);
-            if (c.getValue() != crc) {
-                throw new RecordingException("the chunk at byte " + at + " fails its CRC");
-            }
-        }
+        byte[] records = McapChunk.records(b, at);
         ByteBuffer inner = ByteBuffer.wrap(records).order(ByteOrder.LITTLE_ENDIAN);
         while (inner.hasRemaining()) {
             int op = inner.get() & 0xff;

@@ -3,7 +3,6 @@ package org.habla.status;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
-import java.io.OutputStream;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
@@ -13,9 +12,6 @@ import java.util.function.Supplier;
 import org.habla.config.Limits;
 import org.habla.config.StatusConfig;
 import org.habla.net.ConnectionGuard;
-import org.habla.net.Frame;
-import org.habla.net.FrameException;
-import org.habla.net.FrameReader;
 import org.habla.security.PortAccess;
 import org.habla.security.Principal;
 import org.slf4j.Logger;
@@ -194,133 +190,9 @@ public final class StatusServer implements AutoCloseable {
                 }
                 return;
             }
-            Answer answer = new Answer(client);
+            StatusAnswer answer = new StatusAnswer(client, snapshot, guard, limits, access, tls);
             guard.admit(answer);
             Thread.ofVirtual().name("status-client").start(answer::run);
-        }
-    }
-
-    /** One client's answer: the snapshot line, taken within the frame deadline or abandoned. */
-    private final class Answer implements ConnectionGuard.Guarded {
-        private volatile Socket socket;
-        private final long connected = System.nanoTime();
-        private volatile boolean written;
-
-        Answer(Socket socket) {
-            this.socket = socket;
-        }
-
-        void run() {
-            if (tls != null) {
-                try {
-                    socket = tls.upgrade(socket, (JSON.createObjectNode().put("type", "error")
-                            .put("code", "tls_required").put("message", "the status endpoint speaks TLS only: "
-                                    + "habla status --tls-trust CERT, or openssl s_client; see docs/security.md")
-                            + "\n").getBytes(java.nio.charset.StandardCharsets.UTF_8));
-                } catch (IOException e) {
-                    LOG.debug("status client: {}", e.getMessage());
-                    guard.left(this);
-                    return;
-                }
-            }
-            try (Socket socket = this.socket) {
-                if (access.required() && !authenticated()) {
-                    return;
-                }
-                byte[] line;
-                try {
-                    line = JSON.writeValueAsBytes(snapshot.get());
-                } catch (RuntimeException e) {
-                    LOG.warn("the status snapshot failed", e);
-                    line = JSON.writeValueAsBytes(JSON.createObjectNode()
-                            .put("type", "error").put("code", "snapshot_failed").put("message", e.toString()));
-                }
-                OutputStream out = socket.getOutputStream();
-                out.write(line);
-                out.write('\n');
-                out.flush();
-                written = true;
-                socket.shutdownOutput();
-            } catch (IOException e) {
-                LOG.debug("status client {}: {}", socket.getRemoteSocketAddress(), e.toString());
-            } finally {
-                guard.left(this);
-            }
-        }
-
-        /** Says authentication is required, reads the auth line and checks it; false when refused. */
-        private boolean authenticated() throws IOException {
-            OutputStream out = socket.getOutputStream();
-            out.write(JSON.writeValueAsBytes(JSON.createObjectNode().put("type", "hello")
-                    .put("protocol", PROTOCOL).put("auth", "required")));
-            out.write('\n');
-            out.flush();
-            socket.setSoTimeout((int) Math.min(Integer.MAX_VALUE, limits.frameTimeoutMs()));
-            Frame request;
-            try {
-                request = new FrameReader(socket.getInputStream(), limits.maxLineBytes(), 0).read();
-            } catch (FrameException e) {
-                refuse(out, e.code(), e.getMessage(), false);
-                return false;
-            }
-            if (request == null) {
-                return false;
-            }
-            if (!request.header().path("op").asText().equals("auth")) {
-                refuse(out, "auth_required", "the status endpoint requires authentication: send "
-                        + "{\"op\":\"auth\",\"client\":NAME,\"token\":TOKEN} first", false);
-                return false;
-            }
-            return switch (access.authenticate(request.header())) {
-                case PortAccess.Admitted a -> true;
-                case PortAccess.Refused r -> {
-                    LOG.info("status client {}: refused: {}", socket.getRemoteSocketAddress(), r.message());
-                    refuse(out, r.code(), r.message(), true);
-                    yield false;
-                }
-            };
-        }
-
-        private void refuse(OutputStream out, String code, String message, boolean delay) throws IOException {
-            if (delay) {
-                try {
-                    Thread.sleep(PortAccess.FAILURE_DELAY_MS);
-                } catch (InterruptedException e) {
-                    Thread.currentThread().interrupt();
-                    return;
-                }
-            }
-            out.write(JSON.writeValueAsBytes(JSON.createObjectNode()
-                    .put("type", "error").put("code", code).put("message", message)));
-            out.write('\n');
-            out.flush();
-            socket.shutdownOutput();
-        }
-
-        @Override
-        public long connectedNanos() {
-            return connected;
-        }
-
-        @Override
-        public long lastActiveNanos() {
-            return connected;
-        }
-
-        @Override
-        public long frameSinceNanos() {
-            return written ? 0 : connected;
-        }
-
-        /** An answer cannot be interrupted by an error line: the connection is closed. */
-        @Override
-        public void evict(String code, String message) {
-            LOG.debug("status client {}: closed: {} {}", socket.getRemoteSocketAddress(), code, message);
-            try {
-                socket.close();
-            } catch (IOException e) {
-                LOG.debug("status client: close: {}", e.toString());
-            }
         }
     }
 }

@@ -8,8 +8,6 @@ import java.net.Socket;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.habla.config.Limits;
 import org.habla.graph.EngineClock;
 import org.habla.net.BlockBudget;
@@ -67,13 +65,7 @@ public final class WorkerServer implements AutoCloseable {
                 limits);
         this.budget = BlockBudget.of("limits.processBlockBudgetBytes", limits.processBlockBudgetBytes())
                 .child("limits.socketBlockBudgetBytes", limits.socketBlockBudgetBytes());
-        AtomicInteger n = new AtomicInteger();
-        this.backgroundPool = Executors.newFixedThreadPool(Math.max(2, Runtime.getRuntime().availableProcessors()),
-                r -> {
-                    Thread t = new Thread(r, "habla-worker-background-" + n.incrementAndGet());
-                    t.setDaemon(true);
-                    return t;
-                });
+        this.backgroundPool = org.habla.graph.BackgroundPool.create("habla-worker-background-");
     }
 
     /** Binds the port and starts accepting. */

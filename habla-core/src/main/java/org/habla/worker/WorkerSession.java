@@ -1,11 +1,12 @@
+// Over 300 lines, on purpose: this is one connection's whole life on the worker (TLS, hello, the daemon's proof,
+// the place line, the read loop, the writer with its heartbeat, eviction), and every stage reads and writes the
+// same socket, write lock and eviction flag; what the place line makes is PlaceLine's.
 package org.habla.worker;
 
-import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.net.Socket;
-import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ExecutorService;
@@ -13,16 +14,9 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.ReentrantLock;
-import java.util.stream.Collectors;
-import org.habla.config.ConfigError;
-import org.habla.config.ConfigException;
 import org.habla.config.Limits;
-import org.habla.config.ParamsJson;
-import org.habla.driver.ChannelDescriptor;
 import org.habla.graph.EngineClock;
 import org.habla.graph.HostedMethod;
-import org.habla.method.Layer;
-import org.habla.method.Method;
 import org.habla.net.BlockBudget;
 import org.habla.net.ConnectionGuard;
 import org.habla.net.Frame;
@@ -32,7 +26,6 @@ import org.habla.net.FrameWriter;
 import org.habla.net.PeerActivity;
 import org.habla.net.SampleCodec;
 import org.habla.net.WorkerProtocol;
-import org.habla.plugin.MethodProvider;
 import org.habla.plugin.PluginRegistry;
 import org.habla.sample.Payload;
 import org.habla.sample.Sample;
@@ -195,12 +188,14 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
                     return;
                 }
             }
-            Refusal refusal = place(place);
-            if (refusal != null) {
-                send(WorkerProtocol.error(refusal.code(), refusal.message()));
-                LOG.warn("refused method {} for {}: {}", methodId, peer, refusal.message());
+            PlaceLine.Made made = PlaceLine.make(place, registry, clock, backgroundPool);
+            methodId = made.methodId();
+            if (made.refusal() != null) {
+                send(WorkerProtocol.error(made.refusal().code(), made.refusal().message()));
+                LOG.warn("refused method {} for {}: {}", methodId, peer, made.refusal().message());
                 return;
             }
+            hosted = made.hosted();
             send(WorkerProtocol.placed(methodId, hosted.inputNames(), hosted.outputNames()));
             socket.setSoTimeout(0);
             hosted.onOutput((output, sample) -> queue(WorkerProtocol.outputSample(output, sample)));
@@ -248,59 +243,6 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
                 : "this worker places methods only for a daemon that proves the shared secret first "
                         + "({\"type\":\"auth\",...}, see docs/protocol.md)"));
         return false;
-    }
-
-    /** Why a place line was refused: an error code and a sentence. */
-    private record Refusal(String code, String message) {
-    }
-
-    /** Makes and keeps the method a place line asks for; returns why not when it cannot. */
-    private Refusal place(Frame f) {
-        if (!f.type().equals("place")) {
-            return new Refusal("not_place", "expected a place line first, got type '" + f.type() + "'");
-        }
-        String type;
-        Layer layer;
-        try {
-            methodId = WorkerProtocol.text(f, "method");
-            type = WorkerProtocol.text(f, "methodType");
-            layer = Layer.fromConfig(WorkerProtocol.text(f, "layer"));
-        } catch (FrameException | IllegalArgumentException e) {
-            return new Refusal("bad_place", String.valueOf(e.getMessage()));
-        }
-        MethodProvider<?> provider = registry.method(type).orElse(null);
-        if (provider == null) {
-            return new Refusal("unknown_type", "this worker cannot run method type '" + type + "'");
-        }
-        if (!provider.layers().contains(layer)) {
-            return new Refusal("bad_place", "type '" + type + "' cannot be placed in the " + layer.configName() + " layer");
-        }
-        JsonNode params = f.header().get("params");
-        Map<String, ChannelDescriptor> channels;
-        Map<String, ChannelDescriptor> commandChannels;
-        try {
-            channels = WorkerProtocol.channels(f, "channels");
-            commandChannels = WorkerProtocol.channels(f, "commandChannels");
-        } catch (FrameException e) {
-            return new Refusal("bad_place", e.getMessage());
-        }
-        try {
-            Record bound = ParamsJson.read(params, provider.paramsType());
-            HostedMethod h = new HostedMethod(methodId, type, make(provider, layer, bound), clock, backgroundPool);
-            channels.forEach(h::bindChannel);
-            commandChannels.forEach(h::bindCommandChannel);
-            hosted = h;
-            return null;
-        } catch (ConfigException e) {
-            return new Refusal("bad_params", e.errors().stream().map(ConfigError::toString)
-                    .collect(Collectors.joining("; ")));
-        } catch (RuntimeException | LinkageError e) {
-            return new Refusal("cannot_make", "type '" + type + "' cannot be made here: " + e.getMessage());
-        }
-    }
-
-    private static <P extends Record> Method make(MethodProvider<P> provider, Layer layer, Record params) {
-        return provider.create(layer, provider.paramsType().cast(params));
     }
 
     /** Writes one line now (before the writer thread runs), taking turns with an eviction's error line. */

@@ -258,7 +258,7 @@ class InterfaceLinkTest {
 
     @Test
     void aStandStillCommandDroppedWhileTheLinkIsDownIsCountedWithoutAWarning() throws Exception {
-        try (LogLines log = new LogLines(InterfaceLink.class)) {
+        try (LogLines log = new LogLines(InterfaceCommands.class)) {
             MethodGraph g = start(1, 0);
             write(point(g, "cmd"), 0);
             awaitDropped(g, 1);

@@ -57,7 +57,7 @@ class OptionalConnectionTest {
                     new InterfaceAddress("127.0.0.1", OptionalInt.of(robot.port())), new NoParams(),
                     new Reconnect(50, 200, 1_000, 5_000));
             EngineClock clock = EngineClock.system();
-            InterfaceLink link = new InterfaceLink(config, driver, clock, GraphTap.NONE, false, new LinkStates());
+            InterfaceLink link = new InterfaceLink(config, new LiveDriver(driver), clock, new LinkStates());
             BlockingQueue<Sample> records = new LinkedBlockingQueue<>();
             link.reading("link").subscribe(records::add);
             link.start();

@@ -39,4 +39,30 @@ class FrameWriterTest {
         w.flush();
         assertThat(wire.toString(UTF_8)).isEqualTo("{\"type\":\"pong\"}\n");
     }
+
+    @Test
+    void batchesOfOneFrameAndOfSeveralReachTheStreamWholeAndInOrder() throws Exception {
+        ByteArrayOutputStream wire = new ByteArrayOutputStream();
+        FrameWriter w = new FrameWriter(wire);
+        EncodedFrame first = EncodedFrame.of(Frame.of(sampleHeader(1)));
+        EncodedFrame image = EncodedFrame.of(new Frame(sampleHeader(2), new byte[] {7, 8}));
+        EncodedFrame third = EncodedFrame.of(Frame.of(sampleHeader(3)));
+        w.send(java.util.List.of(first));
+        assertThat(wire.size()).isEqualTo(first.line().length);
+        w.send(java.util.List.of(image, third));
+        w.send(java.util.List.of(first));
+
+        FrameReader r = new FrameReader(new ByteArrayInputStream(wire.toByteArray()), 1_024, 1_024);
+        assertThat(r.read().header().path("seq").asInt()).isEqualTo(1);
+        Frame withBody = r.read();
+        assertThat(withBody.header().path("seq").asInt()).isEqualTo(2);
+        assertThat(withBody.body()).containsExactly(7, 8);
+        assertThat(r.read().header().path("seq").asInt()).isEqualTo(3);
+        assertThat(r.read().header().path("seq").asInt()).isEqualTo(1);
+        assertThat(r.read()).isNull();
+    }
+
+    private static ObjectNode sampleHeader(int seq) {
+        return JsonNodeFactory.instance.objectNode().put("type", "sample").put("seq", seq);
+    }
 }

@@ -10,6 +10,8 @@ import java.util.List;
  * its parts {@code hostile} and {@code soak} ({@code --hostile N}, {@code --attack-seconds S},
  * {@code --soak-minutes M}); the daemon's start-up time and resident memory with {@code bench/run footprint}
  * (only when named: minutes; {@code aibo} or {@code pioneer} for one robot, {@code --runs N}, {@code --until S}).
+ * {@code fanout --clients N --hz N} runs only the fan-out crowd round, with N readers at N Hz
+ * ({@code --reader-threads}: a thread per reader instead of one selector).
  */
 public final class Benchmarks {
 
@@ -36,7 +38,10 @@ public final class Benchmarks {
         if (all || list.contains("throughput")) {
             new ThroughputBench(3, seconds).run();
         }
-        if (all || list.contains("fanout")) {
+        if (list.contains("fanout") && (list.contains("--clients") || list.contains("--hz"))) {
+            new FanOutCrowd(option(list, "--clients", 200), option(list, "--hz", 100), 2, seconds,
+                    list.contains("--reader-threads")).run();
+        } else if (all || list.contains("fanout")) {
             new FanOutBench(2, seconds).run();
         }
         if (all || list.contains("vision")) {

@@ -12,7 +12,8 @@ import org.habla.daemon.Daemon;
  * Benchmark (c): one exposed method, ten control clients on its socket. The robot streams at a fixed
  * rate through the same chain as benchmark (a); each client counts samples, sequence gaps and latency;
  * the daemon's socket figures give what its per-client queues dropped. A last round adds an eleventh
- * client that connects and never reads, to show that it alone loses samples.
+ * client that connects and never reads, to show that it alone loses samples; then {@link FanOutCrowd}'s round
+ * of 200 readers at 100 Hz.
  */
 final class FanOutBench {
 
@@ -35,6 +36,7 @@ final class FanOutBench {
             round(rateHz, false);
         }
         round(5_000, true);
+        new FanOutCrowd(200, 100, warmupS, seconds, false).run();
     }
 
     private void round(int rateHz, boolean stalled) throws Exception {
@@ -90,7 +92,8 @@ final class FanOutBench {
         }
     }
 
-    private static long dropped(Daemon daemon) {
+    /** Samples the daemon's socket {@code value} has dropped from its client queues so far. */
+    static long dropped(Daemon daemon) {
         for (JsonNode s : daemon.status().path("sockets")) {
             if ("value".equals(s.path("socket").asText())) {
                 return s.path("dropped").asLong();

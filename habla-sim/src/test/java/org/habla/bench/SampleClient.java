@@ -16,7 +16,7 @@ import org.habla.graph.EngineClock;
  * sample's age — now minus its source time {@code "t"} — into a histogram, counts samples and the gaps
  * in their sequence numbers.
  */
-final class SampleClient implements AutoCloseable {
+final class SampleClient implements AutoCloseable, FanOutCrowd.Figures {
 
     private static final ObjectMapper JSON = new ObjectMapper();
 
@@ -75,7 +75,8 @@ final class SampleClient implements AutoCloseable {
     }
 
     /** Samples received since connecting, recorded or not. */
-    long total() {
+    @Override
+    public long total() {
         return total;
     }
 
@@ -90,16 +91,19 @@ final class SampleClient implements AutoCloseable {
         recording = false;
     }
 
-    synchronized Histogram latencyMicros() {
+    @Override
+    public synchronized Histogram latencyMicros() {
         return latencyMicros.copy();
     }
 
-    synchronized long samples() {
+    @Override
+    public synchronized long samples() {
         return samples;
     }
 
     /** Samples the sequence numbers say were never received. */
-    synchronized long missing() {
+    @Override
+    public synchronized long missing() {
         return missing;
     }
 

@@ -399,6 +399,7 @@ public final class SphinxDecoder {
                 new LinkedBlockingQueue<>(), r -> {
                     Thread t = new Thread(r, "habla-sphinx-phones");
                     t.setDaemon(true);
+                    t.setPriority(Thread.MIN_PRIORITY); // heavy, like the engine's background work it runs beside
                     return t;
                 });
         pool.allowCoreThreadTimeOut(true);
