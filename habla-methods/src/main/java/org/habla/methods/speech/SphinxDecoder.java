@@ -194,7 +194,7 @@ public final class SphinxDecoder {
      * (the grammar and those it may import), as a file. Sphinx keeps every line of the dictionary it is given
      * for as long as the recognizer lives, 134 000 words (about 20 MB) for the few dozen a grammar says.
      */
-    private static Path grammarDictionary(Path grammar) throws IOException {
+    static Path grammarDictionary(Path grammar) throws IOException {
         java.util.Set<String> words = new java.util.HashSet<>();
         try (var siblings = Files.list(grammar.toAbsolutePath().normalize().getParent())) {
             for (Path g : siblings.filter(p -> p.toString().endsWith(".gram")).toList()) {
