@@ -7,8 +7,8 @@ import java.util.concurrent.atomic.AtomicInteger;
 /**
  * The threads a daemon or a worker runs its methods' heavy work on ({@code background(..)}: loading models,
  * decoding speech, segmenting images): one per core, at least two, daemon threads at the lowest Java priority, so
- * heavy work yields to the method threads wherever the JVM maps priorities to the system's
- * ({@code -XX:ThreadPriorityPolicy=1} in config/daemon.jvm-options; docs/deployment.md).
+ * heavy work yields to the method threads wherever the JVM maps priorities to the system's (with
+ * {@code -XX:ThreadPriorityPolicy=1}: an option a deployment may add, not a default; docs/deployment.md).
  */
 public final class BackgroundPool {
 
