@@ -27,11 +27,6 @@ class WorkCount {
         }
 
         @Override
-        long now() {
-            throw new IllegalStateException("this graph does not count its work: only a replay does");
-        }
-
-        @Override
         boolean awaitIdle(long millis) {
             throw new IllegalStateException("this graph does not count its work: only a replay does");
         }
@@ -47,10 +42,6 @@ class WorkCount {
 
     void end() {
         count.decrementAndGet();
-    }
-
-    long now() {
-        return count.get();
     }
 
     /** Waits until nothing is in flight; false if that took longer than {@code millis}. */
