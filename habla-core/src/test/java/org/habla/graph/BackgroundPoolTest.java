@@ -1,6 +1,7 @@
 package org.habla.graph;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.junit.jupiter.api.Assumptions.assumeTrue;
 
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.TimeUnit;
@@ -16,6 +17,40 @@ class BackgroundPoolTest {
             assertThat(t.getName()).startsWith("test-heavy-");
             assertThat(t.isDaemon()).isTrue();
             assertThat(t.getPriority()).isEqualTo(Thread.MIN_PRIORITY);
+        } finally {
+            pool.shutdownNow();
+        }
+    }
+
+    @Test
+    void withANiceValueConfiguredTheHeavyThreadsRunAtThatNiceValueAndTheCallerKeepsItsOwn() throws Exception {
+        assumeTrue(ThreadNice.current().isPresent(), "Linux reports no nice value per thread here");
+        int callerBefore = ThreadNice.current().getAsInt();
+        assumeTrue(callerBefore < 19, "this test already runs at nice 19");
+        System.setProperty(BackgroundPool.NICE_PROPERTY, "19");
+        ExecutorService pool;
+        try {
+            pool = BackgroundPool.create("test-nice-");
+        } finally {
+            System.clearProperty(BackgroundPool.NICE_PROPERTY);
+        }
+        try {
+            int nice = pool.submit(() -> ThreadNice.current().orElse(-100)).get(20, TimeUnit.SECONDS);
+            assertThat(nice).isEqualTo(19);
+        } finally {
+            pool.shutdownNow();
+        }
+        assertThat(ThreadNice.current()).hasValue(callerBefore);
+    }
+
+    @Test
+    void withoutANiceValueConfiguredTheHeavyThreadsKeepTheProcessNiceValue() throws Exception {
+        assumeTrue(ThreadNice.current().isPresent(), "Linux reports no nice value per thread here");
+        int caller = ThreadNice.current().getAsInt();
+        ExecutorService pool = BackgroundPool.create("test-plain-");
+        try {
+            assertThat(pool.submit(() -> ThreadNice.current().orElse(-100)).get(10, TimeUnit.SECONDS))
+                    .isEqualTo(caller);
         } finally {
             pool.shutdownNow();
         }
