@@ -23,6 +23,8 @@ final class MethodScheduler {
 
     private static final Logger LOG = LoggerFactory.getLogger(MethodScheduler.class);
     private static final long IDLE_PARK_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
+    /** Looks at a claimed, not yet filled queue place before the thread yields its core to the producer. */
+    private static final int SPINS_BEFORE_YIELD = 64;
 
     private final String id;
     private final List<InputSlot> slots;
@@ -130,15 +132,34 @@ final class MethodScheduler {
     }
 
     private void loop() {
+        int misses = 0;
         while (running) {
-            if (!drainOnce()) {
-                // Say so before the last look: a sample offered after it finds parking set and unparks us.
-                parking = true;
-                if (running && nothingWaiting()) {
-                    LockSupport.parkNanos(this, IDLE_PARK_NANOS);
-                }
-                parking = false;
+            if (drainOnce()) {
+                misses = 0;
+                continue;
             }
+            // Say so before the last look: a sample offered after it finds parking set and unparks us.
+            parking = true;
+            if (running && nothingWaiting()) {
+                LockSupport.parkNanos(this, IDLE_PARK_NANOS);
+                misses = 0;
+            } else {
+                waitForFill(++misses);
+            }
+            parking = false;
+        }
+    }
+
+    /**
+     * A producer has claimed a place in a queue and not filled it yet: a few instructions, unless the producer
+     * was descheduled in between, and then this thread gives its core away rather than spin for the producer's
+     * whole time slice.
+     */
+    private static void waitForFill(int misses) {
+        if (misses < SPINS_BEFORE_YIELD) {
+            Thread.onSpinWait();
+        } else {
+            Thread.yield();
         }
     }
 

@@ -42,7 +42,9 @@ final class IsolationBench {
                 rounds, seconds);
         System.out.printf("%-44s %8s %8s %8s %8s %8s %8s%n", "path", "samples", "lost", "p50 µs", "p99 µs",
                 "p99.9 µs", "max µs");
-        LatencyBench latency = new LatencyBench(1_000, 5, seconds);
+        // Each round is a new daemon process: its warm-up is the latency bench's JIT warm-up, so that neither
+        // set-up is measured while the compiler still works on the engine's code.
+        LatencyBench latency = new LatencyBench(1_000, LatencyBench.JIT_WARMUP_S, seconds);
         List<LatencyBench.Figures> alone = new ArrayList<>();
         List<LatencyBench.Figures> beside = new ArrayList<>();
         for (int r = 1; r <= rounds; r++) {

@@ -16,6 +16,9 @@ import org.habla.daemon.Daemon;
  */
 final class LatencyBench {
 
+    /** How long each daemon path runs before any is measured, in a JVM that has not run it yet. */
+    static final int JIT_WARMUP_S = 10;
+
     private final int rateHz;
     private final int warmupS;
     private final int seconds;
@@ -31,14 +34,21 @@ final class LatencyBench {
                 rateHz, warmupS, seconds);
         System.out.printf("%-44s %8s %8s %8s %8s %8s %8s%n", "path", "samples", "lost", "p50 µs", "p99 µs",
                 "p99.9 µs", "max µs");
-        measure("daemon: channel -> pass-through x2", robot -> {
+        PathFactory numbers = robot -> {
             Daemon d = BenchDaemon.start(robot.port());
             return new Path(d.port("value"), d::close);
-        });
-        measure("daemon: sonar -> nearest-distance -> relay", BenchRobot.Channels.SONAR, robot -> {
+        };
+        PathFactory sonar = robot -> {
             Daemon d = BenchDaemon.startSonarChain(robot.port());
             return new Path(d.port("value"), d::close);
-        }, null);
+        };
+        System.out.printf("(JIT warm-up: each daemon path runs %d s unmeasured first, so that no path is measured "
+                + "while the compiler still works on the engine's code)%n", JIT_WARMUP_S);
+        LatencyBench warmUp = new LatencyBench(rateHz, JIT_WARMUP_S, 0);
+        warmUp.quietly(numbers, BenchRobot.Channels.NUMBER);
+        warmUp.quietly(sonar, BenchRobot.Channels.SONAR);
+        measure("daemon: channel -> pass-through x2", numbers);
+        measure("daemon: sonar -> nearest-distance -> relay", BenchRobot.Channels.SONAR, sonar, null);
         measure("plain relay, 1 thread", robot -> {
             PlainRelay r = new PlainRelay(robot.port(), 0, false);
             return new Path(r.port(), r::close);
@@ -75,6 +85,19 @@ final class LatencyBench {
 
     interface PathFactory {
         Path open(BenchRobot robot) throws Exception;
+    }
+
+    /** Runs a path for the warm-up time without measuring or printing anything. */
+    void quietly(PathFactory factory, BenchRobot.Channels channels) throws Exception {
+        try (BenchRobot robot = new BenchRobot(1_000_000_000L / rateHz, channels)) {
+            Path path = factory.open(robot);
+            try (SampleClient client = path.connector().connect(path.port())) {
+                await(() -> client.total() > 0, 20_000, "warm-up: no sample reached the client");
+                Thread.sleep(warmupS * 1000L);
+            } finally {
+                path.closer().close();
+            }
+        }
     }
 
     /** One measurement of a path; {@code during} runs once the client has had its first sample (may be null). */
