@@ -16,6 +16,7 @@ import java.util.Map;
 import java.util.ServiceLoader;
 import java.util.function.Supplier;
 import java.util.stream.Stream;
+import org.habla.config.ConfigLoader;
 import org.slf4j.LoggerFactory;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -74,6 +75,10 @@ public final class Habla implements Runnable {
 
     /** Runs the command line and returns the exit code. */
     public static int execute(String... args) {
+        if ("run".equals(subcommand(args))) {
+            // Jackson's readers take about as long to make as picocli the command line: both at once.
+            Preload.inBackground("config", ConfigLoader::preload);
+        }
         ClassLoader loader = pluginLoader(args);
         Thread.currentThread().setContextClassLoader(loader);
         CommandLine cli = commandLine(loader, subcommand(args));

@@ -17,6 +17,7 @@ import org.habla.daemon.PlacementRefusedException;
 import org.habla.daemon.PortsUnavailableException;
 import org.habla.graph.EngineClock;
 import org.habla.graph.MethodGraph;
+import org.habla.monitor.Monitor;
 import org.habla.recording.Recorder;
 import org.habla.recording.RecordingHeader;
 import org.habla.plugin.PluginRegistry;
@@ -71,6 +72,10 @@ public final class RunCommand implements Callable<Integer> {
         } catch (ConfigException e) {
             ConfigReport.errors(err, config, e.errors(), "the daemon does not start");
             return ExitCodes.USAGE_OR_CONFIG;
+        }
+        if (cfg.status().monitorPort() > 0) {
+            // The monitor's web server is the slowest to make of the ports: its classes load meanwhile.
+            Preload.inBackground("monitor", Monitor::preload);
         }
         if (!(timeScale >= 1) || !Double.isFinite(timeScale)) {
             err.println("habla run: --time-scale must be 1 or more, was " + timeScale);

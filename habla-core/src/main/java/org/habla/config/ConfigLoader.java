@@ -90,6 +90,20 @@ public final class ConfigLoader {
         this.registry = Objects.requireNonNull(registry, "registry");
     }
 
+    /**
+     * Reads a config of nothing but a system name and binds an empty params object, and drops both: Jackson's
+     * readers are made and its classes loaded. {@code habla run} does this on a thread of its own while the command
+     * line is being read, so that loading the real config starts warm (docs/performance.md (l)).
+     */
+    public static void preload() {
+        try {
+            new ConfigLoader(PluginRegistry.of(List.of(), List.of())).parse("{\"system\": \"preload\"}");
+        } catch (ConfigException e) {
+            throw new IllegalStateException("the preload config is not valid: " + e.errors(), e);
+        }
+        ParamsBinder.bind(null, org.habla.plugin.NoParams.class, JsonPath.ROOT, new ConfigErrors());
+    }
+
     /** Reads and checks a config file; I/O errors become an error at {@code $}. */
     public HablaConfig load(Path file) throws ConfigException {
         String text;

@@ -149,7 +149,7 @@ public final class Daemon implements AutoCloseable {
                 // socket serves, so a monitor port taken meanwhile still leaves the control sockets unused.
                 try {
                     d.monitor = Monitor.start(config.status().bind(), config.status().monitorPort(), d.liveView(),
-                            SvgWriter.write(GraphPicture.of(config, registry)));
+                            () -> SvgWriter.write(GraphPicture.of(config, registry)));
                 } catch (IOException e) {
                     throw new PortsUnavailableException(List.of(new ConfigError("$.status.monitorPort", e.getMessage())));
                 }

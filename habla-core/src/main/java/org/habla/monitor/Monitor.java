@@ -8,6 +8,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Objects;
+import java.util.function.Supplier;
 import org.eclipse.jetty.http.HttpHeader;
 import org.eclipse.jetty.http.HttpStatus;
 import org.eclipse.jetty.server.Handler;
@@ -60,11 +61,33 @@ public final class Monitor implements AutoCloseable {
     }
 
     /**
+     * Makes a web server like the monitor's and drops it, unstarted: nothing listens and no thread starts. A daemon
+     * runs this on a thread of its own while it checks its ports and builds its graph, so that the classes of Jetty
+     * and its WebSocket side are loaded on the other core instead of in {@link #start}, the last step before the
+     * ports are served (docs/performance.md (l)).
+     */
+    public static void preload() {
+        Server server = new Server(new QueuedThreadPool(HTTP_THREADS, 2));
+        server.addConnector(new ServerConnector(server, 1, 1));
+        server.setHandler(WebSocketUpgradeHandler.from(server, container -> { }));
+    }
+
+    /**
      * Starts the monitor on {@code bind:port} (port 0: any free port).
      *
      * @param graphSvg the picture of the config, as {@code habla graph --format svg} draws it
      */
     public static Monitor start(String bind, int port, LiveGraph graph, String graphSvg) throws IOException {
+        return start(bind, port, graph, () -> graphSvg);
+    }
+
+    /**
+     * Starts the monitor on {@code bind:port} (port 0: any free port), drawing the picture of the config when it is
+     * first asked for: a daemon's ports need not wait for the drawing.
+     *
+     * @param graphSvg draws the picture of the config, as {@code habla graph --format svg} does; called once
+     */
+    public static Monitor start(String bind, int port, LiveGraph graph, Supplier<String> graphSvg) throws IOException {
         Objects.requireNonNull(graph, "graph");
         List<OutputInfo> outputs = graph.outputs();
         Map<String, List<String>> inputs = graph.inputs();
@@ -156,13 +179,22 @@ public final class Monitor implements AutoCloseable {
     /** The plain HTTP side: the page's files, the picture and the newest status; GET only. */
     private static final class Pages extends Handler.Abstract {
         private final WebFiles files;
-        private final byte[] svg;
+        private final Supplier<String> drawing;
         private final MonitorHub hub;
+        private byte[] svg;
 
-        Pages(WebFiles files, String svg, MonitorHub hub) {
+        Pages(WebFiles files, Supplier<String> drawing, MonitorHub hub) {
             this.files = files;
-            this.svg = svg.getBytes(StandardCharsets.UTF_8);
+            this.drawing = drawing;
             this.hub = hub;
+        }
+
+        /** The picture, drawn on the first request for it. */
+        private synchronized byte[] svg() {
+            if (svg == null) {
+                svg = drawing.get().getBytes(StandardCharsets.UTF_8);
+            }
+            return svg;
         }
 
         @Override
@@ -175,7 +207,7 @@ public final class Monitor implements AutoCloseable {
             }
             String path = Request.getPathInContext(request);
             switch (path) {
-                case "/graph.svg" -> send(response, callback, "image/svg+xml; charset=utf-8", svg);
+                case "/graph.svg" -> send(response, callback, "image/svg+xml; charset=utf-8", svg());
                 case "/status.json" -> send(response, callback, "application/json",
                         hub.statusText().getBytes(StandardCharsets.UTF_8));
                 default -> {

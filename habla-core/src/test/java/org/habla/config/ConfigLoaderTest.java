@@ -26,6 +26,11 @@ class ConfigLoaderTest {
     }
 
     @Test
+    void preloadingReadsItsOwnSmallConfigWithoutAnError() {
+        org.assertj.core.api.Assertions.assertThatCode(ConfigLoader::preload).doesNotThrowAnyException();
+    }
+
+    @Test
     void validConfigLoadsIntoTheExpectedRecords() throws Exception {
         HablaConfig config = loader.load(resource("valid/pioneer-like.json"));
 

@@ -122,6 +122,29 @@ class MonitorTest {
                 .isEqualTo(503);
     }
 
+    @Test
+    void thePictureIsDrawnOnTheFirstRequestForItAndOnlyOnce() throws Exception {
+        monitor.close();
+        java.util.concurrent.atomic.AtomicInteger drawn = new java.util.concurrent.atomic.AtomicInteger();
+        monitor = Monitor.start("127.0.0.1", 0, graph, () -> {
+            drawn.incrementAndGet();
+            return "<svg xmlns=\"http://www.w3.org/2000/svg\" id=\"drawn\"/>";
+        });
+        assertThat(get("/status.json").statusCode()).isEqualTo(200);
+        assertThat(drawn).hasValue(0);
+        assertThat(get("/graph.svg").body()).contains("id=\"drawn\"");
+        assertThat(get("/graph.svg").body()).contains("id=\"drawn\"");
+        assertThat(drawn).hasValue(1);
+    }
+
+    @Test
+    void preloadingStartsNoThreadOfJettys() {
+        java.util.Set<Thread> before = Thread.getAllStackTraces().keySet();
+        Monitor.preload();
+        assertThat(Thread.getAllStackTraces().keySet())
+                .filteredOn(t -> t.getName().startsWith("qtp") && !before.contains(t)).isEmpty();
+    }
+
     private HttpResponse<String> get(String path) throws Exception {
         return http.send(HttpRequest.newBuilder(uri(path)).GET().build(), HttpResponse.BodyHandlers.ofString());
     }
