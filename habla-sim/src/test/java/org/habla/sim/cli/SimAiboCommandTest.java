@@ -101,7 +101,9 @@ class SimAiboCommandTest {
     private static int freeBase() throws IOException {
         SplittableRandom random = new SplittableRandom();
         for (int attempt = 0; attempt < 50; attempt++) {
-            int base = 20_000 + 100 * random.nextInt(300);
+            // Below the kernel's usual ephemeral range (32768 and up): between this probe and the simulator's
+            // bind, a connection another test opens must not take one of these ports as its local port.
+            int base = 20_000 + 100 * random.nextInt(127);
             List<ServerSocket> held = new ArrayList<>();
             try {
                 for (int n : new int[] {11, 20, 31, 50, 52, 53, 70, 71}) {
