@@ -20,10 +20,14 @@ public final class BackgroundPool {
     private BackgroundPool() {
     }
 
-    /** A new pool whose threads are named {@code prefix} and a number. */
+    /**
+     * A new pool whose threads are named {@code prefix} and a number.
+     *
+     * @throws IllegalArgumentException if {@value #NICE_PROPERTY} is set to anything but 0 to 19
+     */
     public static ExecutorService create(String prefix) {
         AtomicInteger n = new AtomicInteger();
-        int nice = Integer.getInteger(NICE_PROPERTY, 0);
+        int nice = niceValue(System.getProperty(NICE_PROPERTY));
         return Executors.newFixedThreadPool(Math.max(2, Runtime.getRuntime().availableProcessors()), r -> {
             Runnable body = nice <= 0 ? r : () -> {
                 ThreadNice.lowerTo(nice);
@@ -34,5 +38,22 @@ public final class BackgroundPool {
             t.setPriority(Thread.MIN_PRIORITY);
             return t;
         });
+    }
+
+    /** The nice value the property asks for, checked here so that a wrong one stops the start, not a thread. */
+    static int niceValue(String property) {
+        if (property == null || property.isBlank()) {
+            return 0;
+        }
+        try {
+            int nice = Integer.parseInt(property.strip());
+            if (nice >= 0 && nice <= 19) {
+                return nice;
+            }
+        } catch (NumberFormatException e) {
+            // said below
+        }
+        throw new IllegalArgumentException("-D" + NICE_PROPERTY + " takes 0 (none) or a nice value of 1 to 19, not '"
+                + property + "'");
     }
 }

@@ -55,4 +55,15 @@ class BackgroundPoolTest {
             pool.shutdownNow();
         }
     }
+
+    @Test
+    void aNiceValueOutsideZeroToNineteenIsRefusedNamingTheProperty() {
+        assertThat(BackgroundPool.niceValue(null)).isZero();
+        assertThat(BackgroundPool.niceValue(" 7 ")).isEqualTo(7);
+        for (String wrong : new String[] {"20", "-1", "low"}) {
+            org.assertj.core.api.Assertions.assertThatThrownBy(() -> BackgroundPool.niceValue(wrong))
+                    .isInstanceOf(IllegalArgumentException.class)
+                    .hasMessageContaining(BackgroundPool.NICE_PROPERTY).hasMessageContaining("'" + wrong + "'");
+        }
+    }
 }
