@@ -66,9 +66,9 @@ public final class SphinxDecoder {
     }
 
     /**
-     * Sphinx-4's loggers named after its classes (outside its configurations' own, which the config sets
-     * to WARNING): held here so the level stays set, WARNING so decoding does not fill the log with
-     * INFO lines such as each utterance's cepstral mean.
+     * Sphinx-4's loggers named after its classes (outside its configurations' own, see {@link #quiet(ConfigurationManager)}):
+     * held here so the level stays set, WARNING so decoding does not fill the log with INFO lines such as each
+     * utterance's cepstral mean.
      */
     private static final java.util.logging.Logger SPHINX_LOG = quiet(java.util.logging.Logger.getLogger("edu.cmu.sphinx"));
 
@@ -77,8 +77,21 @@ public final class SphinxDecoder {
         return log;
     }
 
+    /**
+     * The parent of a configuration's component loggers (named after its file), at WARNING. Sphinx sets that level
+     * itself when it reads the config, but the logging system holds loggers weakly: once collected, the components'
+     * loggers fall back to the root's INFO and every utterance logged its cepstral mean. Whoever uses the
+     * configuration's components holds the returned logger as long.
+     */
+    static java.util.logging.Logger quiet(ConfigurationManager cm) {
+        String prefix = edu.cmu.sphinx.util.props.ConfigurationManagerUtils.getLogPrefix(cm);
+        return quiet(java.util.logging.Logger.getLogger(prefix.substring(0, prefix.length() - 1)));
+    }
+
     private final ConfigurationManager cm;
     private final ConfigurationManager phoneCm;
+    /** The two configurations' loggers at WARNING, held as long as their components are ({@link #quiet(ConfigurationManager)}). */
+    private final List<java.util.logging.Logger> quietLoggers;
     private final Recognizer recognizer;
     private final Recognizer phoneRecognizer;
     private final StreamDataSource source;
@@ -94,6 +107,7 @@ public final class SphinxDecoder {
     private SphinxDecoder(ConfigurationManager cm, ConfigurationManager phoneCm) throws IOException {
         this.cm = cm;
         this.phoneCm = phoneCm;
+        this.quietLoggers = List.of(quiet(cm), quiet(phoneCm));
         this.recognizer = cm.lookup("recognizer");
         // the free-phone linguist reads the model when it is made: load it first
         phoneCm.<edu.cmu.sphinx.linguist.acoustic.AcousticModel>lookup("acousticModel").allocate();
@@ -284,6 +298,7 @@ public final class SphinxDecoder {
         edu.cmu.sphinx.linguist.language.grammar.AlignerGrammar grammar = cm.lookup("alignerGrammar");
         StreamDataSource source = cm.lookup("dataSource");
         Sphinx3Loader loader = cm.lookup("acousticModelLoader");
+        java.util.logging.Logger quietLog = quiet(cm);
         try {
             // the grammar of each utterance is its phrase; the linguist compiles it again when it changes
             aligner.allocate();
@@ -316,6 +331,8 @@ public final class SphinxDecoder {
             throw e;
         } catch (Exception e) {
             throw new IOException("speaker adaptation failed: " + e.getMessage(), e);
+        } finally {
+            java.lang.ref.Reference.reachabilityFence(quietLog);
         }
     }
 
