@@ -23,7 +23,9 @@ import org.habla.testing.DaemonProcess;
  * {@code channel} → {@code pass-through} ×2 to a socket — runs in a daemon process of its own, then in the daemon of
  * config/aibo.json beside the simulated Aibo with its teacher talking and its camera streaming (speech recognition
  * and image segmentation at work), in interleaved rounds; the light chain's percentiles and their ratios are
- * printed. Both daemons run with config/daemon.jvm-options, as {@code habla run} does.
+ * printed. Both daemons run with config/daemon.jvm-options, as {@code habla run} does. Under each round it prints
+ * what else held the cores while it was measured: the CPU time of the daemon and of the simulated Aibo (which shares
+ * the two cores here, where a real Aibo would not), and the daemon's collector pauses, read from its GC log.
  */
 final class IsolationBench {
 
@@ -31,6 +33,11 @@ final class IsolationBench {
 
     private final int seconds;
     private final int rounds;
+    /** The processes of the rig being measured and its daemon's GC log (set by {@link #rig}). */
+    private static volatile Rig current;
+
+    private record Rig(Process daemon, Process sim, Path gcLog) {
+    }
 
     IsolationBench(int seconds, int rounds) {
         this.seconds = seconds;
@@ -48,8 +55,10 @@ final class IsolationBench {
         List<LatencyBench.Figures> alone = new ArrayList<>();
         List<LatencyBench.Figures> beside = new ArrayList<>();
         for (int r = 1; r <= rounds; r++) {
-            alone.add(latency.measure("round " + r + ": light chain alone", robot -> rig(robot.port(), false)));
-            beside.add(latency.measure("round " + r + ": beside speech and vision", robot -> rig(robot.port(), true)));
+            alone.add(latency.measure("round " + r + ": light chain alone", robot -> rig(robot.port(), false),
+                    IsolationBench::accounting));
+            beside.add(latency.measure("round " + r + ": beside speech and vision", robot -> rig(robot.port(), true),
+                    IsolationBench::accounting));
         }
         long p50Alone = median(alone.stream().mapToLong(LatencyBench.Figures::p50).toArray());
         long p99Alone = median(alone.stream().mapToLong(LatencyBench.Figures::p99).toArray());
@@ -57,6 +66,44 @@ final class IsolationBench {
         long p99Beside = median(beside.stream().mapToLong(LatencyBench.Figures::p99).toArray());
         System.out.printf("  medians: alone p50 %d µs, p99 %d µs; beside p50 %d µs, p99 %d µs; p99 ratio %.2f (goal <= 1.5)%n",
                 p50Alone, p99Alone, p50Beside, p99Beside, p99Beside / (double) Math.max(1, p99Alone));
+    }
+
+    /**
+     * From the client's first sample to the end of the round (the warm-up and the measured window): the CPU the
+     * daemon and the simulator used, in cores, and the daemon's collector pauses.
+     */
+    private static AutoCloseable accounting(LatencyBench.Path path) throws IOException {
+        Rig rig = current;
+        long start = System.nanoTime();
+        long daemonTicks = cpuTicks(rig.daemon());
+        long simTicks = rig.sim() == null ? 0 : cpuTicks(rig.sim());
+        int gcLines = Files.readAllLines(rig.gcLog()).size();
+        return () -> {
+            double s = (System.nanoTime() - start) / 1e9;
+            double daemon = (cpuTicks(rig.daemon()) - daemonTicks) / TICKS_PER_S / s;
+            double sim = rig.sim() == null ? 0 : (cpuTicks(rig.sim()) - simTicks) / TICKS_PER_S / s;
+            List<String> lines = Files.readAllLines(rig.gcLog());
+            List<String> pauses = lines.subList(Math.min(gcLines, lines.size()), lines.size()).stream()
+                    .filter(l -> l.contains(" Pause ") && l.endsWith("ms")).toList();
+            double pausedMs = pauses.stream().mapToDouble(l -> Double.parseDouble(l.substring(l.lastIndexOf(' ') + 1,
+                    l.length() - 2))).sum();
+            System.out.printf("    over %.0f s: daemon %.2f cores, simulator %.2f cores; daemon's GC: %d pauses, %.0f ms"
+                    + " (%.1f ms/s)%n", s, daemon, sim, pauses.size(), pausedMs, pausedMs / s);
+        };
+    }
+
+    /** Clock ticks per second of /proc/PID/stat's times (USER_HZ, 100 on Linux). */
+    private static final double TICKS_PER_S = 100;
+
+    /** User and system time of a process so far, in clock ticks; 0 where /proc is missing or it has gone. */
+    private static long cpuTicks(Process p) {
+        try {
+            String stat = Files.readString(Path.of("/proc/" + p.pid() + "/stat"));
+            String[] f = stat.substring(stat.lastIndexOf(')') + 2).split(" ");
+            return Long.parseLong(f[11]) + Long.parseLong(f[12]); // utime, stime (fields 14 and 15)
+        } catch (IOException | RuntimeException e) {
+            return 0;
+        }
     }
 
     private static long median(long[] v) {
@@ -103,11 +150,16 @@ final class IsolationBench {
             }
         };
         try {
+            Process sim = null;
             if (aibo) {
-                processes.add(launch(dir, "sim.log", "sim", "aibo", "--world", "aibo-arena", "--seed", "7",
-                        "--teacher", "on", "--port-base", "" + (10000 + offset), "--truth-port", "" + (10199 + offset)));
+                sim = launch(dir, "sim.log", List.of(), "sim", "aibo", "--world", "aibo-arena", "--seed", "7",
+                        "--teacher", "on", "--port-base", "" + (10000 + offset), "--truth-port", "" + (10199 + offset));
+                processes.add(sim);
             }
-            processes.add(launch(dir, "daemon.log", "run", config.toString()));
+            Path gcLog = dir.resolve("gc.log");
+            Process daemon = launch(dir, "daemon.log", List.of("-Xlog:gc:file=" + gcLog), "run", config.toString());
+            processes.add(daemon);
+            current = new Rig(daemon, sim, gcLog);
             awaitReady(statusPort, 180_000, dir);
             return new LatencyBench.Path(port, closer);
         } catch (Exception e) {
@@ -116,10 +168,12 @@ final class IsolationBench {
         }
     }
 
-    private static Process launch(Path dir, String log, String... args) throws IOException {
+    /** {@code habla ARGS} in a JVM of its own, with the daemon's options and {@code jvmOptions}. */
+    private static Process launch(Path dir, String log, List<String> jvmOptions, String... args) throws IOException {
         List<String> cmd = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "--enable-native-access=ALL-UNNAMED"));
         cmd.addAll(DaemonJvm.options(PioneerRig.home(), args[0]));
+        cmd.addAll(jvmOptions);
         cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "-Dhabla.home=" + PioneerRig.home(),
                 "org.habla.cli.Habla"));
         cmd.addAll(List.of(args));
