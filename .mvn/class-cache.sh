@@ -5,6 +5,7 @@
 #
 #   JDK 24 and later: the JDK's ahead-of-time cache (classes already loaded and linked).
 #     no cache, no recording   the daemon records what it loads, when it stops     DIR/NAME-KEY.PID.aotconf
+#                              (not one with a flight recording: the JVM would turn that off)
 #     a finished recording     the launch makes the cache from it in the background, at the lowest priority,
 #                              and starts without one                              DIR/NAME-KEY.aot
 #     a cache                  the daemon maps it
@@ -55,5 +56,7 @@ habla_class_cache() {
       rm -f "$_making.aotconf" "$_making.aot" ) </dev/null >/dev/null 2>&1 &
     return 0
   done
+  # The JVM turns a flight recording off while it records classes: a daemon asked for one records nothing.
+  case " $_opts " in *' -XX:StartFlightRecording'*) return 0 ;; esac
   habla_cache_opts=(-XX:AOTMode=record "-XX:AOTConfiguration=$_base.$$.aotconf" "${_quiet[@]}")
 }

@@ -71,6 +71,15 @@ class LauncherClassCacheTest {
     }
 
     @Test
+    void aDaemonWithAFlightRecordingRecordsNoCacheSinceTheJvmWouldTurnTheRecordingOff(@TempDir Path tmp)
+            throws Exception {
+        Path jdk = fakeJdk(tmp, "25.0.1");
+        Path cds = tmp.resolve("cds");
+        assertThat(options(jdk, cds, tmp, "-Xmx256m", "-XX:StartFlightRecording=duration=60s,filename=d.jfr")).isEmpty();
+        assertThat(options(jdk, cds, tmp, "-Xmx256m").get(0)).isEqualTo("-XX:AOTMode=record");
+    }
+
+    @Test
     void withThisJdkARecordedCacheIsUsedAndOneThatNoLongerFitsStillStartsSilently(@TempDir Path tmp)
             throws Exception {
         Path jdk = Path.of(System.getProperty("java.home"));
