@@ -45,6 +45,12 @@ public final class DaemonProcess implements AutoCloseable {
         return new DaemonProcess(p, log);
     }
 
+    /**
+     * How long a test lets a new JVM take to open its first port: a second on a quiet machine, but one load test in
+     * five (fresh clones, busy processes on both cores) saw a simulator print nothing for 20 s.
+     */
+    public static final long START_MS = 60_000;
+
     /** Waits until a TCP port on loopback accepts connections; false after {@code millis}. */
     public static boolean awaitPort(int port, long millis) throws InterruptedException {
         return awaitPort("127.0.0.1", port, millis);

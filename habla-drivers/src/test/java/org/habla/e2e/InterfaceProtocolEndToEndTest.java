@@ -73,7 +73,7 @@ class InterfaceProtocolEndToEndTest {
             Path cfg = tmp.resolve("rover.json");
             Files.writeString(cfg, config(ports[0], ports[1], ports[2], ports[3], 500).toPrettyString());
             try (DaemonProcess daemon = DaemonProcess.start(tmp.resolve("daemon.log"), "run", cfg.toString())) {
-                assertThat(DaemonProcess.awaitPort(ports[1], 20_000)).as(daemon.output()).isTrue();
+                assertThat(DaemonProcess.awaitPort(ports[1], DaemonProcess.START_MS)).as(daemon.output()).isTrue();
                 assertThat(robot.awaitClient(10_000)).as(daemon.output()).isTrue();
 
                 List<JsonNode> lines = runClient(ports[1], ports[2]);

@@ -68,8 +68,8 @@ class PythonInterfaceExampleTest {
         try (DaemonProcess daemon = DaemonProcess.start(tmp.resolve("daemon.log"), "run", cfg.toString())) {
             assertThat(awaitLine(tmp.resolve("rover.log"), "rover listening on", 10_000))
                     .as(log(tmp, "rover.log")).isTrue();
-            assertThat(DaemonProcess.awaitPort(ports[1], 20_000)).as(daemon.output()).isTrue();
-            assertThat(DaemonProcess.awaitPort(ports[2], 20_000)).as(daemon.output()).isTrue();
+            assertThat(DaemonProcess.awaitPort(ports[1], DaemonProcess.START_MS)).as(daemon.output()).isTrue();
+            assertThat(DaemonProcess.awaitPort(ports[2], DaemonProcess.START_MS)).as(daemon.output()).isTrue();
 
             try (Socket ranges = new Socket("127.0.0.1", ports[1]); Socket motion = new Socket("127.0.0.1", ports[2])) {
                 ranges.setSoTimeout(15_000);

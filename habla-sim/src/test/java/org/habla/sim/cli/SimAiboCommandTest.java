@@ -42,7 +42,7 @@ class SimAiboCommandTest {
         try (DaemonProcess sim = DaemonProcess.start(dir.resolve("sim.log"), "sim", "aibo", "--port-base",
                 Integer.toString(base), "--truth-port", "0", "--speed", "4", "--world", "aibo-arena.json",
                 "--teacher", "off")) {
-            assertThat(DaemonProcess.awaitPort(base + 20, 20_000)).as(sim.output()).isTrue();
+            assertThat(DaemonProcess.awaitPort(base + 20, DaemonProcess.START_MS)).as(sim.output()).isTrue();
             long end = System.nanoTime() + 30_000_000_000L;
             Matcher m = Pattern.compile("ground truth (\\d+)").matcher("");
             while (System.nanoTime() < end && !m.reset(sim.output()).find()) {

@@ -182,7 +182,7 @@ class TeacherHeardThroughHablaTest {
             Files.writeString(cfg, c.toPrettyString());
 
             try (DaemonProcess daemon = DaemonProcess.start(tmp.resolve("daemon.log"), "run", cfg.toString())) {
-                assertThat(DaemonProcess.awaitPort(ports[0], 20_000)).as(daemon.output()).isTrue();
+                assertThat(DaemonProcess.awaitPort(ports[0], DaemonProcess.START_MS)).as(daemon.output()).isTrue();
                 try (TextSocket notes = new TextSocket(ports[0])) {
                     awaitListening(ports[1], "notes", "notes");
                     Map<String, String> expected = Map.of("forward", "C5", "left", "E5", "right", "G5", "back", "C6");
@@ -228,7 +228,7 @@ class TeacherHeardThroughHablaTest {
                 Files.writeString(cfg, c.toPrettyString());
 
                 try (DaemonProcess daemon = DaemonProcess.start(tmp.resolve("daemon.log"), "run", cfg.toString())) {
-                    assertThat(DaemonProcess.awaitPort(ports[0], 20_000)).as(daemon.output()).isTrue();
+                    assertThat(DaemonProcess.awaitPort(ports[0], DaemonProcess.START_MS)).as(daemon.output()).isTrue();
                     try (TextSocket words = new TextSocket(ports[0])) {
                         awaitListening(ports[1], "sound", "speech");
                         Map<String, String> expected = Map.of("forward", "go forward", "left", "turn left",
