@@ -13,6 +13,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 import org.habla.cli.DaemonJvm;
 import org.habla.sim.PortBlock;
 import org.habla.sim.scenario.DerivedConfig;
@@ -33,15 +34,34 @@ final class IsolationBench {
 
     private final int seconds;
     private final int rounds;
+    private final boolean withoutHeavy;
+    /** Method types config/aibo.json runs that count as heavy: their work runs on the background threads. */
+    private static final Set<String> HEAVY = Set.of("speech-recognition", "image-segmentation");
+
+    /** Where the light chain runs. */
+    private enum Setup {
+        ALONE("light chain alone"),
+        AIBO("beside speech and vision"),
+        /** The Aibo's daemon without its heavy methods and whatever reads from them: the robot's I/O stays. */
+        AIBO_WITHOUT_HEAVY("beside the Aibo, no speech/vision");
+
+        final String label;
+
+        Setup(String label) {
+            this.label = label;
+        }
+    }
     /** The processes of the rig being measured and its daemon's GC log (set by {@link #rig}). */
     private static volatile Rig current;
 
     private record Rig(Process daemon, Process sim, Path gcLog) {
     }
 
-    IsolationBench(int seconds, int rounds) {
+    /** @param withoutHeavy also measure each round in the Aibo's daemon with its heavy methods left out */
+    IsolationBench(int seconds, int rounds, boolean withoutHeavy) {
         this.seconds = seconds;
         this.rounds = rounds;
+        this.withoutHeavy = withoutHeavy;
     }
 
     void run() throws Exception {
@@ -54,11 +74,13 @@ final class IsolationBench {
         LatencyBench latency = new LatencyBench(1_000, LatencyBench.JIT_WARMUP_S, seconds);
         List<LatencyBench.Figures> alone = new ArrayList<>();
         List<LatencyBench.Figures> beside = new ArrayList<>();
+        List<LatencyBench.Figures> besideLight = new ArrayList<>();
         for (int r = 1; r <= rounds; r++) {
-            alone.add(latency.measure("round " + r + ": light chain alone", robot -> rig(robot.port(), false),
-                    IsolationBench::accounting));
-            beside.add(latency.measure("round " + r + ": beside speech and vision", robot -> rig(robot.port(), true),
-                    IsolationBench::accounting));
+            alone.add(round(latency, r, Setup.ALONE));
+            beside.add(round(latency, r, Setup.AIBO));
+            if (withoutHeavy) {
+                besideLight.add(round(latency, r, Setup.AIBO_WITHOUT_HEAVY));
+            }
         }
         long p50Alone = median(alone.stream().mapToLong(LatencyBench.Figures::p50).toArray());
         long p99Alone = median(alone.stream().mapToLong(LatencyBench.Figures::p99).toArray());
@@ -66,6 +88,17 @@ final class IsolationBench {
         long p99Beside = median(beside.stream().mapToLong(LatencyBench.Figures::p99).toArray());
         System.out.printf("  medians: alone p50 %d µs, p99 %d µs; beside p50 %d µs, p99 %d µs; p99 ratio %.2f (goal <= 1.5)%n",
                 p50Alone, p99Alone, p50Beside, p99Beside, p99Beside / (double) Math.max(1, p99Alone));
+        if (withoutHeavy) {
+            long p99Light = median(besideLight.stream().mapToLong(LatencyBench.Figures::p99).toArray());
+            System.out.printf("  beside the Aibo without speech and vision: p50 %d µs, p99 %d µs; p99 ratio %.2f%n",
+                    median(besideLight.stream().mapToLong(LatencyBench.Figures::p50).toArray()), p99Light,
+                    p99Light / (double) Math.max(1, p99Alone));
+        }
+    }
+
+    private static LatencyBench.Figures round(LatencyBench latency, int r, Setup setup) throws Exception {
+        return latency.measure("round " + r + ": " + setup.label, robot -> rig(robot.port(), setup),
+                IsolationBench::accounting);
     }
 
     /**
@@ -111,8 +144,35 @@ final class IsolationBench {
         return v[v.length / 2];
     }
 
+    /**
+     * The methods of {@code root} but the heavy ones and, again and again, those that read from a method left out
+     * (their wiring would be broken).
+     */
+    private static void dropHeavy(ObjectNode root) {
+        Set<String> gone = new java.util.HashSet<>();
+        ArrayNode methods = (ArrayNode) root.get("methods");
+        boolean changed = true;
+        while (changed) {
+            changed = false;
+            for (java.util.Iterator<JsonNode> it = methods.iterator(); it.hasNext(); ) {
+                JsonNode m = it.next();
+                boolean reads = false;
+                for (JsonNode source : m.path("inputs")) {
+                    String from = source.asText();
+                    reads |= gone.contains(from.contains(".") ? from.substring(0, from.indexOf('.')) : from);
+                }
+                if (HEAVY.contains(m.path("type").asText()) || reads) {
+                    gone.add(m.path("id").asText());
+                    it.remove();
+                    changed = true;
+                }
+            }
+        }
+    }
+
     /** A daemon process with the light chain, alone or in config/aibo.json beside the simulated Aibo. */
-    private static LatencyBench.Path rig(int robotPort, boolean aibo) throws Exception {
+    private static LatencyBench.Path rig(int robotPort, Setup setup) throws Exception {
+        boolean aibo = setup != Setup.ALONE;
         Path dir = Files.createTempDirectory("habla-isolation");
         int offset = PortBlock.freeOffset();
         ObjectNode root;
@@ -120,6 +180,9 @@ final class IsolationBench {
             Path derived = DerivedConfig.write(PioneerRig.home().resolve("config/aibo.json"), 1, offset,
                     dir.resolve("aibo.json"));
             root = (ObjectNode) JSON.readTree(Files.readString(derived));
+            if (setup == Setup.AIBO_WITHOUT_HEAVY) {
+                dropHeavy(root);
+            }
         } else {
             root = JSON.createObjectNode().put("system", "bench-light");
             root.putArray("interfaces");
