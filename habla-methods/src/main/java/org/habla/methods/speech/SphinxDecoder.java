@@ -66,9 +66,9 @@ public final class SphinxDecoder {
     }
 
     /**
-     * Sphinx-4's loggers named after its classes (outside its configurations' own, see {@link #quiet(ConfigurationManager)}):
-     * held here so the level stays set, WARNING so decoding does not fill the log with INFO lines such as each
-     * utterance's cepstral mean.
+     * Sphinx-4's loggers named after its classes (outside its configurations' own: see
+     * {@link #quiet(ConfigurationManager)}): held here so the level stays set, WARNING so decoding does not fill the
+     * log with INFO lines such as each utterance's cepstral mean.
      */
     private static final java.util.logging.Logger SPHINX_LOG = quiet(java.util.logging.Logger.getLogger("edu.cmu.sphinx"));
 
@@ -90,7 +90,7 @@ public final class SphinxDecoder {
 
     private final ConfigurationManager cm;
     private final ConfigurationManager phoneCm;
-    /** The two configurations' loggers at WARNING, held as long as their components are ({@link #quiet(ConfigurationManager)}). */
+    /** The two configurations' loggers at WARNING, held as long as their components are. */
     private final List<java.util.logging.Logger> quietLoggers;
     private final Recognizer recognizer;
     private final Recognizer phoneRecognizer;
