@@ -59,6 +59,13 @@ class ScriptedDaemon:
             except OSError:
                 pass
 
+    def await_pings(self, n, timeout=5.0):
+        """Waits (bounded) until the client's first n pings have been read, so that none is left unread."""
+        deadline = time.monotonic() + timeout
+        while self.pings < n and time.monotonic() < deadline:
+            time.sleep(0.01)
+        return self.pings >= n
+
     def close(self):
         self.done.set()
         self.server.close()
@@ -199,6 +206,8 @@ class ControlSocketTest(unittest.TestCase):
         daemon = ScriptedDaemon(line(HELLO), sample(1, [1.0]))
         s = self.connect(daemon)
         self.assertIsNotNone(s.next_sample(timeout=5))
+        # a socket closed with the client's ping still unread is reset, not ended: let the daemon read it first
+        self.assertTrue(daemon.await_pings(1))
         daemon.close()
         self.assertIsNone(s.next_sample(timeout=5))
 
