@@ -51,6 +51,7 @@ public final class MethodGraph implements AutoCloseable {
     private final MotionWatchdog watchdog;
     private final long startedMicros;
     private AutoCloseable watchdogTicker;
+    private AutoCloseable realtimeCarriers;
     private boolean started;
     private final GraphTap tap;
     private final WorkCount work;
@@ -68,6 +69,7 @@ public final class MethodGraph implements AutoCloseable {
         this.clock = clock;
         this.startedMicros = clock.nowMicros();
         this.backgroundPool = BackgroundPool.create("habla-background-");
+        RealtimeThreads.configured(); // a wrong priority stops the build, not a thread
         for (InterfaceConfig ic : config.interfaces()) {
             InterfaceLink link = new InterfaceLink(ic, drivers.get(ic.id()), clock, linkStates);
             InterfaceTap.attach(link, tap, clock);
@@ -177,6 +179,7 @@ public final class MethodGraph implements AutoCloseable {
         }
         started = true;
         staleness.markAll();
+        realtimeCarriers = RealtimeThreads.raiseCarriersIfAsked();
         runners.values().forEach(MethodRunner::start);
         links.values().forEach(InterfaceLink::start);
         placements.values().forEach(RemotePlacement::start);
@@ -276,6 +279,7 @@ public final class MethodGraph implements AutoCloseable {
         runners.values().forEach(r -> r.stop(STOP_WAIT_MILLIS));
         links.values().forEach(InterfaceLink::stop);
         backgroundPool.shutdownNow();
+        closeQuietly(realtimeCarriers);
         LOG.info("graph of '{}' stopped", config.system());
     }
 

@@ -25,6 +25,8 @@ final class MethodScheduler {
     private static final long IDLE_PARK_NANOS = TimeUnit.MILLISECONDS.toNanos(100);
     /** Looks at a claimed, not yet filled queue place before the thread yields its core to the producer. */
     private static final int SPINS_BEFORE_YIELD = 64;
+    /** How long a real-time method thread sleeps while a producer fills the place it claimed. */
+    private static final long REALTIME_WAIT_NANOS = 20_000;
 
     private final String id;
     private final List<InputSlot> slots;
@@ -132,6 +134,7 @@ final class MethodScheduler {
     }
 
     private void loop() {
+        boolean realtime = RealtimeThreads.raiseCurrentIfAsked();
         int misses = 0;
         while (running) {
             if (drainOnce()) {
@@ -144,7 +147,7 @@ final class MethodScheduler {
                 LockSupport.parkNanos(this, IDLE_PARK_NANOS);
                 misses = 0;
             } else {
-                waitForFill(++misses);
+                waitForFill(++misses, realtime);
             }
             parking = false;
         }
@@ -153,11 +156,14 @@ final class MethodScheduler {
     /**
      * A producer has claimed a place in a queue and not filled it yet: a few instructions, unless the producer
      * was descheduled in between, and then this thread gives its core away rather than spin for the producer's
-     * whole time slice.
+     * whole time slice. A real-time thread ({@link RealtimeThreads}) gives it away by sleeping: a yield only
+     * hands the core to other real-time threads, never to a normal producer waiting for it.
      */
-    private static void waitForFill(int misses) {
+    private static void waitForFill(int misses, boolean realtime) {
         if (misses < SPINS_BEFORE_YIELD) {
             Thread.onSpinWait();
+        } else if (realtime) {
+            LockSupport.parkNanos(REALTIME_WAIT_NANOS);
         } else {
             Thread.yield();
         }

@@ -217,6 +217,7 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
     }
 
     private void loop() {
+        RealtimeThreads.raiseCurrentIfAsked();
         while (running) {
             S s = sessions.get();
             current = s;

@@ -18,7 +18,10 @@ final class SystemClock implements EngineClock {
     private static final Logger LOG = LoggerFactory.getLogger(SystemClock.class);
 
     private final ScheduledExecutorService scheduler = Executors.newSingleThreadScheduledExecutor(r -> {
-        Thread t = new Thread(r, "habla-clock");
+        Thread t = new Thread(() -> {
+            RealtimeThreads.raiseCurrentIfAsked();
+            r.run();
+        }, "habla-clock");
         t.setDaemon(true);
         return t;
     });

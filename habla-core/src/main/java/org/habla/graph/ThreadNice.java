@@ -64,7 +64,8 @@ final class ThreadNice {
         }
     }
 
-    private static OptionalInt threadId() {
+    /** The calling thread's id on Linux, the last part of {@code /proc/thread-self}. */
+    static OptionalInt threadId() {
         try {
             String self = Files.readSymbolicLink(THREAD_SELF).toString(); // "PID/task/TID"
             return OptionalInt.of(Integer.parseInt(self.substring(self.lastIndexOf('/') + 1)));
