@@ -10,6 +10,7 @@ import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.util.concurrent.locks.LockSupport;
 import org.habla.graph.EngineClock;
+import org.habla.graph.RealtimeThreads;
 
 /**
  * A robot-side interface program for the benchmarks: serves {@code habla-interface/1} on a free loopback
@@ -72,6 +73,7 @@ final class BenchRobot implements AutoCloseable {
     }
 
     private void serve() {
+        RealtimeThreads.raiseCurrentIfAsked(); // as a robot's own interface server may run
         EngineClock clock = EngineClock.system();
         while (!closed) {
             try (Socket s = server.accept()) {

@@ -63,7 +63,8 @@ public final class Benchmarks {
             new MqttBench(1_000, 3, seconds).run();
         }
         if (list.contains("isolation")) {
-            new IsolationBench(seconds, option(list, "--rounds", 3), list.contains("--without-heavy")).run();
+            new IsolationBench(seconds, option(list, "--rounds", 3), list.contains("--without-heavy"),
+                    option(list, "--realtime", 0)).run();
         }
         if (list.contains("footprint")) {
             List<String> robots = list.stream().filter(a -> a.equals("aibo") || a.equals("pioneer")).toList();

@@ -15,6 +15,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import org.habla.cli.DaemonJvm;
+import org.habla.graph.RealtimeThreads;
 import org.habla.sim.PortBlock;
 import org.habla.sim.scenario.DerivedConfig;
 import org.habla.testing.DaemonProcess;
@@ -26,7 +27,10 @@ import org.habla.testing.DaemonProcess;
  * and image segmentation at work), in interleaved rounds; the light chain's percentiles and their ratios are
  * printed. Both daemons run with config/daemon.jvm-options, as {@code habla run} does. Under each round it prints
  * what else held the cores while it was measured: the CPU time of the daemon and of the simulated Aibo (which shares
- * the two cores here, where a real Aibo would not), and the daemon's collector pauses, read from its GC log.
+ * the two cores here, where a real Aibo would not), the daemon's collector pauses, read from its GC log, and each
+ * light method's latency from the reading's time to its handling, as the daemon's status reports it. With
+ * {@code --realtime N} the daemons run with {@code -Dhabla.realtimePriority=N} ({@link RealtimeThreads}) and the
+ * benchmark's robot and client threads take the same class, as a control program beside such a daemon would.
  */
 final class IsolationBench {
 
@@ -35,6 +39,7 @@ final class IsolationBench {
     private final int seconds;
     private final int rounds;
     private final boolean withoutHeavy;
+    private final int realtime;
     /** Method types config/aibo.json runs that count as heavy: their work runs on the background threads. */
     private static final Set<String> HEAVY = Set.of("speech-recognition", "image-segmentation");
 
@@ -54,19 +59,26 @@ final class IsolationBench {
     /** The processes of the rig being measured and its daemon's GC log (set by {@link #rig}). */
     private static volatile Rig current;
 
-    private record Rig(Process daemon, Process sim, Path gcLog) {
+    private record Rig(Process daemon, Process sim, Path gcLog, int statusPort) {
     }
 
-    /** @param withoutHeavy also measure each round in the Aibo's daemon with its heavy methods left out */
-    IsolationBench(int seconds, int rounds, boolean withoutHeavy) {
+    /**
+     * @param withoutHeavy also measure each round in the Aibo's daemon with its heavy methods left out
+     * @param realtime     the real-time priority of the sample path's threads, 0 for normal scheduling
+     */
+    IsolationBench(int seconds, int rounds, boolean withoutHeavy, int realtime) {
         this.seconds = seconds;
         this.rounds = rounds;
         this.withoutHeavy = withoutHeavy;
+        this.realtime = realtime;
     }
 
     void run() throws Exception {
-        System.out.printf("%n(k) a light 1 kHz chain alone and beside the Aibo's speech and vision, %d rounds of %d s%n",
-                rounds, seconds);
+        System.out.printf("%n(k) a light 1 kHz chain alone and beside the Aibo's speech and vision, %d rounds of %d s%s%n",
+                rounds, seconds, realtime == 0 ? "" : ", sample path real-time at priority " + realtime);
+        if (realtime > 0) {
+            System.setProperty(RealtimeThreads.PROPERTY, Integer.toString(realtime)); // the robot's and client's threads
+        }
         System.out.printf("%-44s %8s %8s %8s %8s %8s %8s%n", "path", "samples", "lost", "p50 µs", "p99 µs",
                 "p99.9 µs", "max µs");
         // Each round is a new daemon process: its warm-up is the latency bench's JIT warm-up, so that neither
@@ -111,6 +123,7 @@ final class IsolationBench {
         long daemonTicks = cpuTicks(rig.daemon());
         long simTicks = rig.sim() == null ? 0 : cpuTicks(rig.sim());
         int gcLines = Files.readAllLines(rig.gcLog()).size();
+        status(rig.statusPort()); // starts the methods' latency intervals here
         return () -> {
             double s = (System.nanoTime() - start) / 1e9;
             double daemon = (cpuTicks(rig.daemon()) - daemonTicks) / TICKS_PER_S / s;
@@ -122,6 +135,16 @@ final class IsolationBench {
                     l.length() - 2))).sum();
             System.out.printf("    over %.0f s: daemon %.2f cores, simulator %.2f cores; daemon's GC: %d pauses, %.0f ms"
                     + " (%.1f ms/s)%n", s, daemon, sim, pauses.size(), pausedMs, pausedMs / s);
+            JsonNode st = status(rig.statusPort());
+            StringBuilder hops = new StringBuilder();
+            for (JsonNode m : st.path("methods")) {
+                if (m.path("id").asText().startsWith("bench-")) {
+                    JsonNode l = m.path("latency");
+                    hops.append(String.format(" %s %d / %d / %d µs;", m.path("id").asText(), l.path("p50Us").asLong(),
+                            l.path("p99Us").asLong(), l.path("maxUs").asLong()));
+                }
+            }
+            System.out.printf("    reading to handled, p50 / p99 / max, as the daemon's status reports it:%s%n", hops);
         };
     }
 
@@ -220,9 +243,13 @@ final class IsolationBench {
                 processes.add(sim);
             }
             Path gcLog = dir.resolve("gc.log");
-            Process daemon = launch(dir, "daemon.log", List.of("-Xlog:gc:file=" + gcLog), "run", config.toString());
+            List<String> options = new ArrayList<>(List.of("-Xlog:gc:file=" + gcLog));
+            if (RealtimeThreads.configured() > 0) {
+                options.add("-D" + RealtimeThreads.PROPERTY + "=" + RealtimeThreads.configured());
+            }
+            Process daemon = launch(dir, "daemon.log", options, "run", config.toString());
             processes.add(daemon);
-            current = new Rig(daemon, sim, gcLog);
+            current = new Rig(daemon, sim, gcLog, statusPort);
             awaitReady(statusPort, 180_000, dir);
             return new LatencyBench.Path(port, closer);
         } catch (Exception e) {
@@ -242,6 +269,15 @@ final class IsolationBench {
         cmd.addAll(List.of(args));
         return new ProcessBuilder(cmd).directory(PioneerRig.home().toFile()).redirectErrorStream(true)
                 .redirectOutput(dir.resolve(log).toFile()).start();
+    }
+
+    /** The daemon's status, read once. */
+    private static JsonNode status(int statusPort) throws IOException {
+        try (Socket s = new Socket("127.0.0.1", statusPort)) {
+            s.setSoTimeout(5_000);
+            return JSON.readTree(new BufferedReader(new InputStreamReader(s.getInputStream(),
+                    StandardCharsets.UTF_8)).readLine());
+        }
     }
 
     /** Waits (bounded) until every link is up and every method ready, as the status endpoint says. */

@@ -10,6 +10,7 @@ import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import org.HdrHistogram.Histogram;
 import org.habla.graph.EngineClock;
+import org.habla.graph.RealtimeThreads;
 
 /**
  * A control client for the benchmarks: reads sample lines from a socket, and while recording puts each
@@ -48,6 +49,7 @@ final class SampleClient implements AutoCloseable, FanOutCrowd.Figures {
     }
 
     private void read() {
+        RealtimeThreads.raiseCurrentIfAsked(); // as a control program run with the daemon's real-time option would
         EngineClock clock = EngineClock.system();
         try (BufferedReader in = new BufferedReader(new InputStreamReader(socket.getInputStream(), StandardCharsets.UTF_8))) {
             for (String line = in.readLine(); line != null; line = in.readLine()) {
