@@ -83,7 +83,8 @@ final class MethodScheduler {
     /** Starts the host, then the thread. */
     void start() {
         running = true;
-        thread = new Thread(this::loop, "habla-method-" + id);
+        int realtime = RealtimeThreads.asked();
+        thread = new Thread(() -> loop(realtime), "habla-method-" + id);
         thread.setDaemon(true);
         host.start();
         thread.start();
@@ -133,8 +134,8 @@ final class MethodScheduler {
         status.set("latency", latency.snapshot());
     }
 
-    private void loop() {
-        boolean realtime = RealtimeThreads.raiseCurrentIfAsked();
+    private void loop(int realtimePriority) {
+        boolean realtime = RealtimeThreads.raiseCurrentTo(realtimePriority);
         int misses = 0;
         while (running) {
             if (drainOnce()) {

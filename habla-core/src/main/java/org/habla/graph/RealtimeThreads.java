@@ -73,16 +73,24 @@ public final class RealtimeThreads {
     }
 
     /**
-     * Raises the calling thread if the deployment asked for it; false where it did not or could not (a wrong
-     * property is reported by the graph's build, {@link #configured}, not by each thread).
+     * The priority asked for, 0 for none or for a wrong value (a wrong value is reported by the graph's build,
+     * {@link #configured}, not by each thread). Read it where a thread is started, not in the thread.
      */
-    public static boolean raiseCurrentIfAsked() {
-        int priority;
+    static int asked() {
         try {
-            priority = configured();
+            return configured();
         } catch (IllegalArgumentException e) {
-            return false;
+            return 0;
         }
+    }
+
+    /** Raises the calling thread if the deployment asked for it; false where it did not or could not. */
+    public static boolean raiseCurrentIfAsked() {
+        return raiseCurrentTo(asked());
+    }
+
+    /** Raises the calling thread to {@code priority}, 0 for none; false where it was not raised. */
+    static boolean raiseCurrentTo(int priority) {
         return priority > 0 && raiseCurrent(priority);
     }
 

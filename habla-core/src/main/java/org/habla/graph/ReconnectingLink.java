@@ -158,7 +158,8 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
      */
     void start() {
         running = true;
-        thread = Thread.ofPlatform().daemon().name(threadName).start(this::loop);
+        int realtime = RealtimeThreads.asked();
+        thread = Thread.ofPlatform().daemon().name(threadName).start(() -> loop(realtime));
     }
 
     /** Says goodbye if up, closes the connection and stops reconnecting; waits a bounded time for the thread. */
@@ -216,8 +217,8 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
         return backOff;
     }
 
-    private void loop() {
-        RealtimeThreads.raiseCurrentIfAsked();
+    private void loop(int realtimePriority) {
+        RealtimeThreads.raiseCurrentTo(realtimePriority);
         while (running) {
             S s = sessions.get();
             current = s;

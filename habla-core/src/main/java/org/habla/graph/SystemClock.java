@@ -17,9 +17,11 @@ final class SystemClock implements EngineClock {
 
     private static final Logger LOG = LoggerFactory.getLogger(SystemClock.class);
 
+    /** Read when the clock is made: its thread starts with the first periodic work, from whichever thread. */
+    private final int realtimePriority = RealtimeThreads.asked();
     private final ScheduledExecutorService scheduler = Executors.newSingleThreadScheduledExecutor(r -> {
         Thread t = new Thread(() -> {
-            RealtimeThreads.raiseCurrentIfAsked();
+            RealtimeThreads.raiseCurrentTo(realtimePriority);
             r.run();
         }, "habla-clock");
         t.setDaemon(true);

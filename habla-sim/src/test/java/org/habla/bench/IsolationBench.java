@@ -29,8 +29,9 @@ import org.habla.testing.DaemonProcess;
  * what else held the cores while it was measured: the CPU time of the daemon and of the simulated Aibo (which shares
  * the two cores here, where a real Aibo would not), the daemon's collector pauses, read from its GC log, and each
  * light method's latency from the reading's time to its handling, as the daemon's status reports it. With
- * {@code --realtime N} the daemons run with {@code -Dhabla.realtimePriority=N} ({@link RealtimeThreads}) and the
- * benchmark's robot and client threads take the same class, as a control program beside such a daemon would.
+ * {@code --realtime N} the daemons run with {@code -Dhabla.realtimePriority=N} ({@link RealtimeThreads}; 0: normal
+ * scheduling) whatever the options file says, and the benchmark's robot and client threads take the same class, as
+ * a control program run beside such a daemon would.
  */
 final class IsolationBench {
 
@@ -64,7 +65,8 @@ final class IsolationBench {
 
     /**
      * @param withoutHeavy also measure each round in the Aibo's daemon with its heavy methods left out
-     * @param realtime     the real-time priority of the sample path's threads, 0 for normal scheduling
+     * @param realtime     the real-time priority of the sample path's threads, 0 for normal scheduling, -1 for the
+     *                     daemon's options file's and normal scheduling for the benchmark's own threads
      */
     IsolationBench(int seconds, int rounds, boolean withoutHeavy, int realtime) {
         this.seconds = seconds;
@@ -75,8 +77,9 @@ final class IsolationBench {
 
     void run() throws Exception {
         System.out.printf("%n(k) a light 1 kHz chain alone and beside the Aibo's speech and vision, %d rounds of %d s%s%n",
-                rounds, seconds, realtime == 0 ? "" : ", sample path real-time at priority " + realtime);
-        if (realtime > 0) {
+                rounds, seconds, realtime < 0 ? "" : realtime == 0 ? ", normal scheduling everywhere"
+                        : ", robot, daemon and client real-time at priority " + realtime);
+        if (realtime >= 0) {
             System.setProperty(RealtimeThreads.PROPERTY, Integer.toString(realtime)); // the robot's and client's threads
         }
         System.out.printf("%-44s %8s %8s %8s %8s %8s %8s%n", "path", "samples", "lost", "p50 µs", "p99 µs",
@@ -244,7 +247,7 @@ final class IsolationBench {
             }
             Path gcLog = dir.resolve("gc.log");
             List<String> options = new ArrayList<>(List.of("-Xlog:gc:file=" + gcLog));
-            if (RealtimeThreads.configured() > 0) {
+            if (System.getProperty(RealtimeThreads.PROPERTY) != null) {
                 options.add("-D" + RealtimeThreads.PROPERTY + "=" + RealtimeThreads.configured());
             }
             Process daemon = launch(dir, "daemon.log", options, "run", config.toString());
