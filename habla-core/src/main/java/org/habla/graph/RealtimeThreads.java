@@ -10,6 +10,7 @@ import java.util.List;
 import java.util.OptionalInt;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicReference;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -39,7 +40,8 @@ public final class RealtimeThreads {
     private static final long CARRIER_SWEEP_MILLIS = 1_000;
     /** {@code /proc/.../stat}'s field 41, the scheduling class, for {@code SCHED_FIFO}. */
     static final int SCHED_FIFO = 1;
-    private static volatile boolean warned;
+    /** Set at the first refusal: said once, and no thread tries again (each try starts a process). */
+    private static final AtomicBoolean REFUSED = new AtomicBoolean();
     /** Whether the calling thread was raised (it then gives its core away by sleeping, not by yielding). */
     private static final ThreadLocal<Boolean> RAISED = ThreadLocal.withInitial(() -> false);
 
@@ -114,8 +116,13 @@ public final class RealtimeThreads {
         return chrt(tid, "--fifo", "--reset-on-fork", "--pid", Integer.toString(priority));
     }
 
-    /** Runs {@code chrt OPTIONS... TID}; false, logged once, where it fails. */
+    /**
+     * Runs {@code chrt OPTIONS... TID}; false where it fails, and after the first refusal (said once) without trying.
+     */
     private static boolean chrt(int tid, String... options) {
+        if (REFUSED.get()) {
+            return false;
+        }
         List<String> command = new ArrayList<>(List.of("chrt"));
         command.addAll(List.of(options));
         command.add(Integer.toString(tid));
@@ -126,6 +133,9 @@ public final class RealtimeThreads {
                 return cannot("chrt did not end within 10 s");
             }
             String said = new String(p.getInputStream().readAllBytes()).strip();
+            if (p.exitValue() != 0 && !Files.exists(Path.of("/proc/self/task/" + tid))) {
+                return false; // the thread ended meanwhile (a carrier the JDK let go): not a refusal
+            }
             return p.exitValue() == 0 || cannot("chrt exited with " + p.exitValue() + (said.isEmpty() ? "" : ": "
                     + said.lines().findFirst().orElse("")));
         } catch (IOException e) {
@@ -218,11 +228,11 @@ public final class RealtimeThreads {
     }
 
     private static boolean cannot(String why) {
-        if (!warned) {
-            warned = true;
-            LOG.warn("the sample path keeps normal scheduling: -D{} was given, but its threads cannot be made real-time"
-                    + " ({}); Linux allows it with CAP_SYS_NICE or an rtprio limit (LimitRTPRIO= in a systemd unit,"
-                    + " ulimit -r)", PROPERTY, why);
+        if (REFUSED.compareAndSet(false, true)) {
+            LOG.warn("the sample path keeps normal scheduling: -D{} (config/daemon.jvm-options) asks for real-time"
+                    + " threads, but they cannot be made so ({}); Linux allows it with CAP_SYS_NICE or an rtprio limit"
+                    + " (LimitRTPRIO= in a systemd unit, ulimit -r; docs/deployment.md); -D{}=0 asks for nothing",
+                    PROPERTY, why, PROPERTY);
         }
         return false;
     }
