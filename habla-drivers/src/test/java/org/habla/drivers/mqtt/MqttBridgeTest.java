@@ -110,9 +110,9 @@ class MqttBridgeTest {
                 } finally {
                     said.destroyForcibly();
                 }
-                JsonNode bridge = daemon.status().path("bridges").get(0);
-                assertThat(bridge.path("actions").asLong()).isEqualTo(1);
-                // The action taken is in the audit log (the bridge never listens for the other's topic).
+                // The action taken is in the audit log (the bridge never listens for the other's topic). The bridge
+                // writes it after counting the action, and both after the value went into the graph, which may
+                // reach the device first: wait for the log line, then read the count.
                 long until = System.nanoTime() + 10_000_000_000L;
                 while (Files.readAllLines(auditLog).isEmpty() && System.nanoTime() < until) {
                     Thread.sleep(10);
@@ -120,6 +120,8 @@ class MqttBridgeTest {
                 assertThat(Files.readAllLines(auditLog)).satisfiesExactly(
                         l -> assertThat(l).contains("\"client\":\"mqtt-bridge\"", "\"socket\":\"say\"",
                                 "\"value\":\"hello room\"", "\"accepted\":true"));
+                JsonNode bridge = daemon.status().path("bridges").get(0);
+                assertThat(bridge.path("actions").asLong()).isEqualTo(1);
                 try (ControlLines secret = new ControlLines(ports[2])) {
                     secret.send("{\"op\":\"latest\",\"id\":7}");
                     JsonNode answer = secret.next(n -> n.has("id") || n.path("type").asText().equals("sample"),
