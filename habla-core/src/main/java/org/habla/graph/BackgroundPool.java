@@ -42,18 +42,6 @@ public final class BackgroundPool {
 
     /** The nice value the property asks for, checked here so that a wrong one stops the start, not a thread. */
     static int niceValue(String property) {
-        if (property == null || property.isBlank()) {
-            return 0;
-        }
-        try {
-            int nice = Integer.parseInt(property.strip());
-            if (nice >= 0 && nice <= 19) {
-                return nice;
-            }
-        } catch (NumberFormatException e) {
-            // said below
-        }
-        throw new IllegalArgumentException("-D" + NICE_PROPERTY + " takes 0 (none) or a nice value of 1 to 19, not '"
-                + property + "'");
+        return ThreadNice.property(NICE_PROPERTY, property, 19, "0 (none) or a nice value of 1 to 19");
     }
 }

@@ -59,19 +59,7 @@ public final class RealtimeThreads {
     }
 
     static int priority(String property) {
-        if (property == null || property.isBlank()) {
-            return 0;
-        }
-        try {
-            int p = Integer.parseInt(property.strip());
-            if (p >= 0 && p <= 99) {
-                return p;
-            }
-        } catch (NumberFormatException e) {
-            // said below
-        }
-        throw new IllegalArgumentException("-D" + PROPERTY + " takes 0 (normal scheduling) or a real-time priority"
-                + " of 1 to 99, not '" + property + "'");
+        return ThreadNice.property(PROPERTY, property, 99, "0 (normal scheduling) or a real-time priority of 1 to 99");
     }
 
     /**

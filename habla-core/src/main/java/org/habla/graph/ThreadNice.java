@@ -48,6 +48,26 @@ final class ThreadNice {
         }
     }
 
+    /**
+     * A scheduling property's value: 0 when unset or blank, else a whole number from 0 to {@code max}.
+     *
+     * @throws IllegalArgumentException naming the property and what it {@code takes}, for anything else
+     */
+    static int property(String name, String value, int max, String takes) {
+        if (value == null || value.isBlank()) {
+            return 0;
+        }
+        try {
+            int n = Integer.parseInt(value.strip());
+            if (n >= 0 && n <= max) {
+                return n;
+            }
+        } catch (NumberFormatException e) {
+            // said below
+        }
+        throw new IllegalArgumentException("-D" + name + " takes " + takes + ", not '" + value + "'");
+    }
+
     /** The calling thread's nice value as Linux reports it, if it does. */
     static OptionalInt current() {
         OptionalInt tid = threadId();
