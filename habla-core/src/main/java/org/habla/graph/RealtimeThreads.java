@@ -42,8 +42,9 @@ public final class RealtimeThreads {
     static final int SCHED_FIFO = 1;
     /** Set at the first refusal: said once, and no thread tries again (each try starts a process). */
     private static final AtomicBoolean REFUSED = new AtomicBoolean();
-    /** Whether the calling thread was raised (it then gives its core away by sleeping, not by yielding). */
-    private static final ThreadLocal<Boolean> RAISED = ThreadLocal.withInitial(() -> false);
+    /** The graphs of this JVM that keep the carriers raised, and the thread that does it while there are any. */
+    private static int carrierUsers;
+    private static Thread carrierSweeper;
 
     private RealtimeThreads() {
     }
@@ -84,20 +85,16 @@ public final class RealtimeThreads {
         return priority > 0 && raiseCurrent(priority);
     }
 
-    /** Puts the calling thread in {@code SCHED_FIFO} at {@code priority}, reset on fork; false, logged once, where it cannot. */
+    /**
+     * Puts the calling thread in {@code SCHED_FIFO} at {@code priority}, reset on fork; false, logged once, where it
+     * cannot.
+     */
     static boolean raiseCurrent(int priority) {
         OptionalInt tid = ThreadNice.threadId();
         if (tid.isEmpty()) {
             return cannot("no /proc/thread-self");
         }
-        boolean raised = raise(tid.getAsInt(), priority);
-        RAISED.set(raised);
-        return raised;
-    }
-
-    /** Whether the calling thread runs in the real-time class because this class put it there. */
-    static boolean isRaised() {
-        return RAISED.get();
+        return raise(tid.getAsInt(), priority);
     }
 
     private static boolean raise(int tid, int priority) {
@@ -146,23 +143,47 @@ public final class RealtimeThreads {
     }
 
     /**
-     * Raises the carriers of virtual threads, now and whenever the JDK starts another, until closed, and then
-     * returns them to normal scheduling (they serve the whole JVM); nothing when the deployment did not ask. The
-     * carriers are found by name: a virtual thread started here reports the name of the carrier it runs on.
+     * Raises the carriers of virtual threads, now and whenever the JDK starts another, until closed, and then —
+     * when no other graph of this JVM still asks — returns them to normal scheduling (they serve the whole JVM);
+     * nothing when the deployment did not ask. The carriers are found by name: a virtual thread started here
+     * reports the name of the carrier it runs on.
      */
     static AutoCloseable raiseCarriersIfAsked() {
         int priority = configured();
         if (priority == 0) {
             return () -> { };
         }
+        synchronized (RealtimeThreads.class) {
+            if (carrierUsers++ == 0) {
+                carrierSweeper = carrierSweeper(priority);
+            }
+        }
+        AtomicBoolean closed = new AtomicBoolean();
+        return () -> {
+            Thread stop = null;
+            synchronized (RealtimeThreads.class) {
+                if (closed.compareAndSet(false, true) && --carrierUsers == 0) {
+                    stop = carrierSweeper;
+                    carrierSweeper = null;
+                }
+            }
+            if (stop != null) {
+                stop.interrupt();
+                stop.join(10_000);
+            }
+        };
+    }
+
+    /** The thread that raises the carriers until interrupted, then hands them back; null where it cannot run. */
+    private static Thread carrierSweeper(int priority) {
         String prefix = carrierPrefix();
         if (prefix == null) {
             cannot("the carriers of virtual threads have no name to find them by");
-            return () -> { };
+            return null;
         }
         // Linux keeps the first 15 bytes of a thread's name.
         String comm = prefix.length() > 15 ? prefix.substring(0, 15) : prefix;
-        Thread sweeper = Thread.ofPlatform().daemon().name("habla-realtime-carriers").start(() -> {
+        return Thread.ofPlatform().daemon().name("habla-realtime-carriers").start(() -> {
             Set<Integer> seen = new HashSet<>();
             List<Integer> raised = new ArrayList<>();
             try {
@@ -189,10 +210,6 @@ public final class RealtimeThreads {
                 }
             }
         });
-        return () -> {
-            sweeper.interrupt();
-            sweeper.join(10_000);
-        };
     }
 
     /** {@code ForkJoinPool-1-worker-} for a carrier named {@code ForkJoinPool-1-worker-3}, or null. */

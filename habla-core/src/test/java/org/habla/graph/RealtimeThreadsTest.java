@@ -60,10 +60,8 @@ class RealtimeThreadsTest {
         AtomicBoolean raised = new AtomicBoolean();
         AtomicReference<OptionalInt> policy = new AtomicReference<>();
         AtomicReference<OptionalInt> childPolicy = new AtomicReference<>();
-        AtomicBoolean remembered = new AtomicBoolean();
         Thread t = Thread.ofPlatform().start(() -> {
             raised.set(RealtimeThreads.raiseCurrent(10));
-            remembered.set(RealtimeThreads.isRaised());
             policy.set(RealtimeThreads.policy(ThreadNice.threadId().orElseThrow()));
             Thread child = Thread.ofPlatform().start(() ->
                     childPolicy.set(RealtimeThreads.policy(ThreadNice.threadId().orElseThrow())));
@@ -77,12 +75,10 @@ class RealtimeThreadsTest {
         assertThat(t.isAlive()).isFalse();
         assertThat(policy.get()).isPresent();
         assertThat(policy.get().getAsInt() == RealtimeThreads.SCHED_FIFO).isEqualTo(raised.get());
-        assertThat(remembered.get()).isEqualTo(raised.get());
         assertThat(childPolicy.get()).hasValue(0);
         if (isRoot()) {
             assertThat(raised.get()).as("root may set SCHED_FIFO").isTrue();
         }
-        assertThat(RealtimeThreads.isRaised()).as("this thread was never raised").isFalse();
     }
 
     @Test
@@ -153,6 +149,31 @@ class RealtimeThreadsTest {
             assertThat(System.nanoTime()).as("carriers back to normal").isLessThan(end);
             Thread.sleep(50);
         }
+    }
+
+    /** Two graphs in one JVM share the carriers: the first one closed leaves them raised for the other. */
+    @Test
+    void theCarriersStayRaisedUntilTheLastGraphThatAskedCloses() throws Exception {
+        String carriers = RealtimeThreads.carrierPrefix().substring(0, 15);
+        AutoCloseable first;
+        AutoCloseable second;
+        System.setProperty(RealtimeThreads.PROPERTY, "10");
+        try {
+            first = RealtimeThreads.raiseCarriersIfAsked();
+            second = RealtimeThreads.raiseCarriersIfAsked();
+        } finally {
+            System.clearProperty(RealtimeThreads.PROPERTY);
+        }
+        int expected = isRoot() ? RealtimeThreads.SCHED_FIFO : 0;
+        try {
+            assertThat(awaitPolicy(carriers, expected)).isTrue();
+            first.close();
+            first.close(); // twice is once
+            assertThat(withPolicy(carriers, expected)).as("raised while the second graph runs").isTrue();
+        } finally {
+            second.close();
+        }
+        assertThat(withPolicy(carriers, RealtimeThreads.SCHED_FIFO)).as("handed back after the last").isFalse();
     }
 
     /** Waits (bounded) until a thread whose Linux name starts with {@code comm} has {@code policy}. */
