@@ -191,7 +191,7 @@ public final class RealtimeThreads {
                     try (DirectoryStream<Path> tasks = Files.newDirectoryStream(Path.of("/proc/self/task"))) {
                         for (Path task : tasks) {
                             int tid = Integer.parseInt(task.getFileName().toString());
-                            if (seen.add(tid) && Files.readString(task.resolve("comm")).strip().startsWith(comm)
+                            if (seen.add(tid) && startsWith(task, comm)
                                     && chrt(tid, "--fifo", "--reset-on-fork", "--pid", Integer.toString(priority))) {
                                 raised.add(tid);
                             }
@@ -210,6 +210,15 @@ public final class RealtimeThreads {
                 }
             }
         });
+    }
+
+    /** Whether a thread's Linux name starts with {@code comm}; false for a thread that ended since it was listed. */
+    static boolean startsWith(Path task, String comm) {
+        try {
+            return Files.readString(task.resolve("comm")).strip().startsWith(comm);
+        } catch (IOException e) {
+            return false;
+        }
     }
 
     /** {@code ForkJoinPool-1-worker-} for a carrier named {@code ForkJoinPool-1-worker-3}, or null. */
