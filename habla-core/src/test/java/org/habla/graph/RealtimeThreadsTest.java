@@ -204,13 +204,8 @@ class RealtimeThreadsTest {
         try (DirectoryStream<Path> tasks = Files.newDirectoryStream(Path.of("/proc/self/task"))) {
             for (Path task : tasks) {
                 int tid = Integer.parseInt(task.getFileName().toString());
-                try {
-                    if (Files.readString(task.resolve("comm")).strip().startsWith(comm)
-                            && RealtimeThreads.policy(tid).orElse(-1) == policy) {
-                        return true;
-                    }
-                } catch (IOException e) {
-                    // the thread ended meanwhile
+                if (RealtimeThreads.startsWith(task, comm) && RealtimeThreads.policy(tid).orElse(-1) == policy) {
+                    return true;
                 }
             }
         }

@@ -288,10 +288,8 @@ final class IsolationBench {
         long end = System.nanoTime() + millis * 1_000_000L;
         String missing = "no status yet";
         while (System.nanoTime() < end) {
-            try (Socket s = new Socket("127.0.0.1", statusPort)) {
-                s.setSoTimeout(5_000);
-                JsonNode st = JSON.readTree(new BufferedReader(new InputStreamReader(s.getInputStream(),
-                        StandardCharsets.UTF_8)).readLine());
+            try {
+                JsonNode st = status(statusPort);
                 missing = "";
                 for (JsonNode i : st.path("interfaces")) {
                     if (!i.path("up").asBoolean()) {
