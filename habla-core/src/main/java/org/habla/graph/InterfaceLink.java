@@ -73,7 +73,7 @@ final class InterfaceLink {
     }
 
     /** The producer of a reading channel, for wiring; null if there is none. */
-    OutputPort reading(String channel) {
+    Producer reading(String channel) {
         return readings.port(channel);
     }
 

@@ -25,7 +25,7 @@ final class InterfaceReadings {
 
     private final String interfaceId;
     private final Map<String, ChannelDescriptor> channels;
-    private final Map<String, OutputPort> ports = new HashMap<>();
+    private final Map<String, Producer> ports = new HashMap<>();
     private final Map<String, String> unavailable = new ConcurrentHashMap<>();
     /** Whether the engine tells the {@code link} record, or the driver's connections deliver it (a recording). */
     private final boolean engineTellsLink;
@@ -46,7 +46,7 @@ final class InterfaceReadings {
         this.states = states;
         for (ChannelDescriptor c : channels.values()) {
             if (c.direction() == ChannelDescriptor.Direction.READING) {
-                ports.put(c.name(), new OutputPort("@" + interfaceId + "." + c.name()));
+                ports.put(c.name(), new Producer("@" + interfaceId + "." + c.name()));
             }
         }
     }
@@ -57,7 +57,7 @@ final class InterfaceReadings {
     }
 
     /** The producer of a reading channel; null if there is none. */
-    OutputPort port(String channel) {
+    Producer port(String channel) {
         return ports.get(channel);
     }
 
@@ -104,7 +104,7 @@ final class InterfaceReadings {
 
         @Override
         public void reading(String channel, Payload value, long sourceMicros) {
-            OutputPort port = ports.get(channel);
+            Producer port = ports.get(channel);
             ChannelDescriptor d = channels.get(channel);
             if (port == null || (engineTellsLink && Driver.LINK_CHANNEL.name().equals(channel))) {
                 unknownChannel.increment();

@@ -236,7 +236,7 @@ public final class MethodGraph implements AutoCloseable {
         List<Runnable> undo = new ArrayList<>();
         for (MethodRunner r : runners.values()) {
             for (Output<?> out : r.method().outputs()) {
-                OutputPort port = r.port(out);
+                Producer port = r.port(out);
                 port.subscribe(watcher);
                 undo.add(() -> port.unsubscribe(watcher));
             }

@@ -128,7 +128,7 @@ final class MethodRunner {
     }
 
     /** The port of one of this method's outputs (the method checked that it is one of its own). */
-    OutputPort port(Output<?> output) {
+    Producer port(Output<?> output) {
         return context.port(output);
     }
 

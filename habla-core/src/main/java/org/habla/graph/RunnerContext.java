@@ -43,7 +43,7 @@ final class RunnerContext implements MethodContext {
     private final WorkCount work;
     private final Turns turns;
     /** The output ports by their output's declaration index ({@link Output#index()}). */
-    private final OutputPort[] ports;
+    private final Producer[] ports;
     private final Map<Input<?>, ChannelDescriptor> channels = new HashMap<>();
     private final Map<Output<?>, ChannelDescriptor> commandChannels = new HashMap<>();
     private volatile boolean stale;
@@ -58,13 +58,13 @@ final class RunnerContext implements MethodContext {
         this.backgroundPool = backgroundPool;
         this.work = work;
         this.turns = turns;
-        ports = new OutputPort[method.outputs().size()];
+        ports = new Producer[method.outputs().size()];
         for (Output<?> out : method.outputs()) {
-            ports[out.index()] = new OutputPort(id + "." + out.name());
+            ports[out.index()] = new Producer(id + "." + out.name());
         }
     }
 
-    OutputPort port(Output<?> output) {
+    Producer port(Output<?> output) {
         return ports[output.index()];
     }
 

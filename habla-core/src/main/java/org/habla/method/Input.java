@@ -8,36 +8,30 @@ import org.habla.sample.PayloadKind;
 import org.habla.sample.Sample;
 
 /**
- * A named, typed input of a method. Declared once, as a field, through {@code Method.input(..)};
- * the config wires it to an output of another method, to a channel of an interface or to the
- * method's control socket.
+ * An input of one method: its {@link InputPort}, bound in the method's constructor through
+ * {@code Method.input(port, ..)} with the handler that takes its samples. The config wires it to an
+ * output of another method, to a channel of an interface or to the method's control socket.
  */
 public final class Input<P extends Payload> {
 
-    private final String name;
-    private final Class<P> type;
-    private final Delivery delivery;
+    private final InputPort<P> port;
     private final InputHandler<P> handler;
-    private final boolean optional;
     private final Function<? super P, String> refusal;
     private int index = -1;
 
-    Input(String name, Class<P> type, Delivery delivery, InputHandler<P> handler, boolean optional) {
-        this(name, type, delivery, handler, optional, null);
-    }
-
-    Input(String name, Class<P> type, Delivery delivery, InputHandler<P> handler, boolean optional,
-            Function<? super P, String> refusal) {
-        this.name = PortNames.check(name);
-        this.type = Objects.requireNonNull(type, "type");
-        this.delivery = Objects.requireNonNull(delivery, "delivery");
+    Input(InputPort<P> port, InputHandler<P> handler, Function<? super P, String> refusal) {
+        this.port = Objects.requireNonNull(port, "port");
         this.handler = handler;
-        this.optional = optional;
         this.refusal = refusal;
     }
 
+    /** What the input is: name, type, delivery, whether optional. */
+    public InputPort<P> port() {
+        return port;
+    }
+
     public String name() {
-        return name;
+        return port.name();
     }
 
     /**
@@ -54,30 +48,30 @@ public final class Input<P extends Payload> {
     }
 
     public Class<P> type() {
-        return type;
+        return port.type();
     }
 
     public PayloadKind kind() {
-        return PayloadKind.of(type);
+        return port.kind();
     }
 
     public Delivery delivery() {
-        return delivery;
+        return port.delivery();
     }
 
     /** Whether a config may leave this input unwired. */
     public boolean optional() {
-        return optional;
+        return port.optional();
     }
 
     /** The sample's payload as this input's type. */
     public P payload(Sample sample) {
-        return type.cast(sample.payload());
+        return port.type().cast(sample.payload());
     }
 
     /** Whether {@code payload} fits this input. */
     public boolean accepts(Payload payload) {
-        return type.isInstance(payload);
+        return port.type().isInstance(payload);
     }
 
     /**
@@ -89,7 +83,7 @@ public final class Input<P extends Payload> {
         if (refusal == null || !accepts(payload)) {
             return Optional.empty();
         }
-        return Optional.ofNullable(refusal.apply(type.cast(payload)));
+        return Optional.ofNullable(refusal.apply(port.type().cast(payload)));
     }
 
     InputHandler<P> handler() {
@@ -98,6 +92,6 @@ public final class Input<P extends Payload> {
 
     @Override
     public String toString() {
-        return "input " + name + " (" + kind().wireName() + ")";
+        return "input " + port.name() + " (" + kind().wireName() + ")";
     }
 }

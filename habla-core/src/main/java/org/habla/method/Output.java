@@ -5,28 +5,26 @@ import org.habla.sample.Payload;
 import org.habla.sample.PayloadKind;
 
 /**
- * A named, typed output of a method, declared once as a field through {@code Method.output(..)}.
- * The shape tells control clients what the values look like (it goes in the socket's hello line).
+ * An output of one method: its {@link OutputPort}, bound in the method's constructor through
+ * {@code Method.output(port)}; the method emits its values through it. The shape tells control clients what
+ * the values look like (it goes in the socket's hello line).
  */
 public final class Output<P extends Payload> {
 
-    private final String name;
-    private final Class<P> type;
-    private final Shape shape;
+    private final OutputPort<P> port;
     private int index = -1;
 
-    Output(String name, Class<P> type, Shape shape) {
-        this.name = PortNames.check(name);
-        this.type = Objects.requireNonNull(type, "type");
-        this.shape = Objects.requireNonNull(shape, "shape");
-        if (!shape.kind().accepts(PayloadKind.of(type))) {
-            throw new IllegalArgumentException("output " + name + ": shape kind " + shape.kind()
-                    + " does not match type " + type.getSimpleName());
-        }
+    Output(OutputPort<P> port) {
+        this.port = Objects.requireNonNull(port, "port");
+    }
+
+    /** What the output is: name, type, shape. */
+    public OutputPort<P> port() {
+        return port;
     }
 
     public String name() {
-        return name;
+        return port.name();
     }
 
     /**
@@ -43,19 +41,19 @@ public final class Output<P extends Payload> {
     }
 
     public Class<P> type() {
-        return type;
+        return port.type();
     }
 
     public PayloadKind kind() {
-        return PayloadKind.of(type);
+        return port.kind();
     }
 
     public Shape shape() {
-        return shape;
+        return port.shape();
     }
 
     @Override
     public String toString() {
-        return "output " + name + " (" + kind().wireName() + ")";
+        return "output " + port.name() + " (" + kind().wireName() + ")";
     }
 }

@@ -1,8 +1,10 @@
 package org.habla.plugin;
 
+import java.util.List;
 import java.util.Set;
 import org.habla.method.Layer;
 import org.habla.method.Method;
+import org.habla.method.Ports;
 
 /**
  * Makes methods of one type. Registered through {@code META-INF/services/org.habla.plugin.MethodProvider};
@@ -24,6 +26,35 @@ public interface MethodProvider<P extends Record> {
     /** The record the {@code params} object is bound to ({@link NoParams} for none). */
     Class<P> paramsType();
 
+    /**
+     * The inputs and outputs a method of this type has for {@code layer} and {@code params}, without making
+     * one: the config check wires against them and a graph picture draws them.
+     *
+     * @throws IllegalArgumentException if the params leave the ports undefined
+     */
+    Ports ports(Layer layer, P params);
+
     /** A new method for {@code layer} (one of {@link #layers()}) with validated params. Cheap: no I/O. */
     Method create(Layer layer, P params);
+
+    /**
+     * A new method of {@code provider}'s type, checked: it is of {@code layer} and binds exactly the ports
+     * the type lists for these params. The engine makes every method through here.
+     *
+     * @throws IllegalStateException if the method made is of another layer or binds other ports
+     */
+    static <P extends Record> Method make(MethodProvider<P> provider, Layer layer, Record params) {
+        P p = provider.paramsType().cast(params);
+        Method made = provider.create(layer, p);
+        if (made.layer() != layer) {
+            throw new IllegalStateException("method type '" + provider.name() + "' made a " + made.layer().configName()
+                    + " method when asked for the " + layer.configName() + " layer");
+        }
+        List<String> differences = provider.ports(layer, p).differences(made.boundPorts());
+        if (!differences.isEmpty()) {
+            throw new IllegalStateException("method type '" + provider.name() + "' made a method whose ports are"
+                    + " not the ones it lists: " + String.join("; ", differences));
+        }
+        return made;
+    }
 }

@@ -16,6 +16,11 @@ record TestProvider<P extends Record>(String name, Set<Layer> layers, Class<P> p
     }
 
     @Override
+    public org.habla.method.Ports ports(Layer layer, P params) {
+        return create(layer, params).boundPorts();
+    }
+
+    @Override
     public Method create(Layer layer, P params) {
         return factory.apply(layer, params);
     }

@@ -173,6 +173,11 @@ final class TestMethods {
         }
 
         @Override
+        public org.habla.method.Ports ports(Layer l, NoParams params) {
+            return create(l, params).boundPorts();
+        }
+
+        @Override
         public Method create(Layer l, NoParams params) {
             return make.get();
         }

@@ -104,6 +104,11 @@ final class WorkerTestMethods {
         }
 
         @Override
+        public org.habla.method.Ports ports(Layer l, R params) {
+            return create(l, params).boundPorts();
+        }
+
+        @Override
         public Method create(Layer l, R params) {
             return make.apply(params);
         }

@@ -2,7 +2,10 @@ package org.example.habla;
 
 import org.habla.method.Delivery;
 import org.habla.method.Input;
+import org.habla.method.InputPort;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.sample.RecordValue;
@@ -17,10 +20,14 @@ import org.habla.sample.TextValue;
  */
 public final class Threshold extends ProcessingMethod {
 
-    private final Output<TextValue> label = output("label", TextValue.class,
+    static final InputPort<RecordValue> NEAREST = InputPort.of("nearest", RecordValue.class, Delivery.latest());
+    static final OutputPort<TextValue> LABEL = OutputPort.of("label", TextValue.class,
             Shape.text("near or far, emitted when it changes"));
-    private final Input<RecordValue> nearest = input("nearest", RecordValue.class, Delivery.latest(),
-            this::onNearest);
+    /** What the config wires, known without making a method. */
+    static final Ports PORTS = Ports.of(NEAREST, LABEL);
+
+    private final Output<TextValue> label = output(LABEL);
+    private final Input<RecordValue> nearest = input(NEAREST, this::onNearest);
 
     private final ThresholdParams params;
     private String current = "";

@@ -3,6 +3,7 @@ package org.example.habla;
 import java.util.Set;
 import org.habla.method.Layer;
 import org.habla.method.Method;
+import org.habla.method.Ports;
 import org.habla.plugin.MethodProvider;
 
 /** Registers {@link Threshold} under the type name {@code threshold}. */
@@ -26,6 +27,11 @@ public final class ThresholdProvider implements MethodProvider<ThresholdParams> 
     @Override
     public Class<ThresholdParams> paramsType() {
         return ThresholdParams.class;
+    }
+
+    @Override
+    public Ports ports(Layer layer, ThresholdParams params) {
+        return Threshold.PORTS;
     }
 
     @Override

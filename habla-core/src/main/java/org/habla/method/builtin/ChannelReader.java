@@ -1,6 +1,5 @@
 package org.habla.method.builtin;
 
-import org.habla.method.Delivery;
 import org.habla.method.Input;
 import org.habla.method.Layer;
 import org.habla.method.Output;
@@ -18,12 +17,12 @@ public final class ChannelReader extends SensorActuatorMethod {
     private final Input<?> in;
 
     public ChannelReader(RelayParams params) {
-        this.in = relay(params.payloadKind().type(), params.inputDelivery());
+        this.in = relay(RelayPorts.of(params));
     }
 
-    private <P extends Payload> Input<P> relay(Class<P> type, Delivery delivery) {
-        Output<P> out = output("out", type);
-        return input("in", type, delivery, (value, sample) -> emit(out, value));
+    private <P extends Payload> Input<P> relay(RelayPorts<P> ports) {
+        Output<P> out = output(ports.out());
+        return input(ports.in(), (value, sample) -> emit(out, value));
     }
 
     @Override
@@ -37,7 +36,7 @@ public final class ChannelReader extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<RelayParams> {
         public Provider() {
             super("channel", "Hands the readings of one interface channel to the processing layer unchanged",
-                    RelayParams.class, (layer, p) -> new ChannelReader(p), Layer.SENSORS_ACTUATORS);
+                    RelayParams.class, RelayPorts::ports, (layer, p) -> new ChannelReader(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

@@ -1,6 +1,5 @@
 package org.habla.method.builtin;
 
-import org.habla.method.Delivery;
 import org.habla.method.Layer;
 import org.habla.method.Method;
 import org.habla.method.Output;
@@ -33,36 +32,36 @@ public final class PassThrough {
     /** A pass-through in the sensors &amp; actuators layer. */
     public static final class Sensing extends SensorActuatorMethod {
         Sensing(RelayParams params) {
-            relay(params.payloadKind().type(), params.inputDelivery());
+            relay(RelayPorts.of(params));
         }
 
-        private <P extends Payload> void relay(Class<P> type, Delivery delivery) {
-            Output<P> out = output("out", type);
-            input("in", type, delivery, (value, sample) -> emit(out, value));
+        private <P extends Payload> void relay(RelayPorts<P> ports) {
+            Output<P> out = output(ports.out());
+            input(ports.in(), (value, sample) -> emit(out, value));
         }
     }
 
     /** A pass-through in the processing layer. */
     public static final class Processing extends ProcessingMethod {
         Processing(RelayParams params) {
-            relay(params.payloadKind().type(), params.inputDelivery());
+            relay(RelayPorts.of(params));
         }
 
-        private <P extends Payload> void relay(Class<P> type, Delivery delivery) {
-            Output<P> out = output("out", type);
-            input("in", type, delivery, (value, sample) -> emit(out, value));
+        private <P extends Payload> void relay(RelayPorts<P> ports) {
+            Output<P> out = output(ports.out());
+            input(ports.in(), (value, sample) -> emit(out, value));
         }
     }
 
     /** A pass-through in the virtual information layer. */
     public static final class Virtual extends VirtualMethod {
         Virtual(RelayParams params) {
-            relay(params.payloadKind().type(), params.inputDelivery());
+            relay(RelayPorts.of(params));
         }
 
-        private <P extends Payload> void relay(Class<P> type, Delivery delivery) {
-            Output<P> out = output("out", type);
-            input("in", type, delivery, (value, sample) -> emit(out, value));
+        private <P extends Payload> void relay(RelayPorts<P> ports) {
+            Output<P> out = output(ports.out());
+            input(ports.in(), (value, sample) -> emit(out, value));
         }
     }
 
@@ -70,7 +69,7 @@ public final class PassThrough {
     public static final class Provider extends SimpleMethodProvider<RelayParams> {
         public Provider() {
             super("pass-through", "Hands every sample on unchanged (the trivial method of any layer)",
-                    RelayParams.class, PassThrough::create,
+                    RelayParams.class, RelayPorts::ports, PassThrough::create,
                     Layer.SENSORS_ACTUATORS, Layer.PROCESSING, Layer.VIRTUAL);
         }
     }

@@ -1,8 +1,12 @@
 package org.habla.methods.perception;
 
+import java.util.List;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.methods.geometry.PlanarPose;
@@ -31,27 +35,30 @@ import org.habla.sample.Sample;
  */
 public final class NearestDistance extends ProcessingMethod {
 
-    private static final String[] INPUTS = {"scan", "scan2", "scan3", "scan4"};
-
-    private final NearestDistanceParams params;
-    private final Output<RecordValue> nearest = output("nearest", RecordValue.class, Shape.record(
+    /** The scans: the first must be wired, the other three may be. */
+    private static final List<InputPort<RecordValue>> SCANS = List.of(
+            InputPort.of("scan", RecordValue.class, Delivery.latest()),
+            InputPort.optional("scan2", RecordValue.class, Delivery.latest()),
+            InputPort.optional("scan3", RecordValue.class, Delivery.latest()),
+            InputPort.optional("scan4", RecordValue.class, Delivery.latest()));
+    static final OutputPort<RecordValue> NEAREST = OutputPort.of("nearest", RecordValue.class, Shape.record(
             "the nearest obstacle in the robot frame, and the nearest ahead and behind",
             "distanceM", "angleRad", "xM", "yM", "sensor", "input", "valid", "aheadM", "behindM"));
-    private final RangeScan[] latest = new RangeScan[INPUTS.length];
-    private final long[] receivedMicros = new long[INPUTS.length];
+    static final Ports PORTS = Ports.of(NEAREST).plus(SCANS);
+
+    private final NearestDistanceParams params;
+    private final Output<RecordValue> nearest = output(NEAREST);
+    private final RangeScan[] latest = new RangeScan[SCANS.size()];
+    private final long[] receivedMicros = new long[SCANS.size()];
 
     private long malformed;
     private boolean warnedNoPoses;
 
     NearestDistance(NearestDistanceParams params) {
         this.params = params;
-        for (int i = 0; i < INPUTS.length; i++) {
+        for (int i = 0; i < SCANS.size(); i++) {
             int index = i;
-            if (i == 0) {
-                input(INPUTS[i], RecordValue.class, Delivery.latest(), (v, s) -> onScan(index, v, s));
-            } else {
-                optionalInput(INPUTS[i], RecordValue.class, Delivery.latest(), (v, s) -> onScan(index, v, s));
-            }
+            input(SCANS.get(i), (v, s) -> onScan(index, v, s));
         }
     }
 
@@ -61,7 +68,7 @@ public final class NearestDistance extends ProcessingMethod {
             scan = RangeScan.fromRecord(value);
         } catch (IllegalArgumentException e) {
             if (malformed++ == 0) {
-                log().warn("{}: a scan on {} was ignored: {}", id(), INPUTS[index], e.getMessage());
+                log().warn("{}: a scan on {} was ignored: {}", id(), SCANS.get(index).name(), e.getMessage());
             }
             return;
         }
@@ -72,14 +79,14 @@ public final class NearestDistance extends ProcessingMethod {
         Closest ahead = new Closest();
         Closest behind = new Closest();
         double reach = 0;
-        for (int i = 0; i < INPUTS.length; i++) {
+        for (int i = 0; i < SCANS.size(); i++) {
             RangeScan s = latest[i];
             if (s == null || (i != index && now - receivedMicros[i] > params.maxAgeMs() * 1000L)) {
                 continue;
             }
             if (!s.hasPoses() && !warnedNoPoses) {
                 warnedNoPoses = true;
-                log().warn("{}: the scan on {} carries no sensor poses; bearings are taken as zero", id(), INPUTS[i]);
+                log().warn("{}: the scan on {} carries no sensor poses; bearings are taken as zero", id(), SCANS.get(i).name());
             }
             for (int k = 0; k < s.size(); k++) {
                 reach = Math.max(reach, s.maxRangeM(k));
@@ -105,7 +112,7 @@ public final class NearestDistance extends ProcessingMethod {
         RecordValue.Builder b = RecordValue.builder();
         if (best.found()) {
             b.put("distanceM", best.rangeM).put("angleRad", best.bearingRad).put("xM", best.xM).put("yM", best.yM)
-                    .put("sensor", best.sensor).put("input", INPUTS[best.input]).put("valid", true);
+                    .put("sensor", best.sensor).put("input", SCANS.get(best.input).name()).put("valid", true);
         } else {
             b.put("distanceM", reach).put("angleRad", 0.0).put("xM", 0.0).put("yM", 0.0)
                     .put("sensor", -1).put("input", "").put("valid", false);
@@ -183,7 +190,7 @@ public final class NearestDistance extends ProcessingMethod {
     public static final class Provider extends SimpleMethodProvider<NearestDistanceParams> {
         public Provider() {
             super("nearest-distance", "The nearest obstacle of one or more range scans, and the nearest ahead and behind",
-                    NearestDistanceParams.class, (layer, p) -> new NearestDistance(p), Layer.PROCESSING);
+                    NearestDistanceParams.class, PORTS, (layer, p) -> new NearestDistance(p), Layer.PROCESSING);
         }
     }
 }

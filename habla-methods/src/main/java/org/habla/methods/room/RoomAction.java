@@ -9,8 +9,11 @@ import java.util.Map;
 import java.util.Set;
 import java.util.regex.Pattern;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.Param;
@@ -46,10 +49,17 @@ public final class RoomAction extends VirtualMethod {
     private final Map<String, Output<NumberValue>> lampOutputs = new LinkedHashMap<>();
     private final Map<String, Output<NumberValue>> blindOutputs = new LinkedHashMap<>();
     private final Map<String, Double> levels = new LinkedHashMap<>();
-    private final Output<TextValue> say;
-    private final Output<TextValue> echo = output("action", TextValue.class, Shape.text("every accepted action"));
-    private final Output<RecordValue> lamps = output("lamps", RecordValue.class,
+    private static final InputPort<TextValue> ACTION = InputPort.of("action", TextValue.class, Delivery.queue(32));
+    private static final OutputPort<TextValue> ECHO = OutputPort.of("action", TextValue.class,
+            Shape.text("every accepted action"));
+    private static final OutputPort<RecordValue> LAMPS = OutputPort.of("lamps", RecordValue.class,
             Shape.record("every lamp's level 0..1 after the last action"));
+    private static final OutputPort<TextValue> SAY = OutputPort.of("say", TextValue.class,
+            Shape.text("what the room says"));
+
+    private final Output<TextValue> say;
+    private final Output<TextValue> echo = output(ECHO);
+    private final Output<RecordValue> lamps = output(LAMPS);
     private long refused;
 
     /** The params of a {@code room-action} method. */
@@ -94,15 +104,33 @@ public final class RoomAction extends VirtualMethod {
     RoomAction(Params params) {
         this.params = params;
         for (String lamp : params.lamps()) {
-            lampOutputs.put(lamp, output(lamp, NumberValue.class, Shape.number("", "lamp " + lamp + "'s level 0..1")));
+            lampOutputs.put(lamp, output(lamp(lamp)));
             levels.put(lamp, 0.0);
         }
         for (String blind : params.blinds()) {
-            blindOutputs.put(blind, output(blind, NumberValue.class,
-                    Shape.number("", "how far blinds " + blind + " are open, 0..1")));
+            blindOutputs.put(blind, output(blind(blind)));
         }
-        say = params.speaker() ? output("say", TextValue.class, Shape.text("what the room says")) : null;
-        input("action", TextValue.class, Delivery.queue(32), this::onAction, v -> refusal(params, v.text()));
+        say = params.speaker() ? output(SAY) : null;
+        input(ACTION, this::onAction, v -> refusal(params, v.text()));
+    }
+
+    /** The ports of a room with these lamps, blinds and speaker: one output per lamp and per blind. */
+    static Ports ports(Params params) {
+        List<Ports.Port> more = new ArrayList<>();
+        params.lamps().forEach(lamp -> more.add(lamp(lamp)));
+        params.blinds().forEach(blind -> more.add(blind(blind)));
+        if (params.speaker()) {
+            more.add(SAY);
+        }
+        return Ports.of(ACTION, ECHO, LAMPS).plus(more);
+    }
+
+    private static OutputPort<NumberValue> lamp(String name) {
+        return OutputPort.of(name, NumberValue.class, Shape.number("", "lamp " + name + "'s level 0..1"));
+    }
+
+    private static OutputPort<NumberValue> blind(String name) {
+        return OutputPort.of(name, NumberValue.class, Shape.number("", "how far blinds " + name + " are open, 0..1"));
     }
 
     private static String refusal(Params params, String text) {
@@ -199,7 +227,8 @@ public final class RoomAction extends VirtualMethod {
     public static final class Provider extends SimpleMethodProvider<Params> {
         public Provider() {
             super("room-action", "The actions a control architecture writes to a room: lamps on, off or dimmed, "
-                    + "blinds, and the speaker", Params.class, (layer, p) -> new RoomAction(p), Layer.VIRTUAL);
+                    + "blinds, and the speaker", Params.class, RoomAction::ports, (layer, p) -> new RoomAction(p),
+                    Layer.VIRTUAL);
         }
     }
 }

@@ -12,7 +12,7 @@ import org.habla.sample.Sample;
  * numbers samples, remembers the newest and hands each to every subscriber (input slots, command
  * channels, control clients). Subscribers must not block.
  */
-final class OutputPort {
+final class Producer {
 
     private final String producer;
     private final List<Consumer<Sample>> subscribers = new CopyOnWriteArrayList<>();
@@ -21,7 +21,7 @@ final class OutputPort {
     /** Sees every sample before the subscribers do; set while the graph is built, before anything publishes. */
     private Consumer<Sample> first = s -> { };
 
-    OutputPort(String producer) {
+    Producer(String producer) {
         this.producer = producer;
     }
 
