@@ -17,6 +17,7 @@ import org.habla.daemon.PlacementRefusedException;
 import org.habla.daemon.PortsUnavailableException;
 import org.habla.graph.EngineClock;
 import org.habla.graph.MethodGraph;
+import org.habla.graph.MethodNotMadeException;
 import org.habla.monitor.Monitor;
 import org.habla.recording.Recorder;
 import org.habla.recording.RecordingHeader;
@@ -96,6 +97,12 @@ public final class RunCommand implements Callable<Integer> {
                 recorder.close();
             }
             ConfigReport.errors(err, config, e.errors(), "the daemon does not start");
+            return ExitCodes.USAGE_OR_CONFIG;
+        } catch (MethodNotMadeException e) {
+            if (recorder != null) {
+                recorder.close();
+            }
+            ConfigReport.errors(err, config, java.util.List.of(e.error()), "the daemon does not start");
             return ExitCodes.USAGE_OR_CONFIG;
         } catch (PlacementRefusedException e) {
             e.refusals().forEach(r -> err.println("habla run: " + r));

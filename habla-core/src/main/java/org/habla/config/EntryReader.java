@@ -11,15 +11,15 @@ import java.util.stream.Collectors;
 import org.habla.driver.Driver;
 import org.habla.driver.InterfaceAddress;
 import org.habla.method.Layer;
-import org.habla.method.Method;
+import org.habla.method.Ports;
 import org.habla.plugin.DriverProvider;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.PluginRegistry;
 
 /**
  * Reads the elements of the {@code interfaces} and {@code methods} arrays: their keys and values, their
- * type's params, and a method or driver made from them (cheap by contract) so that the cross checks can
- * see the declared ports and channels.
+ * type's params, the ports the method type lists for them (no method is made), and a driver made from them
+ * (cheap by contract), so that the cross checks can see the ports and channels.
  */
 final class EntryReader {
 
@@ -108,17 +108,13 @@ final class EntryReader {
         Record params = provider == null ? null
                 : ParamsBinder.bind(o.node().get("params"), provider.paramsType(), path.field("params"), errors, baseDir)
                         .orElse(null);
-        Method made = null;
+        Ports ports = null;
         if (placeable && params != null) {
             try {
-                made = make(provider, layer, params);
-                if (made.layer() != layer) {
-                    errors.add(path, "type '" + provider.name() + "' made a " + made.layer().configName()
-                            + " method when asked for the " + layer.configName() + " layer");
-                    made = null;
-                }
+                ports = ports(provider, layer, params);
             } catch (RuntimeException | LinkageError e) {
-                errors.add(path, "type '" + provider.name() + "' cannot be made: " + e.getMessage());
+                errors.add(path, "type '" + provider.name() + "' cannot list its ports for these params: "
+                        + e.getMessage());
             }
         }
         Map<String, Source> inputs = new LinkedHashMap<>();
@@ -145,7 +141,7 @@ final class EntryReader {
             o.node().get("inputs").fieldNames().forEachRemaining(inputKeys::add);
         }
         return new MethodEntry(path, id, provider == null ? null : provider.name(), layer, inputKeys, inputs,
-                commands, params, o.has("expose"), expose, host, fallback, made, feedback(o));
+                commands, params, o.has("expose"), expose, host, fallback, ports, feedback(o));
     }
 
     /** The {@code feedback} array: input names, each with the path it is declared at. */
@@ -246,8 +242,8 @@ final class EntryReader {
         return false;
     }
 
-    private static <P extends Record> Method make(MethodProvider<P> provider, Layer layer, Record params) {
-        return provider.create(layer, provider.paramsType().cast(params));
+    private static <P extends Record> Ports ports(MethodProvider<P> provider, Layer layer, Record params) {
+        return provider.ports(layer, provider.paramsType().cast(params));
     }
 
     private static <P extends Record> Driver make(DriverProvider<P> provider, InterfaceAddress address, Record params) {

@@ -4,7 +4,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import org.habla.method.Layer;
-import org.habla.method.Method;
+import org.habla.method.Ports;
 
 /**
  * One element of the config's {@code methods} array as far as it could be read. A null component
@@ -22,17 +22,17 @@ import org.habla.method.Method;
  * @param expose   the socket, if the entry has a readable one
  * @param host     the worker {@code host:port}, if given and readable
  * @param fallback what to do while the worker is lost
- * @param made     the method made by its provider to read its ports, or null
+ * @param ports    the ports its type lists for these params, or null
  * @param feedback the inputs declared to close a wiring cycle, each with the path of its declaration
  */
 record MethodEntry(JsonPath path, String id, String type, Layer layer, Set<String> inputKeys,
         Map<String, Source> inputs, Map<String, ChannelRef> commands, Record params, boolean exposeGiven,
-        Optional<Expose> expose, Optional<String> host, Fallback fallback, Method made,
+        Optional<Expose> expose, Optional<String> host, Fallback fallback, Ports ports,
         Map<String, JsonPath> feedback) {
 
     /** Whether every part was read, so the entry can become a {@link MethodConfig}. */
     boolean complete() {
-        return id != null && type != null && layer != null && params != null && made != null;
+        return id != null && type != null && layer != null && params != null && ports != null;
     }
 
     MethodConfig toConfig() {

@@ -8,10 +8,9 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.stream.Collectors;
 import org.habla.driver.ChannelDescriptor;
-import org.habla.method.Input;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
-import org.habla.method.Method;
-import org.habla.method.Output;
+import org.habla.method.OutputPort;
 import org.habla.sample.PayloadKind;
 
 /**
@@ -104,12 +103,12 @@ final class WiringCheck {
 
     private void input(MethodEntry m, String name, Source source) {
         JsonPath path = m.path().field("inputs").field(name);
-        Input<?> in = null;
-        if (m.made() != null) {
-            in = m.made().input(name).orElse(null);
+        InputPort<?> in = null;
+        if (m.ports() != null) {
+            in = m.ports().input(name).orElse(null);
             if (in == null) {
                 errors.add(path, "'" + name + "' is not an input of type '" + m.type() + "' (inputs: "
-                        + names(m.made().inputs().stream().map(Input::name).toList()) + ")");
+                        + names(m.ports().inputs().stream().map(InputPort::name).toList()) + ")");
             }
         }
         PayloadKind wants = in == null ? PayloadKind.ANY : in.kind();
@@ -125,13 +124,13 @@ final class WiringCheck {
                             + from.layer().configName() + " layer and '" + m.id() + "' in the "
                             + m.layer().configName() + " layer");
                 }
-                if (from.made() == null) {
+                if (from.ports() == null) {
                     return;
                 }
-                Optional<Output<?>> out = from.made().output(outputName);
+                Optional<OutputPort<?>> out = from.ports().output(outputName);
                 if (out.isEmpty()) {
                     errors.add(path, "method '" + methodId + "' (type '" + from.type() + "') has no output '"
-                            + outputName + "' (outputs: " + names(from.made().outputs().stream().map(Output::name).toList()) + ")");
+                            + outputName + "' (outputs: " + names(from.ports().outputs().stream().map(OutputPort::name).toList()) + ")");
                 } else if (!wants.accepts(out.get().kind())) {
                     errors.add(path, kindMismatch(source.text(), out.get().kind(), name, wants));
                 }
@@ -166,15 +165,15 @@ final class WiringCheck {
             errors.add(path, "only a sensors_actuators method writes interface commands; '" + m.id()
                     + "' is in the " + m.layer().configName() + " layer");
         }
-        Output<?> out = null;
-        if (m.made() != null) {
-            out = m.made().output(outputName).orElse(null);
+        OutputPort<?> out = null;
+        if (m.ports() != null) {
+            out = m.ports().output(outputName).orElse(null);
             if (out == null) {
                 errors.add(path, "'" + outputName + "' is not an output of type '" + m.type() + "' (outputs: "
-                        + names(m.made().outputs().stream().map(Output::name).toList()) + ")");
+                        + names(m.ports().outputs().stream().map(OutputPort::name).toList()) + ")");
             }
         }
-        Output<?> output = out;
+        OutputPort<?> output = out;
         channel(path, target.interfaceId(), target.channel()).ifPresent(c -> {
             if (c.direction() == ChannelDescriptor.Direction.READING) {
                 errors.add(path, "'" + target.text() + "' is a reading channel; commands write a command channel");
@@ -203,11 +202,10 @@ final class WiringCheck {
     }
 
     private void requiredInputs(MethodEntry m) {
-        Method made = m.made();
-        if (made == null) {
+        if (m.ports() == null) {
             return;
         }
-        for (Input<?> in : made.inputs()) {
+        for (InputPort<?> in : m.ports().inputs()) {
             if (!in.optional() && !m.inputKeys().contains(in.name())) {
                 errors.add(m.path().field("inputs"), "required input '" + in.name() + "' (" + in.kind().wireName()
                         + ") of type '" + m.type() + "' is not wired");
@@ -225,7 +223,7 @@ final class WiringCheck {
                     + m.layer().configName() + " layer");
         }
         boolean takesControl = m.inputs().values().stream().anyMatch(s -> s instanceof Source.Control);
-        if (m.made() != null && m.made().outputs().isEmpty() && !takesControl) {
+        if (m.ports() != null && m.ports().outputs().isEmpty() && !takesControl) {
             errors.add(path, "an exposed method needs an output or a 'control' input, and '" + m.id() + "' has neither");
         }
     }

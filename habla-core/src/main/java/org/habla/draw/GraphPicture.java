@@ -12,8 +12,8 @@ import org.habla.config.InterfaceConfig;
 import org.habla.config.MethodConfig;
 import org.habla.config.Source;
 import org.habla.method.Layer;
-import org.habla.method.Method;
-import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.PluginRegistry;
 
@@ -124,19 +124,13 @@ public record GraphPicture(String system, List<Node> nodes, List<Edge> edges, Li
         return used;
     }
 
-    /** The output names of an exposed method, learnt by making it (cheap, no I/O, by contract). */
+    /** The output names of an exposed method, as its type lists them (the config check read them already). */
     private static List<String> outputs(MethodConfig m, PluginRegistry registry) {
-        return registry.method(m.type()).map(p -> {
-            try {
-                return make(p, m).outputs().stream().map(Output::name).toList();
-            } catch (RuntimeException e) {
-                // The loader made it once already; if it cannot be made again the picture just lacks the arrow up.
-                return List.<String>of();
-            }
-        }).orElse(List.of());
+        return registry.method(m.type()).map(p -> ports(p, m).outputs().stream().map(OutputPort::name).toList())
+                .orElse(List.of());
     }
 
-    private static <P extends Record> Method make(MethodProvider<P> provider, MethodConfig m) {
-        return provider.create(m.layer(), provider.paramsType().cast(m.params()));
+    private static <P extends Record> Ports ports(MethodProvider<P> provider, MethodConfig m) {
+        return provider.ports(m.layer(), provider.paramsType().cast(m.params()));
     }
 }

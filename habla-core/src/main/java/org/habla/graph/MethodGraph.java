@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ExecutorService;
+import org.habla.config.ConfigError;
 import org.habla.config.HablaConfig;
 import org.habla.config.InterfaceConfig;
 import org.habla.config.MethodConfig;
@@ -77,8 +78,9 @@ public final class MethodGraph implements AutoCloseable {
         }
         this.watchdog = new MotionWatchdog(config.safety().watchdogMs(), clock, List.copyOf(links.values()));
         links.values().forEach(l -> l.watchdog(watchdog));
-        for (MethodConfig mc : config.methods()) {
-            runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc), clock, backgroundPool,
+        for (int i = 0; i < config.methods().size(); i++) {
+            MethodConfig mc = config.methods().get(i);
+            runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc, i), clock, backgroundPool,
                     work, tap, config.cycleInputs(mc.id())));
         }
         var workerLink = config.methods().stream().anyMatch(m -> m.host().isPresent())
@@ -165,11 +167,16 @@ public final class MethodGraph implements AutoCloseable {
         return m;
     }
 
-    @SuppressWarnings({"unchecked", "rawtypes"})
-    private static Method createMethod(PluginRegistry registry, MethodConfig mc) {
-        MethodProvider provider = registry.method(mc.type()).orElseThrow(() ->
+    /** Makes the method of {@code $.methods[index]}; a constructor's refusal names that path. */
+    private static Method createMethod(PluginRegistry registry, MethodConfig mc, int index) {
+        MethodProvider<?> provider = registry.method(mc.type()).orElseThrow(() ->
                 new IllegalStateException("no method type '" + mc.type() + "'"));
-        return provider.create(mc.layer(), mc.params());
+        try {
+            return MethodProvider.make(provider, mc.layer(), mc.params());
+        } catch (RuntimeException | LinkageError e) {
+            throw new MethodNotMadeException(new ConfigError("$.methods[" + index + "]", "method '" + mc.id()
+                    + "' of type '" + mc.type() + "' cannot be made: " + e.getMessage()), e);
+        }
     }
 
     /** Starts every method, then every link, then the watchdog. */

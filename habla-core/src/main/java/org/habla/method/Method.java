@@ -19,14 +19,19 @@ import org.slf4j.LoggerFactory;
 /**
  * A method: one small unit of the HABLA's three-layer graph, with named typed inputs and
  * outputs. Subclass the base class of its layer — {@link SensorActuatorMethod},
- * {@link ProcessingMethod} or {@link VirtualMethod} — declare ports as fields, and handle samples:
+ * {@link ProcessingMethod} or {@link VirtualMethod} — declare its ports once as constants ({@link InputPort},
+ * {@link OutputPort}, listed in one {@link Ports} that the type's provider hands to HABLA), bind them, and
+ * handle samples:
  *
  * <pre>{@code
  * public final class Threshold extends ProcessingMethod {
- *     private final Output<TextValue> label = output("label", TextValue.class,
+ *     static final InputPort<RecordValue> NEAREST = InputPort.of("nearest", RecordValue.class, Delivery.latest());
+ *     static final OutputPort<TextValue> LABEL = OutputPort.of("label", TextValue.class,
  *             Shape.text("near or far, emitted when it changes"));
- *     private final Input<RecordValue> nearest = input("nearest", RecordValue.class, Delivery.latest(),
- *             this::onNearest);
+ *     static final Ports PORTS = Ports.of(NEAREST, LABEL);
+ *
+ *     private final Output<TextValue> label = output(LABEL);
+ *     private final Input<RecordValue> nearest = input(NEAREST, this::onNearest);
  *     private final ThresholdParams params;
  *     private String current = "";
  *

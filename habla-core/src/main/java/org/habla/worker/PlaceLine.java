@@ -90,7 +90,7 @@ final class PlaceLine {
         }
     }
 
-    private static <P extends Record> Method make(MethodProvider<P> provider, Layer layer, Record params) {
-        return provider.create(layer, provider.paramsType().cast(params));
+    private static Method make(MethodProvider<?> provider, Layer layer, Record params) {
+        return MethodProvider.make(provider, layer, params);
     }
 }

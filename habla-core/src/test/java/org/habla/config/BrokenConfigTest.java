@@ -67,7 +67,7 @@ class BrokenConfigTest {
         params-float-for-integer          | $.interfaces[0].params.sonarCount | must be an integer, not a number (8.5)
         driver-params-rejected            | $.interfaces[0].params.sonarCount | sonarCount must be in 1..32, was 40
         driver-cannot-be-made             | $.interfaces[0]                 | driver 'robot-sim' cannot be made: host unreachable.invalid is refused
-        method-cannot-be-made             | $.methods[1]                    | type 'broken-model' cannot be made: the model file is missing
+        method-ports-cannot-be-listed     | $.methods[1]                    | type 'broken-model' cannot list its ports for these params: the model file is missing
         input-not-declared                | $.methods[0].inputs.extra       | 'extra' is not an input of type 'sonar' (inputs: ranges)
         required-input-unwired            | $.methods[1].inputs             | required input 'ranges' (vector) of type 'nearest-distance' is not wired
         unknown-method-reference          | $.methods[1].inputs.ranges      | unknown method 'sonr' (methods: nearest, sonar)

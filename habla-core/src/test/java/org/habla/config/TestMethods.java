@@ -4,9 +4,12 @@ import java.util.List;
 import java.util.Set;
 import org.habla.method.Delivery;
 import org.habla.method.Input;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Method;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.VirtualMethod;
@@ -69,39 +72,60 @@ final class TestMethods {
     }
 
     static final class Sonar extends SensorActuatorMethod {
-        final Output<VectorValue> out = output("ranges", VectorValue.class);
-        final Input<VectorValue> in = input("ranges", VectorValue.class, (v, s) -> emit(out, v));
+        static final InputPort<VectorValue> IN = InputPort.of("ranges", VectorValue.class);
+        static final OutputPort<VectorValue> OUT = OutputPort.of("ranges", VectorValue.class);
+        static final Ports PORTS = Ports.of(IN, OUT);
+        final Output<VectorValue> out = output(OUT);
+        final Input<VectorValue> in = input(IN, (v, s) -> emit(out, v));
     }
 
     static final class Wheels extends SensorActuatorMethod {
-        final Output<VectorValue> motion = output("motion", VectorValue.class);
-        final Input<VectorValue> velocity = input("velocity", VectorValue.class, Delivery.queue(4), (v, s) -> emit(motion, v));
+        static final InputPort<VectorValue> VELOCITY = InputPort.of("velocity", VectorValue.class, Delivery.queue(4));
+        static final OutputPort<VectorValue> MOTION = OutputPort.of("motion", VectorValue.class);
+        static final Ports PORTS = Ports.of(VELOCITY, MOTION);
+        final Output<VectorValue> motion = output(MOTION);
+        final Input<VectorValue> velocity = input(VELOCITY, (v, s) -> emit(motion, v));
     }
 
     static final class Nearest extends ProcessingMethod {
-        final Output<NumberValue> nearest = output("nearest", NumberValue.class);
-        final Input<VectorValue> ranges = input("ranges", VectorValue.class, (v, s) -> emit(nearest, new NumberValue(0)));
+        static final InputPort<VectorValue> RANGES = InputPort.of("ranges", VectorValue.class);
+        static final OutputPort<NumberValue> NEAREST = OutputPort.of("nearest", NumberValue.class);
+        static final Ports PORTS = Ports.of(RANGES, NEAREST);
+        final Output<NumberValue> nearest = output(NEAREST);
+        final Input<VectorValue> ranges = input(RANGES, (v, s) -> emit(nearest, new NumberValue(0)));
     }
 
     static final class Safety extends ProcessingMethod {
-        final Output<VectorValue> out = output("velocity", VectorValue.class);
-        final Input<VectorValue> velocity = input("velocity", VectorValue.class, (v, s) -> emit(out, v));
-        final Input<NumberValue> nearest = optionalInput("nearest", NumberValue.class, Delivery.latest(), (v, s) -> { });
+        static final InputPort<VectorValue> VELOCITY_IN = InputPort.of("velocity", VectorValue.class);
+        static final InputPort<NumberValue> NEAREST = InputPort.optional("nearest", NumberValue.class, Delivery.latest());
+        static final OutputPort<VectorValue> VELOCITY_OUT = OutputPort.of("velocity", VectorValue.class);
+        static final Ports PORTS = Ports.of(VELOCITY_IN, NEAREST, VELOCITY_OUT);
+        final Output<VectorValue> out = output(VELOCITY_OUT);
+        final Input<VectorValue> velocity = input(VELOCITY_IN, (v, s) -> emit(out, v));
+        final Input<NumberValue> nearest = input(NEAREST, (v, s) -> { });
     }
 
     static final class DistanceAngle extends VirtualMethod {
-        final Output<RecordValue> out = output("distance_angle", RecordValue.class);
-        final Input<NumberValue> nearest = input("nearest", NumberValue.class, (v, s) -> { });
+        static final InputPort<NumberValue> NEAREST = InputPort.of("nearest", NumberValue.class);
+        static final OutputPort<RecordValue> OUT = OutputPort.of("distance_angle", RecordValue.class);
+        static final Ports PORTS = Ports.of(NEAREST, OUT);
+        final Output<RecordValue> out = output(OUT);
+        final Input<NumberValue> nearest = input(NEAREST, (v, s) -> { });
     }
 
     static final class Action extends VirtualMethod {
-        final Output<VectorValue> velocity = output("velocity", VectorValue.class);
-        final Input<TextValue> action = input("action", TextValue.class, Delivery.queue(8), (v, s) -> { });
+        static final InputPort<TextValue> ACTION = InputPort.of("action", TextValue.class, Delivery.queue(8));
+        static final OutputPort<VectorValue> VELOCITY = OutputPort.of("velocity", VectorValue.class);
+        static final Ports PORTS = Ports.of(ACTION, VELOCITY);
+        final Output<VectorValue> velocity = output(VELOCITY);
+        final Input<TextValue> action = input(ACTION, (v, s) -> { });
     }
 
     /** Takes text and gives nothing: cannot be exposed unless it takes control values. */
     static final class Sink extends VirtualMethod {
-        final Input<TextValue> text = input("text", TextValue.class, (v, s) -> { });
+        static final InputPort<TextValue> TEXT = InputPort.of("text", TextValue.class);
+        static final Ports PORTS = Ports.of(TEXT);
+        final Input<TextValue> text = input(TEXT, (v, s) -> { });
     }
 
     /** Passes any payload on; placeable in the processing and virtual layers. */
@@ -109,14 +133,18 @@ final class TestMethods {
         return layer == Layer.PROCESSING ? new ProcessingRelay() : new VirtualRelay();
     }
 
+    static final InputPort<Payload> RELAY_IN = InputPort.of("in", Payload.class);
+    static final OutputPort<Payload> RELAY_OUT = OutputPort.of("out", Payload.class);
+    static final Ports RELAY = Ports.of(RELAY_IN, RELAY_OUT);
+
     static final class ProcessingRelay extends ProcessingMethod {
-        final Output<Payload> out = output("out", Payload.class);
-        final Input<Payload> in = input("in", Payload.class, (v, s) -> emit(out, v));
+        final Output<Payload> out = output(RELAY_OUT);
+        final Input<Payload> in = input(RELAY_IN, (v, s) -> emit(out, v));
     }
 
     static final class VirtualRelay extends VirtualMethod {
-        final Output<Payload> out = output("out", Payload.class);
-        final Input<Payload> in = input("in", Payload.class, (v, s) -> emit(out, v));
+        final Output<Payload> out = output(RELAY_OUT);
+        final Input<Payload> in = input(RELAY_IN, (v, s) -> emit(out, v));
     }
 
     /** Every test method type. */
@@ -125,16 +153,22 @@ final class TestMethods {
         Set<Layer> proc = Set.of(Layer.PROCESSING);
         Set<Layer> virt = Set.of(Layer.VIRTUAL);
         return List.of(
-                new TestProvider<>("sonar", sa, SonarParams.class, (l, p) -> new Sonar()),
-                new TestProvider<>("wheels", sa, WheelsParams.class, (l, p) -> new Wheels()),
-                new TestProvider<>("nearest-distance", proc, NoParams.class, (l, p) -> new Nearest()),
-                new TestProvider<>("safety", proc, StepParams.class, (l, p) -> new Safety()),
-                new TestProvider<>("distance-angle", virt, NoParams.class, (l, p) -> new DistanceAngle()),
-                new TestProvider<>("action", virt, NoParams.class, (l, p) -> new Action()),
-                new TestProvider<>("sink", virt, NoParams.class, (l, p) -> new Sink()),
-                new TestProvider<>("relay", Set.of(Layer.PROCESSING, Layer.VIRTUAL), NoParams.class,
+                new TestProvider<>("sonar", sa, SonarParams.class, Sonar.PORTS, (l, p) -> new Sonar()),
+                new TestProvider<>("wheels", sa, WheelsParams.class, Wheels.PORTS, (l, p) -> new Wheels()),
+                new TestProvider<>("nearest-distance", proc, NoParams.class, Nearest.PORTS, (l, p) -> new Nearest()),
+                new TestProvider<>("safety", proc, StepParams.class, Safety.PORTS, (l, p) -> new Safety()),
+                new TestProvider<>("distance-angle", virt, NoParams.class, DistanceAngle.PORTS,
+                        (l, p) -> new DistanceAngle()),
+                new TestProvider<>("action", virt, NoParams.class, Action.PORTS, (l, p) -> new Action()),
+                new TestProvider<>("sink", virt, NoParams.class, Sink.PORTS, (l, p) -> new Sink()),
+                new TestProvider<>("relay", Set.of(Layer.PROCESSING, Layer.VIRTUAL), NoParams.class, RELAY,
                         (l, p) -> relay(l)),
                 new TestProvider<>("broken-model", proc, NoParams.class, (l, p) -> {
+                    throw new IllegalStateException("the model file is missing");
+                }, (l, p) -> {
+                    throw new AssertionError("a type whose ports cannot be listed is never made");
+                }),
+                new TestProvider<>("unmakeable", proc, NoParams.class, RELAY, (l, p) -> {
                     throw new IllegalStateException("the model file is missing");
                 }));
     }

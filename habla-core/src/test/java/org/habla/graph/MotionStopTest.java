@@ -14,7 +14,6 @@ import java.util.List;
 import org.habla.config.ConfigLoader;
 import org.habla.config.Expose;
 import org.habla.config.Limits;
-import org.habla.method.Delivery;
 import org.habla.method.Input;
 import org.habla.method.Layer;
 import org.habla.method.Output;
@@ -39,8 +38,8 @@ class MotionStopTest {
 
     /** Passes a number on only when it differs from the last one it passed, as a ramp that is steady does. */
     static final class ChangesOnly extends ProcessingMethod {
-        final Output<NumberValue> out = output("out", NumberValue.class);
-        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(64), this::on);
+        final Output<NumberValue> out = output(TestMethods.OUT);
+        final Input<NumberValue> in = input(TestMethods.in(64), this::on);
         private Double last;
 
         private void on(NumberValue v, Sample s) {
@@ -81,7 +80,7 @@ class MotionStopTest {
     private static PluginRegistry registry() {
         PluginRegistry base = TestMethods.registry();
         List<org.habla.plugin.MethodProvider<?>> methods = new ArrayList<>(base.methods().values());
-        methods.add(new TestMethods.Simple("changes-only", Layer.PROCESSING, ChangesOnly::new));
+        methods.add(new TestMethods.Simple("changes-only", Layer.PROCESSING, TestMethods.relay(64), ChangesOnly::new));
         return PluginRegistry.of(methods, List.of(new LineDriver.Provider()));
     }
 

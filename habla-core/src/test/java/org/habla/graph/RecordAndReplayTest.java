@@ -16,8 +16,11 @@ import java.util.concurrent.TimeUnit;
 import org.habla.config.ConfigLoader;
 import org.habla.config.HablaConfig;
 import org.habla.daemon.Daemon;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.PluginRegistry;
@@ -46,9 +49,11 @@ class RecordAndReplayTest {
     @TempDir
     Path dir;
 
+    static final InputPort<NumberValue> LATEST_IN = InputPort.of("in", NumberValue.class);
+
     /** Counts its own ticks: what it says depends only on how often the clock ran it. */
     static final class TickCounter extends VirtualMethod {
-        final Output<NumberValue> count = output("count", NumberValue.class);
+        final Output<NumberValue> count = output(TestMethods.COUNT);
         private int n;
 
         TickCounter() {
@@ -63,11 +68,12 @@ class RecordAndReplayTest {
 
     /** Says the newest value it was given at every tick, as distance-angle does: its output depends on timing. */
     static final class Hold extends VirtualMethod {
-        final Output<NumberValue> held = output("held", NumberValue.class);
+        static final OutputPort<NumberValue> HELD = OutputPort.of("held", NumberValue.class);
+        final Output<NumberValue> held = output(HELD);
         private double value = Double.NaN;
 
         Hold() {
-            input("in", NumberValue.class, org.habla.method.Delivery.latest(), (v, s) -> value = v.value());
+            input(LATEST_IN, (v, s) -> value = v.value());
             tickEvery(Duration.ofMillis(20));
         }
 
@@ -87,10 +93,10 @@ class RecordAndReplayTest {
     static final class Latched extends ProcessingMethod {
         static volatile CountDownLatch gate = new CountDownLatch(0);
         static volatile boolean holding;
-        final Output<NumberValue> out = output("out", NumberValue.class);
+        final Output<NumberValue> out = output(TestMethods.OUT);
 
         Latched() {
-            input("in", NumberValue.class, org.habla.method.Delivery.latest(), (v, s) -> {
+            input(LATEST_IN, (v, s) -> {
                 holding = true;
                 try {
                     gate.await(60, TimeUnit.SECONDS);
@@ -107,9 +113,9 @@ class RecordAndReplayTest {
     private static PluginRegistry registry() {
         PluginRegistry base = TestMethods.registry();
         List<org.habla.plugin.MethodProvider<?>> methods = new ArrayList<>(base.methods().values());
-        methods.add(new TestMethods.Simple("tick-counter", Layer.VIRTUAL, TickCounter::new));
-        methods.add(new TestMethods.Simple("hold", Layer.VIRTUAL, Hold::new));
-        methods.add(new TestMethods.Simple("latched", Layer.PROCESSING, Latched::new));
+        methods.add(new TestMethods.Simple("tick-counter", Layer.VIRTUAL, Ports.of(TestMethods.COUNT), TickCounter::new));
+        methods.add(new TestMethods.Simple("hold", Layer.VIRTUAL, Ports.of(LATEST_IN, Hold.HELD), Hold::new));
+        methods.add(new TestMethods.Simple("latched", Layer.PROCESSING, Ports.of(LATEST_IN, TestMethods.OUT), Latched::new));
         return PluginRegistry.of(methods, List.of(new LineDriver.Provider()));
     }
 

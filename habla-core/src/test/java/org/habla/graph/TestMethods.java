@@ -7,9 +7,12 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.habla.method.Delivery;
 import org.habla.method.Input;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Method;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.VirtualMethod;
@@ -25,10 +28,23 @@ final class TestMethods {
     private TestMethods() {
     }
 
+    static final OutputPort<NumberValue> OUT = OutputPort.of("out", NumberValue.class);
+    static final OutputPort<NumberValue> COUNT = OutputPort.of("count", NumberValue.class);
+
+    /** A number input {@code in} with a queue of {@code capacity}. */
+    static InputPort<NumberValue> in(int capacity) {
+        return InputPort.of("in", NumberValue.class, Delivery.queue(capacity));
+    }
+
+    /** The ports {@code in} (a queue of {@code capacity}) and {@code out}. */
+    static Ports relay(int capacity) {
+        return Ports.of(in(capacity), OUT);
+    }
+
     /** Adds one to every number; queue delivery so nothing is conflated. */
     static final class AddOneSensor extends SensorActuatorMethod {
-        final Output<NumberValue> out = output("out", NumberValue.class);
-        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(4096), this::on);
+        final Output<NumberValue> out = output(OUT);
+        final Input<NumberValue> in = input(in(4096), this::on);
 
         private void on(NumberValue v, Sample s) {
             emit(out, new NumberValue(v.value() + 1));
@@ -36,8 +52,8 @@ final class TestMethods {
     }
 
     static final class AddOneProcessing extends ProcessingMethod {
-        final Output<NumberValue> out = output("out", NumberValue.class);
-        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(4096), this::on);
+        final Output<NumberValue> out = output(OUT);
+        final Input<NumberValue> in = input(in(4096), this::on);
 
         private void on(NumberValue v, Sample s) {
             emit(out, new NumberValue(v.value() + 1));
@@ -45,8 +61,8 @@ final class TestMethods {
     }
 
     static final class AddOneVirtual extends VirtualMethod {
-        final Output<NumberValue> out = output("out", NumberValue.class);
-        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(4096), this::on);
+        final Output<NumberValue> out = output(OUT);
+        final Input<NumberValue> in = input(in(4096), this::on);
 
         private void on(NumberValue v, Sample s) {
             emit(out, new NumberValue(v.value() + 1));
@@ -55,8 +71,8 @@ final class TestMethods {
 
     /** Takes a value from control and sends it down as a command; refuses values beyond ±100. */
     static final class CommandVirtual extends VirtualMethod {
-        final Output<NumberValue> out = output("out", NumberValue.class);
-        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(64), this::on,
+        final Output<NumberValue> out = output(OUT);
+        final Input<NumberValue> in = input(in(64), this::on,
                 v -> Math.abs(v.value()) <= 100 ? null : "a command must be within ±100, was " + v.value());
 
         private void on(NumberValue v, Sample s) {
@@ -65,8 +81,8 @@ final class TestMethods {
     }
 
     static final class ForwardProcessing extends ProcessingMethod {
-        final Output<NumberValue> out = output("out", NumberValue.class);
-        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(64), this::on);
+        final Output<NumberValue> out = output(OUT);
+        final Input<NumberValue> in = input(in(64), this::on);
 
         private void on(NumberValue v, Sample s) {
             emit(out, v);
@@ -75,8 +91,8 @@ final class TestMethods {
 
     /** Hands values to its command channel; tells in its readiness which channel that is. */
     static final class ForwardActuator extends SensorActuatorMethod {
-        final Output<NumberValue> out = output("out", NumberValue.class);
-        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(64), this::on);
+        final Output<NumberValue> out = output(OUT);
+        final Input<NumberValue> in = input(in(64), this::on);
 
         @Override
         protected void onStart() {
@@ -94,8 +110,8 @@ final class TestMethods {
      */
     static final class SlowProcessing extends ProcessingMethod {
         static final long HOLD_LIMIT_S = 60;
-        final Output<NumberValue> out = output("out", NumberValue.class);
-        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.latest(), this::on);
+        final Output<NumberValue> out = output(OUT);
+        final Input<NumberValue> in = input(InputPort.of("in", NumberValue.class), this::on);
         final CountDownLatch gate = new CountDownLatch(1);
         volatile boolean busy;
 
@@ -114,8 +130,8 @@ final class TestMethods {
 
     /** Takes values from control into a queue of 64 and holds each until the test opens its {@link #gate}. */
     static final class GatedVirtual extends VirtualMethod {
-        final Output<NumberValue> out = output("out", NumberValue.class);
-        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(64), this::on);
+        final Output<NumberValue> out = output(OUT);
+        final Input<NumberValue> in = input(in(64), this::on);
         final CountDownLatch gate = new CountDownLatch(1);
 
         private void on(NumberValue v, Sample s) {
@@ -130,7 +146,7 @@ final class TestMethods {
 
     /** Emits a running count on every tick. */
     static final class Ticker extends ProcessingMethod {
-        final Output<NumberValue> count = output("count", NumberValue.class);
+        final Output<NumberValue> count = output(COUNT);
         private int n;
 
         Ticker() {
@@ -145,8 +161,8 @@ final class TestMethods {
 
     /** Throws on a negative number. */
     static final class Fragile extends ProcessingMethod {
-        final Output<NumberValue> out = output("out", NumberValue.class);
-        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(16), this::on);
+        final Output<NumberValue> out = output(OUT);
+        final Input<NumberValue> in = input(in(16), this::on);
 
         private void on(NumberValue v, Sample s) {
             if (v.value() < 0) {
@@ -156,7 +172,8 @@ final class TestMethods {
         }
     }
 
-    record Simple(String name, Layer layer, java.util.function.Supplier<Method> make) implements MethodProvider<NoParams> {
+    record Simple(String name, Layer layer, Ports listed, java.util.function.Supplier<Method> make)
+            implements MethodProvider<NoParams> {
         @Override
         public String description() {
             return "test method " + name;
@@ -173,8 +190,8 @@ final class TestMethods {
         }
 
         @Override
-        public org.habla.method.Ports ports(Layer l, NoParams params) {
-            return create(l, params).boundPorts();
+        public Ports ports(Layer l, NoParams params) {
+            return listed;
         }
 
         @Override
@@ -185,16 +202,17 @@ final class TestMethods {
 
     static PluginRegistry registry() {
         return PluginRegistry.of(List.of(
-                new Simple("add-one-sensor", Layer.SENSORS_ACTUATORS, AddOneSensor::new),
-                new Simple("add-one-processing", Layer.PROCESSING, AddOneProcessing::new),
-                new Simple("add-one-virtual", Layer.VIRTUAL, AddOneVirtual::new),
-                new Simple("command-virtual", Layer.VIRTUAL, CommandVirtual::new),
-                new Simple("forward-processing", Layer.PROCESSING, ForwardProcessing::new),
-                new Simple("forward-actuator", Layer.SENSORS_ACTUATORS, ForwardActuator::new),
-                new Simple("slow", Layer.PROCESSING, SlowProcessing::new),
-                new Simple("gated-virtual", Layer.VIRTUAL, GatedVirtual::new),
-                new Simple("ticker", Layer.PROCESSING, Ticker::new),
-                new Simple("fragile", Layer.PROCESSING, Fragile::new)),
+                new Simple("add-one-sensor", Layer.SENSORS_ACTUATORS, relay(4096), AddOneSensor::new),
+                new Simple("add-one-processing", Layer.PROCESSING, relay(4096), AddOneProcessing::new),
+                new Simple("add-one-virtual", Layer.VIRTUAL, relay(4096), AddOneVirtual::new),
+                new Simple("command-virtual", Layer.VIRTUAL, relay(64), CommandVirtual::new),
+                new Simple("forward-processing", Layer.PROCESSING, relay(64), ForwardProcessing::new),
+                new Simple("forward-actuator", Layer.SENSORS_ACTUATORS, relay(64), ForwardActuator::new),
+                new Simple("slow", Layer.PROCESSING, Ports.of(InputPort.of("in", NumberValue.class), OUT),
+                        SlowProcessing::new),
+                new Simple("gated-virtual", Layer.VIRTUAL, relay(64), GatedVirtual::new),
+                new Simple("ticker", Layer.PROCESSING, Ports.of(COUNT), Ticker::new),
+                new Simple("fragile", Layer.PROCESSING, relay(16), Fragile::new)),
                 List.of(new LineDriver.Provider()));
     }
 }

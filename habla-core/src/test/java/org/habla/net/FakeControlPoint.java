@@ -10,8 +10,10 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import org.habla.method.Delivery;
 import org.habla.method.Input;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.sample.AudioChunk;
@@ -32,16 +34,17 @@ final class FakeControlPoint implements ControlPoint {
     /** A virtual method with an output of every kind and, optionally, control inputs. */
     static final class Ports extends VirtualMethod {
         Ports(boolean withInputs, boolean singleInput) {
-            output("distance", NumberValue.class, Shape.number("m", "distance to the object"));
-            output("ranges", VectorValue.class, Shape.vector("m", "ranges"));
-            output("command", TextValue.class, Shape.text("the teacher's command"));
-            output("value", RecordValue.class, Shape.record("where the object is", "distanceM", "angleRad", "visible"));
-            output("audio", AudioChunk.class);
-            output("camera", ImageFrame.class);
+            output(OutputPort.of("distance", NumberValue.class, Shape.number("m", "distance to the object")));
+            output(OutputPort.of("ranges", VectorValue.class, Shape.vector("m", "ranges")));
+            output(OutputPort.of("command", TextValue.class, Shape.text("the teacher's command")));
+            output(OutputPort.of("value", RecordValue.class,
+                    Shape.record("where the object is", "distanceM", "angleRad", "visible")));
+            output(OutputPort.of("audio", AudioChunk.class));
+            output(OutputPort.of("camera", ImageFrame.class));
             if (withInputs) {
-                input("action", TextValue.class, Delivery.queue(8), (v, s) -> { });
+                input(InputPort.of("action", TextValue.class, Delivery.queue(8)), (v, s) -> { });
                 if (!singleInput) {
-                    input("target", VectorValue.class, Delivery.latest(), (v, s) -> { });
+                    input(InputPort.of("target", VectorValue.class), (v, s) -> { });
                 }
             }
         }

@@ -16,6 +16,7 @@ import java.util.jar.JarOutputStream;
 import java.util.stream.Stream;
 import javax.tools.JavaCompiler;
 import javax.tools.ToolProvider;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Method;
 import org.habla.method.MethodHarness;
@@ -44,7 +45,9 @@ class CustomMethodExampleTest {
             assertThat(provider.layers()).containsExactly(Layer.PROCESSING);
             Record params = provider.paramsType().getDeclaredConstructor(Double.class, Double.class)
                     .newInstance(null, null);
-            Method m = provider.create(Layer.PROCESSING, params);
+            assertThat(provider.ports(Layer.PROCESSING, params).inputs()).extracting(InputPort::name)
+                    .containsExactly("nearest");
+            Method m = MethodProvider.make(provider, Layer.PROCESSING, params);
             MethodHarness h = MethodHarness.started("near", m);
             for (double distanceM : new double[] {1.0, 0.7, 0.4, 0.6, 0.9}) {
                 h.push("nearest", RecordValue.builder().put("distanceM", distanceM).build());

@@ -7,9 +7,11 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.MethodHarness;
 import org.habla.method.MethodState;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.net.Frame;
@@ -101,10 +103,11 @@ class RecordValueTest {
 
     /** Emits what it is given, as a typed record of whatever form the sample holds, on a {@code Point} port. */
     static final class PointSource extends ProcessingMethod {
-        private final Output<RecordValue> out = output("out", RecordValue.class, Shape.record("points", Point.class));
+        private final Output<RecordValue> out = output(OutputPort.of("out", RecordValue.class,
+                Shape.record("points", Point.class)));
 
         PointSource() {
-            input("in", RecordValue.class, Delivery.queue(4), (value, sample) -> emit(out, value));
+            input(InputPort.of("in", RecordValue.class, Delivery.queue(4)), (value, sample) -> emit(out, value));
         }
     }
 

@@ -6,9 +6,12 @@ import java.util.function.Function;
 import java.util.zip.CRC32;
 import org.habla.method.Delivery;
 import org.habla.method.Input;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Method;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.MethodProvider;
@@ -37,18 +40,22 @@ final class WorkerTestMethods {
 
     /** Multiplies every number by its factor. */
     static final class Scale extends ProcessingMethod {
-        final Output<NumberValue> out = output("out", NumberValue.class);
+        static final Relay<NumberValue> RELAY = relay(NumberValue.class, 4096);
+        final Output<NumberValue> out = output(RELAY.out());
         final Input<NumberValue> in;
 
         Scale(ScaleParams p) {
-            in = input("in", NumberValue.class, Delivery.queue(4096), (v, s) -> emit(out, new NumberValue(v.value() * p.factor())));
+            in = input(RELAY.in(), (v, s) -> emit(out, new NumberValue(v.value() * p.factor())));
         }
     }
 
     /** Says how many bytes of PCM it got and their CRC-32, so a test sees the bytes crossed intact. */
     static final class AudioDigest extends ProcessingMethod {
-        final Output<TextValue> digest = output("digest", TextValue.class);
-        final Input<AudioChunk> audio = input("audio", AudioChunk.class, Delivery.queue(256), this::on);
+        static final OutputPort<TextValue> DIGEST = OutputPort.of("digest", TextValue.class);
+        static final InputPort<AudioChunk> AUDIO = InputPort.of("audio", AudioChunk.class, Delivery.queue(256));
+        static final Ports PORTS = Ports.of(AUDIO, DIGEST);
+        final Output<TextValue> digest = output(DIGEST);
+        final Input<AudioChunk> audio = input(AUDIO, this::on);
 
         private void on(AudioChunk a, Sample s) {
             CRC32 crc = new CRC32();
@@ -60,8 +67,11 @@ final class WorkerTestMethods {
 
     /** Says what it knows of the interface channel its input reads: name, unit and metadata. */
     static final class ChannelEcho extends ProcessingMethod {
-        final Output<TextValue> said = output("said", TextValue.class);
-        final Input<NumberValue> in = input("in", NumberValue.class, Delivery.queue(16), this::on);
+        static final OutputPort<TextValue> SAID = OutputPort.of("said", TextValue.class);
+        static final InputPort<NumberValue> IN = InputPort.of("in", NumberValue.class, Delivery.queue(16));
+        static final Ports PORTS = Ports.of(IN, SAID);
+        final Output<TextValue> said = output(SAID);
+        final Input<NumberValue> in = input(IN, this::on);
 
         private void on(NumberValue v, Sample s) {
             emit(said, new TextValue(channelOf(in).map(c -> c.name() + " " + c.unit() + " " + c.metadata())
@@ -75,8 +85,9 @@ final class WorkerTestMethods {
         final Input<P> in;
 
         Source(Class<P> type) {
-            out = output("out", type);
-            in = input("in", type, Delivery.queue(256), (v, s) -> emit(out, v), v -> null);
+            Relay<P> r = relay(type, 256);
+            out = output(r.out());
+            in = input(r.in(), (v, s) -> emit(out, v), v -> null);
         }
     }
 
@@ -86,13 +97,25 @@ final class WorkerTestMethods {
         final Input<P> in;
 
         Sink(Class<P> type) {
-            out = output("out", type);
-            in = input("in", type, Delivery.queue(256), (v, s) -> emit(out, v));
+            Relay<P> r = relay(type, 256);
+            out = output(r.out());
+            in = input(r.in(), (v, s) -> emit(out, v));
         }
     }
 
-    record Provider<R extends Record>(String name, Layer layer, Class<R> paramsType, Function<R, Method> make)
-            implements MethodProvider<R> {
+    /** An input {@code in} (a queue) and an output {@code out} of one type. */
+    record Relay<P extends Payload>(InputPort<P> in, OutputPort<P> out) {
+        Ports ports() {
+            return Ports.of(in, out);
+        }
+    }
+
+    static <P extends Payload> Relay<P> relay(Class<P> type, int capacity) {
+        return new Relay<>(InputPort.of("in", type, Delivery.queue(capacity)), OutputPort.of("out", type));
+    }
+
+    record Provider<R extends Record>(String name, Layer layer, Class<R> paramsType, Ports listed,
+            Function<R, Method> make) implements MethodProvider<R> {
         @Override
         public String description() {
             return "test method " + name;
@@ -104,8 +127,8 @@ final class WorkerTestMethods {
         }
 
         @Override
-        public org.habla.method.Ports ports(Layer l, R params) {
-            return create(l, params).boundPorts();
+        public Ports ports(Layer l, R params) {
+            return listed;
         }
 
         @Override
@@ -117,19 +140,24 @@ final class WorkerTestMethods {
     /** Every test type: what a daemon knows. */
     static PluginRegistry all() {
         return PluginRegistry.of(List.of(
-                new Provider<>("scale", Layer.PROCESSING, ScaleParams.class, Scale::new),
-                new Provider<>("audio-digest", Layer.PROCESSING, NoParams.class, p -> new AudioDigest()),
-                new Provider<>("channel-echo", Layer.PROCESSING, NoParams.class, p -> new ChannelEcho()),
-                new Provider<>("number-source", Layer.VIRTUAL, NoParams.class, p -> new Source<>(NumberValue.class)),
-                new Provider<>("number-sink", Layer.VIRTUAL, NoParams.class, p -> new Sink<>(NumberValue.class)),
-                new Provider<>("audio-source", Layer.VIRTUAL, NoParams.class, p -> new Source<>(AudioChunk.class)),
-                new Provider<>("text-sink", Layer.VIRTUAL, NoParams.class, p -> new Sink<>(TextValue.class))),
+                new Provider<>("scale", Layer.PROCESSING, ScaleParams.class, Scale.RELAY.ports(), Scale::new),
+                new Provider<>("audio-digest", Layer.PROCESSING, NoParams.class, AudioDigest.PORTS, p -> new AudioDigest()),
+                new Provider<>("channel-echo", Layer.PROCESSING, NoParams.class, ChannelEcho.PORTS, p -> new ChannelEcho()),
+                new Provider<>("number-source", Layer.VIRTUAL, NoParams.class, relay(NumberValue.class, 256).ports(),
+                        p -> new Source<>(NumberValue.class)),
+                new Provider<>("number-sink", Layer.VIRTUAL, NoParams.class, relay(NumberValue.class, 256).ports(),
+                        p -> new Sink<>(NumberValue.class)),
+                new Provider<>("audio-source", Layer.VIRTUAL, NoParams.class, relay(AudioChunk.class, 256).ports(),
+                        p -> new Source<>(AudioChunk.class)),
+                new Provider<>("text-sink", Layer.VIRTUAL, NoParams.class, relay(TextValue.class, 256).ports(),
+                        p -> new Sink<>(TextValue.class))),
                 List.of());
     }
 
     /** A worker that can run the audio digest only. */
     static PluginRegistry audioOnly() {
         return PluginRegistry.of(List.of(
-                new Provider<>("audio-digest", Layer.PROCESSING, NoParams.class, p -> new AudioDigest())), List.of());
+                new Provider<>("audio-digest", Layer.PROCESSING, NoParams.class, AudioDigest.PORTS, p -> new AudioDigest())),
+                List.of());
     }
 }

@@ -15,6 +15,7 @@ import java.util.Set;
 import java.util.stream.Collectors;
 import org.habla.method.Layer;
 import org.habla.method.Method;
+import org.habla.method.Ports;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.PluginRegistry;
 import org.junit.jupiter.api.Test;
@@ -57,7 +58,8 @@ class MethodProvidersTest {
     }
 
     @Test
-    void everyTypeWithoutRequiredParamsMakesAMethodOfItsLayerFromAnEmptyParamsObject() throws Exception {
+    void everyTypeWithoutRequiredParamsMakesAMethodOfItsLayerThatBindsTheListedPortsFromAnEmptyParamsObject()
+            throws Exception {
         ObjectMapper json = new ObjectMapper();
         PluginRegistry registry = PluginRegistry.discover();
         int made = 0;
@@ -71,9 +73,10 @@ class MethodProvidersTest {
                 continue; // a type with a required parameter
             }
             for (Layer layer : provider.layers()) {
-                Method m = create(provider, layer, params);
+                Method m = MethodProvider.make(provider, layer, params); // refuses other ports than the listed ones
                 assertThat(m.layer()).isEqualTo(layer);
                 assertThat(m.outputs().size() + m.inputs().size()).as(provider.name() + " has ports").isPositive();
+                assertThat(ports(provider, layer, params).differences(m.boundPorts())).as(provider.name()).isEmpty();
                 made++;
             }
         }
@@ -81,7 +84,7 @@ class MethodProvidersTest {
     }
 
     @SuppressWarnings({"unchecked", "rawtypes"})
-    private static Method create(MethodProvider provider, Layer layer, Record params) {
-        return provider.create(layer, params);
+    private static Ports ports(MethodProvider provider, Layer layer, Record params) {
+        return provider.ports(layer, params);
     }
 }

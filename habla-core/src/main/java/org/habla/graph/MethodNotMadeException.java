@@ -1,0 +1,22 @@
+package org.habla.graph;
+
+import org.habla.config.ConfigError;
+
+/**
+ * A method of the config could not be made when the graph was built: its type lists its ports for the params
+ * (so the config is valid), but the constructor refused. The error names the method's JSON path.
+ */
+public final class MethodNotMadeException extends RuntimeException {
+
+    private final transient ConfigError error;
+
+    MethodNotMadeException(ConfigError error, Throwable cause) {
+        super(error.toString(), cause);
+        this.error = error;
+    }
+
+    /** What failed, at the method's path ({@code $.methods[3]}). */
+    public ConfigError error() {
+        return error;
+    }
+}
