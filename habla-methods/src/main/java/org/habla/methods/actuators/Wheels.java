@@ -5,8 +5,11 @@ import java.util.List;
 import java.util.Optional;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.methods.motion.MotionLimits;
@@ -30,18 +33,24 @@ import org.habla.sample.VectorValue;
  */
 public final class Wheels extends SensorActuatorMethod {
 
-    private final WheelsParams params;
-    private final Output<VectorValue> motionOut = output("motion", VectorValue.class,
+    private static final OutputPort<VectorValue> MOTION_OUT = OutputPort.of("motion", VectorValue.class,
             new Shape(PayloadKind.VECTOR, "m/s, rad/s", List.of("vMps", "wRadps"), "the motion sent to the base"));
-    private final Output<RecordValue> limitsOut = output("limits", RecordValue.class,
+    private static final OutputPort<RecordValue> LIMITS = OutputPort.of("limits", RecordValue.class,
             Shape.record("the base's top speeds in force", MotionLimits.class));
+    private static final InputPort<VectorValue> MOTION_IN = InputPort.of("motion", VectorValue.class,
+            Delivery.latest());
+    static final Ports PORTS = Ports.of(MOTION_OUT, LIMITS, MOTION_IN);
+
+    private final WheelsParams params;
+    private final Output<VectorValue> motionOut = output(MOTION_OUT);
+    private final Output<RecordValue> limitsOut = output(LIMITS);
 
     private MotionLimits limits = MotionLimits.NONE;
     private long malformed;
 
     Wheels(WheelsParams params) {
         this.params = params;
-        input("motion", VectorValue.class, Delivery.latest(), this::onMotion);
+        input(MOTION_IN, this::onMotion);
         tickEvery(Duration.ofSeconds(1));
     }
 
@@ -98,7 +107,7 @@ public final class Wheels extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<WheelsParams> {
         public Provider() {
             super("wheels", "Sends [v, w] motions to a differential base, within its top speeds; zero on stop",
-                    WheelsParams.class, (layer, p) -> new Wheels(p), Layer.SENSORS_ACTUATORS);
+                    WheelsParams.class, PORTS, (layer, p) -> new Wheels(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

@@ -6,8 +6,11 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.plugin.SimpleMethodProvider;
@@ -26,16 +29,22 @@ import org.habla.sample.TextValue;
  */
 public final class Buttons extends SensorActuatorMethod {
 
-    private final ButtonsParams params;
-    private final Output<RecordValue> pressed = output("pressed", RecordValue.class,
+    private static final OutputPort<RecordValue> PRESSED = OutputPort.of("pressed", RecordValue.class,
             Shape.record("true for each button held down, by name"));
-    private final Output<TextValue> touch = output("touch", TextValue.class,
+    private static final OutputPort<TextValue> TOUCH = OutputPort.of("touch", TextValue.class,
             Shape.text("the name of a button, once when it goes down"));
+    private static final InputPort<RecordValue> BUTTONS = InputPort.of("buttons", RecordValue.class,
+            Delivery.queue(32));
+    static final Ports PORTS = Ports.of(PRESSED, TOUCH, BUTTONS);
+
+    private final ButtonsParams params;
+    private final Output<RecordValue> pressed = output(PRESSED);
+    private final Output<TextValue> touch = output(TOUCH);
     private final Map<String, Boolean> down = new LinkedHashMap<>();
 
     Buttons(ButtonsParams params) {
         this.params = params;
-        input("buttons", RecordValue.class, Delivery.queue(32), this::onButtons);
+        input(BUTTONS, this::onButtons);
     }
 
     private void onButtons(RecordValue record, Sample sample) {
@@ -71,7 +80,7 @@ public final class Buttons extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<ButtonsParams> {
         public Provider() {
             super("buttons", "Says which buttons and touch sensors are pressed, and names each new press",
-                    ButtonsParams.class, (layer, p) -> new Buttons(p), Layer.SENSORS_ACTUATORS);
+                    ButtonsParams.class, PORTS, (layer, p) -> new Buttons(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

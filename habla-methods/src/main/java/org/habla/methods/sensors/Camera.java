@@ -6,8 +6,11 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.method.Delivery;
 import org.habla.method.Input;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.methods.geometry.CameraModel;
@@ -27,12 +30,17 @@ import org.habla.sample.Sample;
  */
 public final class Camera extends SensorActuatorMethod {
 
-    private final CameraParams params;
-    private final Output<ImageFrame> imageOut = output("image", ImageFrame.class,
+    private static final OutputPort<ImageFrame> IMAGE_OUT = OutputPort.of("image", ImageFrame.class,
             Shape.of(org.habla.sample.PayloadKind.IMAGE));
-    private final Output<RecordValue> cameraOut = output("camera", RecordValue.class,
+    private static final OutputPort<RecordValue> CAMERA = OutputPort.of("camera", RecordValue.class,
             Shape.record("the camera's geometry and the size of its frames", CameraModel.class));
-    private final Input<ImageFrame> image = input("image", ImageFrame.class, Delivery.latest(), this::onImage);
+    private static final InputPort<ImageFrame> IMAGE_IN = InputPort.of("image", ImageFrame.class, Delivery.latest());
+    static final Ports PORTS = Ports.of(IMAGE_OUT, CAMERA, IMAGE_IN);
+
+    private final CameraParams params;
+    private final Output<ImageFrame> imageOut = output(IMAGE_OUT);
+    private final Output<RecordValue> cameraOut = output(CAMERA);
+    private final Input<ImageFrame> image = input(IMAGE_IN, this::onImage);
 
     private JsonNode metadata = JsonNodeFactory.instance.objectNode();
     private int width;
@@ -171,7 +179,7 @@ public final class Camera extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<CameraParams> {
         public Provider() {
             super("camera", "Hands on a camera's frames (checked, optionally rate-capped) and describes its geometry",
-                    CameraParams.class, (layer, p) -> new Camera(p), Layer.SENSORS_ACTUATORS);
+                    CameraParams.class, PORTS, (layer, p) -> new Camera(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

@@ -3,8 +3,11 @@ package org.habla.methods.sensors;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.method.Delivery;
 import org.habla.method.Input;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.methods.gaze.HeadLimits;
@@ -25,19 +28,27 @@ import org.habla.sample.VectorValue;
  */
 public final class Head extends SensorActuatorMethod {
 
-    private final HeadParams params;
-    private final Output<RecordValue> poseOut = output("pose", RecordValue.class,
+    private static final OutputPort<RecordValue> POSE_OUT = OutputPort.of("pose", RecordValue.class,
             Shape.record("where the head points, rad", HeadPose.class));
-    private final Output<VectorValue> headOut = output("head", VectorValue.class,
+    private static final OutputPort<VectorValue> HEAD = OutputPort.of("head", VectorValue.class,
             Shape.vector("rad", "[tiltRad, panRad, nodRad] within the joint limits"));
-    private final Input<RecordValue> pose = optionalInput("pose", RecordValue.class, Delivery.latest(), this::onPose);
+    private static final InputPort<RecordValue> POSE_IN = InputPort.optional("pose", RecordValue.class,
+            Delivery.latest());
+    private static final InputPort<VectorValue> COMMAND = InputPort.optional("command", VectorValue.class,
+            Delivery.queue(8));
+    static final Ports PORTS = Ports.of(POSE_OUT, HEAD, POSE_IN, COMMAND);
+
+    private final HeadParams params;
+    private final Output<RecordValue> poseOut = output(POSE_OUT);
+    private final Output<VectorValue> headOut = output(HEAD);
+    private final Input<RecordValue> pose = input(POSE_IN, this::onPose);
 
     private HeadLimits limits;
     private long rejected;
 
     Head(HeadParams params) {
         this.params = params;
-        optionalInput("command", VectorValue.class, Delivery.queue(8), this::onCommand);
+        input(COMMAND, this::onCommand);
     }
 
     @Override
@@ -76,7 +87,7 @@ public final class Head extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<HeadParams> {
         public Provider() {
             super("head", "Reads a pan-and-tilt head's pose and sends head commands clamped to its joint limits",
-                    HeadParams.class, (layer, p) -> new Head(p), Layer.SENSORS_ACTUATORS);
+                    HeadParams.class, PORTS, (layer, p) -> new Head(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

@@ -1,8 +1,11 @@
 package org.habla.methods.sensors;
 
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.plugin.SimpleMethodProvider;
@@ -17,16 +20,20 @@ import org.habla.sample.TextValue;
  */
 public final class Keyboard extends SensorActuatorMethod {
 
-    private final KeyboardParams params;
-    private final Output<TextValue> out = output("line", TextValue.class,
+    private static final OutputPort<TextValue> LINE_OUT = OutputPort.of("line", TextValue.class,
             Shape.text("a typed line, trimmed, without control characters"));
+    private static final InputPort<TextValue> LINE_IN = InputPort.of("line", TextValue.class, Delivery.queue(64));
+    static final Ports PORTS = Ports.of(LINE_OUT, LINE_IN);
+
+    private final KeyboardParams params;
+    private final Output<TextValue> out = output(LINE_OUT);
 
     private long dropped;
     private long cut;
 
     Keyboard(KeyboardParams params) {
         this.params = params;
-        input("line", TextValue.class, Delivery.queue(64), this::onLine);
+        input(LINE_IN, this::onLine);
     }
 
     private void onLine(TextValue value, Sample sample) {
@@ -79,7 +86,7 @@ public final class Keyboard extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<KeyboardParams> {
         public Provider() {
             super("keyboard", "Typed lines, trimmed and without control characters, cut to a maximum length",
-                    KeyboardParams.class, (layer, p) -> new Keyboard(p), Layer.SENSORS_ACTUATORS);
+                    KeyboardParams.class, PORTS, (layer, p) -> new Keyboard(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

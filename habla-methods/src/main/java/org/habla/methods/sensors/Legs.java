@@ -2,8 +2,11 @@ package org.habla.methods.sensors;
 
 import org.habla.driver.ChannelDescriptor;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.methods.locomotion.WalkLimits;
@@ -24,17 +27,27 @@ import org.habla.sample.VectorValue;
 public final class Legs extends SensorActuatorMethod {
 
     private static final VectorValue HALT = VectorValue.of(0, 0, 0);
+    private static final OutputPort<VectorValue> WALK_OUT = OutputPort.of("walk", VectorValue.class,
+            Shape.vector("m/s, rad/s", "[forwardMps, strafeMps, rotateRadps] within the walk limits"));
 
     private final LegsParams params;
     private WalkLimits limits;
-    private final Output<VectorValue> walk = output("walk", VectorValue.class,
-            Shape.vector("m/s, rad/s", "[forwardMps, strafeMps, rotateRadps] within the walk limits"));
+    private final Output<VectorValue> walk = output(WALK_OUT);
     private long rejected;
     private boolean sentAny;
 
     Legs(LegsParams params) {
         this.params = params;
-        input("walk", VectorValue.class, Delivery.queue(params.queue()), this::onWalk);
+        input(walkIn(params.queue()), this::onWalk);
+    }
+
+    /** The ports of legs with these params: the walk input queues {@code queue} commands. */
+    static Ports ports(LegsParams params) {
+        return Ports.of(WALK_OUT, walkIn(params.queue()));
+    }
+
+    private static InputPort<VectorValue> walkIn(int queue) {
+        return InputPort.of("walk", VectorValue.class, Delivery.queue(queue));
     }
 
     @Override
@@ -78,7 +91,7 @@ public final class Legs extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<LegsParams> {
         public Provider() {
             super("legs", "Sends walk commands [forward, strafe, rotate] to a legged robot, clamped to its walk limits",
-                    LegsParams.class, (layer, p) -> new Legs(p), Layer.SENSORS_ACTUATORS);
+                    LegsParams.class, Legs::ports, (layer, p) -> new Legs(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

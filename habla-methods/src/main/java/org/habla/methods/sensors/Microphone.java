@@ -1,8 +1,11 @@
 package org.habla.methods.sensors;
 
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.plugin.SimpleMethodProvider;
@@ -23,10 +26,11 @@ public final class Microphone extends SensorActuatorMethod {
 
     /** Time constant with which the floor follows a falling level. */
     private static final double FLOOR_FALL_MS = 50;
+    private static final OutputPort<AudioChunk> AUDIO_OUT = OutputPort.of("audio", AudioChunk.class,
+            new Shape(PayloadKind.AUDIO, "", java.util.List.of(), "filtered 16-bit PCM"));
 
     private final MicrophoneParams params;
-    private final Output<AudioChunk> out = output("audio", AudioChunk.class,
-            new Shape(PayloadKind.AUDIO, "", java.util.List.of(), "filtered 16-bit PCM"));
+    private final Output<AudioChunk> out = output(AUDIO_OUT);
 
     private AudioFormat lastFormat;
     private double[] hpPrevIn = new double[0];
@@ -37,7 +41,16 @@ public final class Microphone extends SensorActuatorMethod {
 
     Microphone(MicrophoneParams params) {
         this.params = params;
-        input("audio", AudioChunk.class, Delivery.queue(params.queue()), this::onAudio);
+        input(audioIn(params.queue()), this::onAudio);
+    }
+
+    /** The ports of a microphone with these params: the audio input queues {@code queue} chunks. */
+    static Ports ports(MicrophoneParams params) {
+        return Ports.of(AUDIO_OUT, audioIn(params.queue()));
+    }
+
+    private static InputPort<AudioChunk> audioIn(int queue) {
+        return InputPort.of("audio", AudioChunk.class, Delivery.queue(queue));
     }
 
     private void onAudio(AudioChunk chunk, Sample sample) {
@@ -160,7 +173,8 @@ public final class Microphone extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<MicrophoneParams> {
         public Provider() {
             super("microphone", "Removes DC and rumble from microphone audio and gates background noise",
-                    MicrophoneParams.class, (layer, p) -> new Microphone(p), Layer.SENSORS_ACTUATORS);
+                    MicrophoneParams.class, Microphone::ports, (layer, p) -> new Microphone(p),
+                    Layer.SENSORS_ACTUATORS);
         }
     }
 }

@@ -4,8 +4,11 @@ import com.fasterxml.jackson.databind.JsonNode;
 import java.util.List;
 import java.util.Optional;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.methods.geometry.PlanarPose;
@@ -25,18 +28,24 @@ import org.habla.sample.VectorValue;
  */
 public final class Odometry extends SensorActuatorMethod {
 
-    private final OdometryParams params;
-    private final Output<RecordValue> poseOut = output("pose", RecordValue.class,
+    private static final OutputPort<RecordValue> POSE = OutputPort.of("pose", RecordValue.class,
             Shape.record("the base's pose by odometry, in its odometry frame", PlanarPose.class));
-    private final Output<VectorValue> velocityOut = output("velocity", VectorValue.class,
+    private static final OutputPort<VectorValue> VELOCITY = OutputPort.of("velocity", VectorValue.class,
             new Shape(PayloadKind.VECTOR, "m/s, rad/s", List.of("vMps", "wRadps"), "the base's speed and turn rate"));
+    private static final InputPort<RecordValue> ODOMETRY = InputPort.of("odometry", RecordValue.class,
+            Delivery.latest());
+    static final Ports PORTS = Ports.of(POSE, VELOCITY, ODOMETRY);
+
+    private final OdometryParams params;
+    private final Output<RecordValue> poseOut = output(POSE);
+    private final Output<VectorValue> velocityOut = output(VELOCITY);
 
     private PlanarPose origin;
     private long malformed;
 
     Odometry(OdometryParams params) {
         this.params = params;
-        input("odometry", RecordValue.class, Delivery.latest(), this::onOdometry);
+        input(ODOMETRY, this::onOdometry);
     }
 
     private void onOdometry(RecordValue value, Sample sample) {
@@ -84,7 +93,7 @@ public final class Odometry extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<OdometryParams> {
         public Provider() {
             super("odometry", "The base's pose and velocity from a driver's odometry record",
-                    OdometryParams.class, (layer, p) -> new Odometry(p), Layer.SENSORS_ACTUATORS);
+                    OdometryParams.class, PORTS, (layer, p) -> new Odometry(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

@@ -7,8 +7,11 @@ import java.util.List;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.method.Delivery;
 import org.habla.method.Input;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.methods.geometry.PlanarPose;
@@ -32,14 +35,20 @@ import org.habla.sample.VectorValue;
  */
 public final class RangeSensor extends SensorActuatorMethod {
 
+    private static final OutputPort<VectorValue> RANGES_OUT = OutputPort.of("ranges", VectorValue.class,
+            Shape.vector("m", "cleaned range per sensor; the maximum range where nothing was seen"));
+    private static final OutputPort<RecordValue> SCAN = OutputPort.of("scan", RecordValue.class,
+            Shape.record("ranges with validity, reach and pose per sensor", RangeScan.class));
+    private static final InputPort<VectorValue> RANGES_IN = InputPort.of("ranges", VectorValue.class);
+    private static final InputPort<RecordValue> HEAD = InputPort.optional("head", RecordValue.class, Delivery.latest());
+    static final Ports PORTS = Ports.of(RANGES_OUT, SCAN, RANGES_IN, HEAD);
+
     private final RangeSensorParams params;
     private final double fallbackMaxRangeM;
-    private final Output<VectorValue> rangesOut = output("ranges", VectorValue.class,
-            Shape.vector("m", "cleaned range per sensor; the maximum range where nothing was seen"));
-    private final Output<RecordValue> scanOut = output("scan", RecordValue.class,
-            Shape.record("ranges with validity, reach and pose per sensor", RangeScan.class));
-    private final Input<VectorValue> ranges = input("ranges", VectorValue.class, this::onRanges);
-    private final Input<RecordValue> head = optionalInput("head", RecordValue.class, Delivery.latest(), this::onHead);
+    private final Output<VectorValue> rangesOut = output(RANGES_OUT);
+    private final Output<RecordValue> scanOut = output(SCAN);
+    private final Input<VectorValue> ranges = input(RANGES_IN, this::onRanges);
+    private final Input<RecordValue> head = input(HEAD, this::onHead);
 
     private List<PlanarPose> poses = List.of();
     private boolean[] onHead = new boolean[0];
@@ -159,7 +168,7 @@ public final class RangeSensor extends SensorActuatorMethod {
     public static final class SonarProvider extends SimpleMethodProvider<RangeSensorParams> {
         public SonarProvider() {
             super("sonar", "Cleans sonar ranges (nothing seen = maximum range) and adds each transducer's pose",
-                    RangeSensorParams.class, (layer, p) -> new RangeSensor(p, 5.0), Layer.SENSORS_ACTUATORS);
+                    RangeSensorParams.class, PORTS, (layer, p) -> new RangeSensor(p, 5.0), Layer.SENSORS_ACTUATORS);
         }
     }
 
@@ -167,7 +176,7 @@ public final class RangeSensor extends SensorActuatorMethod {
     public static final class InfraredProvider extends SimpleMethodProvider<RangeSensorParams> {
         public InfraredProvider() {
             super("infrared", "Cleans infrared ranges (nothing seen = maximum range) and adds each sensor's pose",
-                    RangeSensorParams.class, (layer, p) -> new RangeSensor(p, 1.5), Layer.SENSORS_ACTUATORS);
+                    RangeSensorParams.class, PORTS, (layer, p) -> new RangeSensor(p, 1.5), Layer.SENSORS_ACTUATORS);
         }
     }
 }

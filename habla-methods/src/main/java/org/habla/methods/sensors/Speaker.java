@@ -2,8 +2,11 @@ package org.habla.methods.sensors;
 
 import java.util.List;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.methods.voice.ToneSynth;
@@ -23,17 +26,29 @@ import org.habla.sample.TextValue;
  */
 public final class Speaker extends SensorActuatorMethod {
 
+    private static final OutputPort<AudioChunk> SPEAKER = OutputPort.of("speaker", AudioChunk.class,
+            new Shape(PayloadKind.AUDIO, "", List.of(), "mono 16-bit PCM to play"));
+    private static final InputPort<TextValue> TEXT = InputPort.optional("text", TextValue.class, Delivery.queue(16));
+
     private final SpeakerParams params;
     private final double gain;
-    private final Output<AudioChunk> speaker = output("speaker", AudioChunk.class,
-            new Shape(PayloadKind.AUDIO, "", List.of(), "mono 16-bit PCM to play"));
+    private final Output<AudioChunk> speaker = output(SPEAKER);
     private long clipped;
 
     Speaker(SpeakerParams params) {
         this.params = params;
         this.gain = Math.pow(10, params.volumeDb() / 20);
-        optionalInput("audio", AudioChunk.class, Delivery.queue(params.queue()), this::onAudio);
-        optionalInput("text", TextValue.class, Delivery.queue(16), this::onText);
+        input(audioIn(params.queue()), this::onAudio);
+        input(TEXT, this::onText);
+    }
+
+    /** The ports of a speaker with these params: the audio input queues {@code queue} chunks. */
+    static Ports ports(SpeakerParams params) {
+        return Ports.of(SPEAKER, audioIn(params.queue()), TEXT);
+    }
+
+    private static InputPort<AudioChunk> audioIn(int queue) {
+        return InputPort.optional("audio", AudioChunk.class, Delivery.queue(queue));
     }
 
     private void onAudio(AudioChunk chunk, Sample sample) {
@@ -76,7 +91,7 @@ public final class Speaker extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<SpeakerParams> {
         public Provider() {
             super("speaker", "Plays audio or text-made tones on the robot's speaker as mono 16-bit chunks",
-                    SpeakerParams.class, (layer, p) -> new Speaker(p), Layer.SENSORS_ACTUATORS);
+                    SpeakerParams.class, Speaker::ports, (layer, p) -> new Speaker(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

@@ -1,8 +1,11 @@
 package org.habla.methods.voice;
 
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.SimpleMethodProvider;
@@ -23,16 +26,22 @@ import org.habla.sample.TextValue;
  */
 public final class Speech extends VirtualMethod {
 
-    private final SpeechParams params;
-    private final Output<AudioChunk> audio = output("audio", AudioChunk.class,
+    private static final OutputPort<AudioChunk> AUDIO = OutputPort.of("audio", AudioChunk.class,
             new Shape(PayloadKind.AUDIO, "", java.util.List.of(), "the voice, mono 16-bit PCM"));
+    private static final InputPort<TextValue> TEXT = InputPort.of("text", TextValue.class, Delivery.queue(16));
+    private static final InputPort<RecordValue> EMOTION = InputPort.optional("emotion", RecordValue.class,
+            Delivery.latest());
+    static final Ports PORTS = Ports.of(AUDIO, TEXT, EMOTION);
+
+    private final SpeechParams params;
+    private final Output<AudioChunk> audio = output(AUDIO);
     private String lastEmotion = "";
     private long lastEmotionMicros = Long.MIN_VALUE;
 
     Speech(SpeechParams params) {
         this.params = params;
-        input("text", TextValue.class, Delivery.queue(16), this::onText);
-        optionalInput("emotion", RecordValue.class, Delivery.latest(), this::onEmotion);
+        input(TEXT, this::onText);
+        input(EMOTION, this::onEmotion);
     }
 
     private void onText(TextValue text, Sample sample) {
@@ -66,7 +75,7 @@ public final class Speech extends VirtualMethod {
     public static final class Provider extends SimpleMethodProvider<SpeechParams> {
         public Provider() {
             super("speech", "Says a text or an emotion as short tone melodies for a speaker",
-                    SpeechParams.class, (layer, p) -> new Speech(p), Layer.VIRTUAL);
+                    SpeechParams.class, PORTS, (layer, p) -> new Speech(p), Layer.VIRTUAL);
         }
     }
 }
