@@ -1,8 +1,11 @@
 package org.habla.methods.room;
 
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.plugin.Param;
@@ -19,9 +22,13 @@ import org.habla.sample.Sample;
  */
 public final class Blinds extends SensorActuatorMethod {
 
-    private final Params params;
-    private final Output<RecordValue> command = output("command", RecordValue.class,
+    private static final InputPort<NumberValue> OPEN = InputPort.of("open", NumberValue.class, Delivery.queue(16));
+    private static final OutputPort<RecordValue> COMMAND = OutputPort.of("command", RecordValue.class,
             Shape.record("the cover command: position in percent", "position"));
+    static final Ports PORTS = Ports.of(OPEN, COMMAND);
+
+    private final Params params;
+    private final Output<RecordValue> command = output(COMMAND);
     private Integer last;
 
     /** The params of a {@code blinds} method. */
@@ -35,7 +42,7 @@ public final class Blinds extends SensorActuatorMethod {
 
     Blinds(Params params) {
         this.params = params;
-        input("open", NumberValue.class, Delivery.queue(16), this::onOpen);
+        input(OPEN, this::onOpen);
     }
 
     private void onOpen(NumberValue value, Sample sample) {
@@ -54,7 +61,7 @@ public final class Blinds extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<Params> {
         public Provider() {
             super("blinds", "How far blinds are open, 0..1, as a cover's position command in percent", Params.class,
-                    (layer, p) -> new Blinds(p), Layer.SENSORS_ACTUATORS);
+                    PORTS, (layer, p) -> new Blinds(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

@@ -1,8 +1,11 @@
 package org.habla.methods.room;
 
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.plugin.NoParams;
@@ -19,15 +22,22 @@ import org.habla.sample.Sample;
  */
 public final class ClimateSensor extends SensorActuatorMethod {
 
-    private final Output<RecordValue> climate = output("climate", RecordValue.class,
+    private static final InputPort<NumberValue> TEMPERATURE = InputPort.optional("temperature", NumberValue.class,
+            Delivery.latest());
+    private static final InputPort<NumberValue> HUMIDITY = InputPort.optional("humidity", NumberValue.class,
+            Delivery.latest());
+    private static final OutputPort<RecordValue> CLIMATE = OutputPort.of("climate", RecordValue.class,
             Shape.record("air temperature (°C) and relative humidity (%)", "temperatureC", "humidityPct"));
+    static final Ports PORTS = Ports.of(TEMPERATURE, HUMIDITY, CLIMATE);
+
+    private final Output<RecordValue> climate = output(CLIMATE);
     private Double temperatureC;
     private Double humidityPct;
     private long dropped;
 
     ClimateSensor() {
-        optionalInput("temperature", NumberValue.class, Delivery.latest(), this::onTemperature);
-        optionalInput("humidity", NumberValue.class, Delivery.latest(), this::onHumidity);
+        input(TEMPERATURE, this::onTemperature);
+        input(HUMIDITY, this::onHumidity);
     }
 
     private void onTemperature(NumberValue value, Sample sample) {
@@ -75,7 +85,7 @@ public final class ClimateSensor extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<NoParams> {
         public Provider() {
             super("climate-sensor", "Air temperature and relative humidity as one record", NoParams.class,
-                    (layer, p) -> new ClimateSensor(), Layer.SENSORS_ACTUATORS);
+                    PORTS, (layer, p) -> new ClimateSensor(), Layer.SENSORS_ACTUATORS);
         }
     }
 }

@@ -3,8 +3,11 @@ package org.habla.methods.room;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.methods.ParamRules;
@@ -24,10 +27,18 @@ import org.habla.sample.Sample;
  */
 public final class Comfort extends VirtualMethod {
 
-    private final Params params;
-    private final Output<RecordValue> comfort = output("comfort", RecordValue.class,
+    private static final InputPort<RecordValue> CLIMATE = InputPort.optional("climate", RecordValue.class,
+            Delivery.latest());
+    private static final InputPort<NumberValue> LUX = InputPort.optional("lux", NumberValue.class, Delivery.latest());
+    private static final InputPort<NumberValue> SOUND = InputPort.optional("sound", NumberValue.class,
+            Delivery.latest());
+    private static final OutputPort<RecordValue> COMFORT = OutputPort.of("comfort", RecordValue.class,
             Shape.record("the readings, a score 0..1 and what is wrong", "temperatureC", "humidityPct", "lux",
                     "soundDb", "score", "complaints"));
+    static final Ports PORTS = Ports.of(CLIMATE, LUX, SOUND, COMFORT);
+
+    private final Params params;
+    private final Output<RecordValue> comfort = output(COMFORT);
     private Double temperatureC;
     private Double humidityPct;
     private Double lux;
@@ -56,12 +67,12 @@ public final class Comfort extends VirtualMethod {
 
     Comfort(Params params) {
         this.params = params;
-        optionalInput("climate", RecordValue.class, Delivery.latest(), this::onClimate);
-        optionalInput("lux", NumberValue.class, Delivery.latest(), (v, s) -> {
+        input(CLIMATE, this::onClimate);
+        input(LUX, (v, s) -> {
             lux = v.value();
             publish();
         });
-        optionalInput("sound", NumberValue.class, Delivery.latest(), (v, s) -> {
+        input(SOUND, (v, s) -> {
             soundDb = v.value();
             publish();
         });
@@ -115,7 +126,7 @@ public final class Comfort extends VirtualMethod {
     public static final class Provider extends SimpleMethodProvider<Params> {
         public Provider() {
             super("comfort", "How pleasant a room is: its climate, light and noise against comfortable ranges",
-                    Params.class, (layer, p) -> new Comfort(p), Layer.VIRTUAL);
+                    Params.class, PORTS, (layer, p) -> new Comfort(p), Layer.VIRTUAL);
         }
     }
 }

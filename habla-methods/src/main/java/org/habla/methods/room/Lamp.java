@@ -1,8 +1,11 @@
 package org.habla.methods.room;
 
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.methods.ParamRules;
@@ -22,11 +25,16 @@ import org.habla.sample.Sample;
  */
 public final class Lamp extends SensorActuatorMethod {
 
-    private final Params params;
-    private final Output<RecordValue> command = output("command", RecordValue.class,
+    private static final InputPort<NumberValue> LEVEL = InputPort.of("level", NumberValue.class, Delivery.queue(16));
+    private static final OutputPort<RecordValue> COMMAND = OutputPort.of("command", RecordValue.class,
             Shape.record("the lamp command: state ON/OFF and brightness", "state", "brightness"));
-    private final Output<NumberValue> echo = output("level", NumberValue.class,
+    private static final OutputPort<NumberValue> ECHO = OutputPort.of("level", NumberValue.class,
             Shape.number("", "the level the lamp was told, 0..1"));
+    static final Ports PORTS = Ports.of(LEVEL, COMMAND, ECHO);
+
+    private final Params params;
+    private final Output<RecordValue> command = output(COMMAND);
+    private final Output<NumberValue> echo = output(ECHO);
     private RecordValue last;
 
     /**
@@ -52,7 +60,7 @@ public final class Lamp extends SensorActuatorMethod {
 
     Lamp(Params params) {
         this.params = params;
-        input("level", NumberValue.class, Delivery.queue(16), this::onLevel);
+        input(LEVEL, this::onLevel);
     }
 
     private void onLevel(NumberValue value, Sample sample) {
@@ -87,7 +95,7 @@ public final class Lamp extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<Params> {
         public Provider() {
             super("lamp", "A light's level 0..1 as a smart lamp's command: state ON/OFF and brightness", Params.class,
-                    (layer, p) -> new Lamp(p), Layer.SENSORS_ACTUATORS);
+                    PORTS, (layer, p) -> new Lamp(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

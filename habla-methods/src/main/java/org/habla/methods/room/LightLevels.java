@@ -7,8 +7,11 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.methods.ParamRules;
@@ -26,9 +29,11 @@ import org.habla.sample.Sample;
  */
 public final class LightLevels extends VirtualMethod {
 
-    private final Params params;
-    private final Output<RecordValue> light = output("light", RecordValue.class,
+    private static final OutputPort<RecordValue> LIGHT = OutputPort.of("light", RecordValue.class,
             Shape.record("every zone's illuminance (lx) and the zones darker than darkLux", "lux", "dark"));
+
+    private final Params params;
+    private final Output<RecordValue> light = output(LIGHT);
     private final Map<String, Double> lux = new LinkedHashMap<>();
 
     /** The params of a {@code light-levels} method. */
@@ -45,8 +50,17 @@ public final class LightLevels extends VirtualMethod {
     LightLevels(Params params) {
         this.params = params;
         for (String zone : params.zones()) {
-            input(zone, NumberValue.class, Delivery.latest(), (value, sample) -> onLux(zone, value, sample));
+            input(zone(zone), (value, sample) -> onLux(zone, value, sample));
         }
+    }
+
+    /** The ports of a method with these zones: one input per zone. */
+    static Ports ports(Params params) {
+        return Ports.of(LIGHT).plus(params.zones().stream().map(LightLevels::zone).toList());
+    }
+
+    private static InputPort<NumberValue> zone(String name) {
+        return InputPort.of(name, NumberValue.class, Delivery.latest());
     }
 
     private void onLux(String zone, NumberValue value, Sample sample) {
@@ -72,7 +86,7 @@ public final class LightLevels extends VirtualMethod {
     public static final class Provider extends SimpleMethodProvider<Params> {
         public Provider() {
             super("light-levels", "How light every zone of a room is, and which zones are dark", Params.class,
-                    (layer, p) -> new LightLevels(p), Layer.VIRTUAL);
+                    LightLevels::ports, (layer, p) -> new LightLevels(p), Layer.VIRTUAL);
         }
     }
 }

@@ -1,8 +1,11 @@
 package org.habla.methods.room;
 
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.methods.ParamRules;
@@ -19,8 +22,13 @@ import org.habla.sample.Sample;
  */
 public final class LightSensor extends SensorActuatorMethod {
 
+    private static final InputPort<NumberValue> LUX_IN = InputPort.of("lux", NumberValue.class, Delivery.latest());
+    private static final OutputPort<NumberValue> LUX = OutputPort.of("lux", NumberValue.class,
+            Shape.number("lx", "illuminance"));
+    static final Ports PORTS = Ports.of(LUX_IN, LUX);
+
     private final Params params;
-    private final Output<NumberValue> lux = output("lux", NumberValue.class, Shape.number("lx", "illuminance"));
+    private final Output<NumberValue> lux = output(LUX);
     private Double smoothed;
     private long dropped;
 
@@ -43,7 +51,7 @@ public final class LightSensor extends SensorActuatorMethod {
 
     LightSensor(Params params) {
         this.params = params;
-        input("lux", NumberValue.class, Delivery.latest(), this::onLux);
+        input(LUX_IN, this::onLux);
     }
 
     private void onLux(NumberValue value, Sample sample) {
@@ -68,7 +76,7 @@ public final class LightSensor extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<Params> {
         public Provider() {
             super("light-sensor", "Illuminance in lux, checked, clipped and optionally smoothed", Params.class,
-                    (layer, p) -> new LightSensor(p), Layer.SENSORS_ACTUATORS);
+                    PORTS, (layer, p) -> new LightSensor(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

@@ -8,8 +8,11 @@ import java.util.List;
 import java.util.Map;
 import java.util.regex.Pattern;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.methods.ParamRules;
@@ -29,10 +32,11 @@ import org.habla.sample.Sample;
 public final class Occupancy extends VirtualMethod {
 
     private static final Pattern ZONE = Pattern.compile("[A-Za-z][A-Za-z0-9_-]{0,31}");
-
-    private final Output<RecordValue> occupancy = output("occupancy", RecordValue.class,
+    private static final OutputPort<RecordValue> OCCUPANCY = OutputPort.of("occupancy", RecordValue.class,
             Shape.record("the presence of every zone, the occupied zones and their count", "zones", "occupied",
                     "count"));
+
+    private final Output<RecordValue> occupancy = output(OCCUPANCY);
     private final Map<String, Boolean> present = new LinkedHashMap<>();
     private boolean heard;
 
@@ -71,11 +75,20 @@ public final class Occupancy extends VirtualMethod {
     Occupancy(Params params) {
         for (String zone : params.zones()) {
             present.put(zone, false);
-            input(zone, NumberValue.class, Delivery.queue(16), (value, sample) -> onPresence(zone, value, sample));
+            input(zone(zone), (value, sample) -> onPresence(zone, value, sample));
         }
         if (params.periodMs() > 0) {
             tickEvery(java.time.Duration.ofMillis(params.periodMs()));
         }
+    }
+
+    /** The ports of a method with these zones: one input per zone. */
+    static Ports ports(Params params) {
+        return Ports.of(OCCUPANCY).plus(params.zones().stream().map(Occupancy::zone).toList());
+    }
+
+    private static InputPort<NumberValue> zone(String name) {
+        return InputPort.of(name, NumberValue.class, Delivery.queue(16));
     }
 
     private void onPresence(String zone, NumberValue value, Sample sample) {
@@ -108,7 +121,7 @@ public final class Occupancy extends VirtualMethod {
     public static final class Provider extends SimpleMethodProvider<Params> {
         public Provider() {
             super("occupancy", "Which zones of a room someone is in, from one presence input per zone", Params.class,
-                    (layer, p) -> new Occupancy(p), Layer.VIRTUAL);
+                    Occupancy::ports, (layer, p) -> new Occupancy(p), Layer.VIRTUAL);
         }
     }
 }

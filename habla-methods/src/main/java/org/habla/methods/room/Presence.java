@@ -2,8 +2,11 @@ package org.habla.methods.room;
 
 import java.time.Duration;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.methods.ParamRules;
@@ -23,9 +26,16 @@ public final class Presence extends ProcessingMethod {
 
     private static final Duration TICK = Duration.ofMillis(100);
 
-    private final Params params;
-    private final Output<NumberValue> present = output("present", NumberValue.class,
+    private static final InputPort<NumberValue> MOTION = InputPort.optional("motion", NumberValue.class,
+            Delivery.queue(32));
+    private static final InputPort<NumberValue> DOOR = InputPort.optional("door", NumberValue.class,
+            Delivery.queue(32));
+    private static final OutputPort<NumberValue> PRESENT = OutputPort.of("present", NumberValue.class,
             Shape.number("", "1 while someone is in the zone (held after the last motion), else 0"));
+    static final Ports PORTS = Ports.of(MOTION, DOOR, PRESENT);
+
+    private final Params params;
+    private final Output<NumberValue> present = output(PRESENT);
     private long motionUntilMicros = Long.MIN_VALUE;
     private long doorUntilMicros = Long.MIN_VALUE;
     private boolean moving;
@@ -52,8 +62,8 @@ public final class Presence extends ProcessingMethod {
 
     Presence(Params params) {
         this.params = params;
-        optionalInput("motion", NumberValue.class, Delivery.queue(32), this::onMotion);
-        optionalInput("door", NumberValue.class, Delivery.queue(32), this::onDoor);
+        input(MOTION, this::onMotion);
+        input(DOOR, this::onDoor);
         tickEvery(TICK);
     }
 
@@ -93,7 +103,7 @@ public final class Presence extends ProcessingMethod {
     public static final class Provider extends SimpleMethodProvider<Params> {
         public Provider() {
             super("presence", "Whether someone is in a zone, from motion (held for holdMs) and door contacts",
-                    Params.class, (layer, p) -> new Presence(p), Layer.PROCESSING);
+                    Params.class, PORTS, (layer, p) -> new Presence(p), Layer.PROCESSING);
         }
     }
 }

@@ -1,8 +1,11 @@
 package org.habla.methods.room;
 
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.methods.ParamRules;
@@ -19,9 +22,13 @@ import org.habla.sample.TextValue;
  */
 public final class RoomSpeaker extends SensorActuatorMethod {
 
-    private final Params params;
-    private final Output<RecordValue> command = output("command", RecordValue.class,
+    private static final InputPort<TextValue> TEXT = InputPort.of("text", TextValue.class, Delivery.queue(16));
+    private static final OutputPort<RecordValue> COMMAND = OutputPort.of("command", RecordValue.class,
             Shape.record("what to say and how loud (percent)", "say", "volume"));
+    static final Ports PORTS = Ports.of(TEXT, COMMAND);
+
+    private final Params params;
+    private final Output<RecordValue> command = output(COMMAND);
 
     /** The params of a {@code room-speaker} method. */
     public record Params(
@@ -37,7 +44,7 @@ public final class RoomSpeaker extends SensorActuatorMethod {
 
     RoomSpeaker(Params params) {
         this.params = params;
-        input("text", TextValue.class, Delivery.queue(16), this::onText);
+        input(TEXT, this::onText);
     }
 
     private void onText(TextValue value, Sample sample) {
@@ -55,7 +62,7 @@ public final class RoomSpeaker extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<Params> {
         public Provider() {
             super("room-speaker", "Text to say in the room as a networked speaker's command", Params.class,
-                    (layer, p) -> new RoomSpeaker(p), Layer.SENSORS_ACTUATORS);
+                    PORTS, (layer, p) -> new RoomSpeaker(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

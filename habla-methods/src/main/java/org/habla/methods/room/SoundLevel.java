@@ -1,8 +1,11 @@
 package org.habla.methods.room;
 
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.methods.ParamRules;
@@ -21,9 +24,16 @@ import org.habla.sample.Sample;
  */
 public final class SoundLevel extends SensorActuatorMethod {
 
-    private final Params params;
-    private final Output<NumberValue> level = output("levelDb", NumberValue.class,
+    private static final InputPort<AudioChunk> AUDIO = InputPort.optional("audio", AudioChunk.class,
+            Delivery.queue(64));
+    private static final InputPort<NumberValue> LEVEL = InputPort.optional("level", NumberValue.class,
+            Delivery.latest());
+    private static final OutputPort<NumberValue> LEVEL_DB = OutputPort.of("levelDb", NumberValue.class,
             Shape.number("dB", "the sound level: RMS dB re full scale plus offsetDb"));
+    static final Ports PORTS = Ports.of(AUDIO, LEVEL, LEVEL_DB);
+
+    private final Params params;
+    private final Output<NumberValue> level = output(LEVEL_DB);
 
     /**
      * The params of a {@code sound-level} method.
@@ -45,8 +55,8 @@ public final class SoundLevel extends SensorActuatorMethod {
 
     SoundLevel(Params params) {
         this.params = params;
-        optionalInput("audio", AudioChunk.class, Delivery.queue(64), this::onAudio);
-        optionalInput("level", NumberValue.class, Delivery.latest(), this::onLevel);
+        input(AUDIO, this::onAudio);
+        input(LEVEL, this::onLevel);
     }
 
     private void onAudio(AudioChunk chunk, Sample sample) {
@@ -76,7 +86,7 @@ public final class SoundLevel extends SensorActuatorMethod {
     public static final class Provider extends SimpleMethodProvider<Params> {
         public Provider() {
             super("sound-level", "How loud the room is: RMS dB of a microphone's PCM, or a device's own reading",
-                    Params.class, (layer, p) -> new SoundLevel(p), Layer.SENSORS_ACTUATORS);
+                    Params.class, PORTS, (layer, p) -> new SoundLevel(p), Layer.SENSORS_ACTUATORS);
         }
     }
 }

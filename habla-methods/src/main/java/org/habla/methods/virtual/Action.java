@@ -4,8 +4,11 @@ import java.time.Duration;
 import java.util.List;
 import java.util.Locale;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.SimpleMethodProvider;
@@ -33,12 +36,17 @@ public final class Action extends VirtualMethod {
 
     private static final Duration TICK = Duration.ofMillis(20);
 
-    private final ActionParams params;
-    private final Output<VectorValue> motion = output("motion", VectorValue.class,
+    private static final InputPort<TextValue> ACTION = InputPort.of("action", TextValue.class, Delivery.queue(16));
+    private static final OutputPort<VectorValue> MOTION = OutputPort.of("motion", VectorValue.class,
             new Shape(org.habla.sample.PayloadKind.VECTOR, "m/s, rad/s", List.of("vMps", "wRadps"),
                     "the motion of the action being held; zero when none is"));
-    private final Output<TextValue> echo = output("action", TextValue.class,
+    private static final OutputPort<TextValue> ECHO = OutputPort.of("action", TextValue.class,
             Shape.text("every accepted action label, as written"));
+    static final Ports PORTS = Ports.of(ACTION, MOTION, ECHO);
+
+    private final ActionParams params;
+    private final Output<VectorValue> motion = output(MOTION);
+    private final Output<TextValue> echo = output(ECHO);
 
     private long holdUntilMicros;
     private boolean holding;
@@ -46,7 +54,7 @@ public final class Action extends VirtualMethod {
 
     Action(ActionParams params) {
         this.params = params;
-        input("action", TextValue.class, Delivery.queue(16), this::onAction, Action::refusal);
+        input(ACTION, this::onAction, Action::refusal);
         tickEvery(TICK);
     }
 
@@ -112,7 +120,7 @@ public final class Action extends VirtualMethod {
     public static final class Provider extends SimpleMethodProvider<ActionParams> {
         public Provider() {
             super("action", "Turns an action label (forward, left, right, back, stop) into a motion held for a while",
-                    ActionParams.class, (layer, p) -> new Action(p), Layer.VIRTUAL);
+                    ActionParams.class, PORTS, (layer, p) -> new Action(p), Layer.VIRTUAL);
         }
     }
 }

@@ -4,8 +4,11 @@ import java.util.HashMap;
 import java.util.Locale;
 import java.util.Map;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.SimpleMethodProvider;
@@ -22,10 +25,14 @@ import org.habla.sample.TextValue;
  */
 public final class Command extends VirtualMethod {
 
+    private static final InputPort<TextValue> IN = InputPort.of("in", TextValue.class, Delivery.queue(32));
+    private static final OutputPort<TextValue> COMMAND = OutputPort.of("command", TextValue.class,
+            Shape.text("the teacher's command label, once per command"));
+    static final Ports PORTS = Ports.of(IN, COMMAND);
+
     private final CommandParams params;
     private final Map<String, String> labels = new HashMap<>();
-    private final Output<TextValue> command = output("command", TextValue.class,
-            Shape.text("the teacher's command label, once per command"));
+    private final Output<TextValue> command = output(COMMAND);
 
     private String lastLabel;
     private long lastMicros;
@@ -35,7 +42,7 @@ public final class Command extends VirtualMethod {
     Command(CommandParams params) {
         this.params = params;
         params.map().forEach((heard, label) -> labels.put(key(heard), label.strip()));
-        input("in", TextValue.class, Delivery.queue(32), this::onHeard);
+        input(IN, this::onHeard);
     }
 
     /** The form in which heard input is matched: trimmed, lower case, single spaces. */
@@ -76,7 +83,7 @@ public final class Command extends VirtualMethod {
     public static final class Provider extends SimpleMethodProvider<CommandParams> {
         public Provider() {
             super("command", "Maps a heard note or phrase to the teacher's command label",
-                    CommandParams.class, (layer, p) -> new Command(p), Layer.VIRTUAL);
+                    CommandParams.class, PORTS, (layer, p) -> new Command(p), Layer.VIRTUAL);
         }
     }
 }

@@ -3,8 +3,11 @@ package org.habla.methods.virtual;
 import com.fasterxml.jackson.databind.JsonNode;
 import java.time.Duration;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.SimpleMethodProvider;
@@ -22,10 +25,17 @@ import org.habla.sample.Sample;
  */
 public final class DistanceAngle extends VirtualMethod {
 
-    private final DistanceAngleParams params;
-    private final Output<RecordValue> out = output("distance_angle", RecordValue.class,
+    private static final InputPort<RecordValue> NEAREST = InputPort.optional("nearest", RecordValue.class,
+            Delivery.latest());
+    private static final InputPort<RecordValue> POSITION = InputPort.optional("position", RecordValue.class,
+            Delivery.latest());
+    private static final OutputPort<RecordValue> DISTANCE_ANGLE = OutputPort.of("distance_angle", RecordValue.class,
             Shape.record("the target in the robot frame: distance (m), bearing (rad, + left), whether it is perceived",
                     "distanceM", "angleRad", "seen"));
+    static final Ports PORTS = Ports.of(NEAREST, POSITION, DISTANCE_ANGLE);
+
+    private final DistanceAngleParams params;
+    private final Output<RecordValue> out = output(DISTANCE_ANGLE);
 
     private boolean started;
     private boolean seen;
@@ -37,8 +47,8 @@ public final class DistanceAngle extends VirtualMethod {
 
     DistanceAngle(DistanceAngleParams params) {
         this.params = params;
-        optionalInput("nearest", RecordValue.class, Delivery.latest(), this::onNearest);
-        optionalInput("position", RecordValue.class, Delivery.latest(), this::onPosition);
+        input(NEAREST, this::onNearest);
+        input(POSITION, this::onPosition);
         tickEvery(Duration.ofNanos(Math.round(1e9 / params.rateHz())));
     }
 
@@ -98,7 +108,7 @@ public final class DistanceAngle extends VirtualMethod {
     public static final class Provider extends SimpleMethodProvider<DistanceAngleParams> {
         public Provider() {
             super("distance-angle", "The target's distance and bearing with a seen flag, at a steady rate",
-                    DistanceAngleParams.class, (layer, p) -> new DistanceAngle(p), Layer.VIRTUAL);
+                    DistanceAngleParams.class, PORTS, (layer, p) -> new DistanceAngle(p), Layer.VIRTUAL);
         }
     }
 }

@@ -4,8 +4,11 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import java.time.Duration;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.SimpleMethodProvider;
@@ -28,10 +31,14 @@ import org.habla.sample.Sample;
  */
 public final class LinkState extends VirtualMethod {
 
-    private final LinkStateParams params;
-    private final Output<RecordValue> out = output("link", RecordValue.class, Shape.record(
+    private static final InputPort<RecordValue> LINK_IN = InputPort.of("link", RecordValue.class, Delivery.latest());
+    private static final OutputPort<RecordValue> LINK = OutputPort.of("link", RecordValue.class, Shape.record(
             "whether the robot's link is up, whether that news is stale, and for how long it has been so",
             "connected", "stale", "sinceMs", "interface", "detail", "connections"));
+    static final Ports PORTS = Ports.of(LINK_IN, LINK);
+
+    private final LinkStateParams params;
+    private final Output<RecordValue> out = output(LINK);
 
     private boolean known;
     private boolean connected;
@@ -46,7 +53,7 @@ public final class LinkState extends VirtualMethod {
 
     LinkState(LinkStateParams params) {
         this.params = params;
-        input("link", RecordValue.class, Delivery.latest(), this::onLink);
+        input(LINK_IN, this::onLink);
         tickEvery(Duration.ofMillis(Math.max(50, params.staleAfterMs() / 4)));
     }
 
@@ -97,7 +104,7 @@ public final class LinkState extends VirtualMethod {
     public static final class Provider extends SimpleMethodProvider<LinkStateParams> {
         public Provider() {
             super("link-state", "Whether the robot's link is up, whether that is stale, and since when",
-                    LinkStateParams.class, (layer, p) -> new LinkState(p), Layer.VIRTUAL);
+                    LinkStateParams.class, PORTS, (layer, p) -> new LinkState(p), Layer.VIRTUAL);
         }
     }
 }

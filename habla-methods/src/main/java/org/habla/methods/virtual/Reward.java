@@ -5,8 +5,11 @@ import java.util.HashMap;
 import java.util.Map;
 import java.util.regex.Pattern;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.SimpleMethodProvider;
@@ -28,20 +31,25 @@ import org.habla.sample.TextValue;
 public final class Reward extends VirtualMethod {
 
     private static final Pattern NUMBER = Pattern.compile("[+-]?(\\d+(\\.\\d*)?|\\.\\d+)");
+    private static final InputPort<TextValue> TEXT = InputPort.optional("text", TextValue.class, Delivery.queue(32));
+    private static final InputPort<RecordValue> BUTTONS = InputPort.optional("buttons", RecordValue.class,
+            Delivery.queue(32));
+    private static final OutputPort<NumberValue> REWARD = OutputPort.of("reward", NumberValue.class,
+            Shape.number("", "the teacher's reward in [-1, 1]: + pleasure, - pain; once per reward"));
+    static final Ports PORTS = Ports.of(TEXT, BUTTONS, REWARD);
 
     private final RewardParams params;
     private final Map<String, Double> words = new HashMap<>();
     private final Map<String, Boolean> pressed = new HashMap<>();
-    private final Output<NumberValue> reward = output("reward", NumberValue.class,
-            Shape.number("", "the teacher's reward in [-1, 1]: + pleasure, - pain; once per reward"));
+    private final Output<NumberValue> reward = output(REWARD);
 
     private long ignored;
 
     Reward(RewardParams params) {
         this.params = params;
         params.words().forEach((w, v) -> words.put(Command.key(w), v));
-        optionalInput("text", TextValue.class, Delivery.queue(32), this::onText);
-        optionalInput("buttons", RecordValue.class, Delivery.queue(32), this::onButtons);
+        input(TEXT, this::onText);
+        input(BUTTONS, this::onButtons);
     }
 
     private void onText(TextValue value, Sample sample) {
@@ -86,7 +94,7 @@ public final class Reward extends VirtualMethod {
     public static final class Provider extends SimpleMethodProvider<RewardParams> {
         public Provider() {
             super("reward", "The teacher's pleasure or pain as a number in [-1, 1], from text lines or touch sensors",
-                    RewardParams.class, (layer, p) -> new Reward(p), Layer.VIRTUAL);
+                    RewardParams.class, PORTS, (layer, p) -> new Reward(p), Layer.VIRTUAL);
         }
     }
 }

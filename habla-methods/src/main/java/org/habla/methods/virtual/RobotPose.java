@@ -2,8 +2,11 @@ package org.habla.methods.virtual;
 
 import java.util.Optional;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.methods.geometry.PlanarPose;
@@ -20,13 +23,17 @@ import org.habla.sample.Sample;
  */
 public final class RobotPose extends VirtualMethod {
 
-    private final Output<RecordValue> out = output("pose", RecordValue.class,
+    private static final InputPort<RecordValue> POSE_IN = InputPort.of("pose", RecordValue.class, Delivery.latest());
+    private static final OutputPort<RecordValue> POSE = OutputPort.of("pose", RecordValue.class,
             Shape.record("the robot's pose: position (m) and heading (rad, counter-clockwise)", PlanarPose.class));
+    static final Ports PORTS = Ports.of(POSE_IN, POSE);
+
+    private final Output<RecordValue> out = output(POSE);
 
     private long malformed;
 
     RobotPose() {
-        input("pose", RecordValue.class, Delivery.latest(), this::onPose);
+        input(POSE_IN, this::onPose);
     }
 
     private void onPose(RecordValue value, Sample sample) {
@@ -49,7 +56,7 @@ public final class RobotPose extends VirtualMethod {
     public static final class Provider extends SimpleMethodProvider<NoParams> {
         public Provider() {
             super("robot-pose", "The robot's pose {xM, yM, thetaRad} for the control architecture",
-                    NoParams.class, (layer, p) -> new RobotPose(), Layer.VIRTUAL);
+                    NoParams.class, PORTS, (layer, p) -> new RobotPose(), Layer.VIRTUAL);
         }
     }
 }
