@@ -2,8 +2,11 @@ package org.habla.methods.audio;
 
 import java.util.Optional;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.plugin.SimpleMethodProvider;
@@ -27,11 +30,14 @@ public final class AudioProcessing extends ProcessingMethod {
     /** The lowest sample rate analysed: below it there is no room for a voice's pitch and spectrum. */
     static final int MIN_RATE_HZ = 4000;
 
-    private final AudioProcessingParams params;
-    private final Output<RecordValue> features = output("features", RecordValue.class,
+    private static final OutputPort<RecordValue> FEATURES = OutputPort.of("features", RecordValue.class,
             Shape.record("level, pitch and band spectrum of one frame", "rms", "db", "pitchHz", "voiced", "spectrum"));
-    private final Output<AudioChunk> segments = output("segments", AudioChunk.class,
+    private static final OutputPort<AudioChunk> SEGMENTS = OutputPort.of("segments", AudioChunk.class,
             new Shape(PayloadKind.AUDIO, "", java.util.List.of(), "one utterance or tone, mono 16-bit"));
+
+    private final AudioProcessingParams params;
+    private final Output<RecordValue> features = output(FEATURES);
+    private final Output<AudioChunk> segments = output(SEGMENTS);
 
     private AudioFormat format;
     private FrameAnalyzer analyzer;
@@ -41,7 +47,16 @@ public final class AudioProcessing extends ProcessingMethod {
 
     AudioProcessing(AudioProcessingParams params) {
         this.params = params;
-        input("audio", AudioChunk.class, Delivery.queue(params.queue()), this::onAudio);
+        input(audio(params), this::onAudio);
+    }
+
+    /** The ports of an audio processing whose input queue holds {@code queue} chunks. */
+    static Ports ports(AudioProcessingParams params) {
+        return Ports.of(audio(params), FEATURES, SEGMENTS);
+    }
+
+    private static InputPort<AudioChunk> audio(AudioProcessingParams params) {
+        return InputPort.of("audio", AudioChunk.class, Delivery.queue(params.queue()));
     }
 
     private void onAudio(AudioChunk chunk, Sample sample) {
@@ -115,7 +130,8 @@ public final class AudioProcessing extends ProcessingMethod {
     public static final class Provider extends SimpleMethodProvider<AudioProcessingParams> {
         public Provider() {
             super("audio-processing", "Per-frame level, pitch and spectrum of audio, and the utterances cut out of it",
-                    AudioProcessingParams.class, (layer, p) -> new AudioProcessing(p), Layer.PROCESSING);
+                    AudioProcessingParams.class, AudioProcessing::ports, (layer, p) -> new AudioProcessing(p),
+                    Layer.PROCESSING);
         }
     }
 }

@@ -8,8 +8,11 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.SimpleMethodProvider;
@@ -52,14 +55,23 @@ public final class EmotionRecognition extends VirtualMethod {
     /** The level reported when there is no audio to measure. */
     private static final double SILENCE_DB = -120;
 
+    private static final InputPort<TextValue> WORDS = InputPort.optional("words", TextValue.class, Delivery.queue(16));
+    private static final InputPort<RecordValue> FEATURES = InputPort.optional("features", RecordValue.class,
+            Delivery.queue(1024));
+    private static final InputPort<TextValue> TOUCH = InputPort.optional("touch", TextValue.class, Delivery.queue(16));
+    private static final InputPort<NumberValue> REWARD = InputPort.optional("reward", NumberValue.class,
+            Delivery.queue(16));
+    private static final OutputPort<RecordValue> EMOTION = OutputPort.of("emotion", RecordValue.class,
+            Shape.record("the teacher's attitude at each word, touch or reward",
+                    "emotion", "valence", "arousal", "words", "intensity", "source"));
+    static final Ports PORTS = Ports.of(WORDS, FEATURES, TOUCH, REWARD, EMOTION);
+
     private record Frame(long micros, double db, double pitchHz, boolean voiced) {
     }
 
     private final EmotionRecognitionParams params;
     private final List<String> phrases;
-    private final Output<RecordValue> emotion = output("emotion", RecordValue.class,
-            Shape.record("the teacher's attitude at each word, touch or reward",
-                    "emotion", "valence", "arousal", "words", "intensity", "source"));
+    private final Output<RecordValue> emotion = output(EMOTION);
     private final ArrayDeque<Frame> frames = new ArrayDeque<>();
     /** A speaker's usual level and pitch, moved by each of their utterances. */
     private static final class Baseline {
@@ -84,10 +96,10 @@ public final class EmotionRecognition extends VirtualMethod {
         this.params = params;
         this.phrases = new ArrayList<>(params.valence().keySet());
         phrases.sort(Comparator.comparingInt((String p) -> p.split(" ").length).reversed().thenComparing(p -> p));
-        optionalInput("words", TextValue.class, Delivery.queue(16), this::onWords);
-        optionalInput("features", RecordValue.class, Delivery.queue(1024), this::onFeatures);
-        optionalInput("touch", TextValue.class, Delivery.queue(16), this::onTouch);
-        optionalInput("reward", NumberValue.class, Delivery.queue(16), this::onReward);
+        input(WORDS, this::onWords);
+        input(FEATURES, this::onFeatures);
+        input(TOUCH, this::onTouch);
+        input(REWARD, this::onReward);
     }
 
     private void onFeatures(RecordValue f, Sample sample) {
@@ -249,7 +261,7 @@ public final class EmotionRecognition extends VirtualMethod {
         public Provider() {
             super("emotion-recognition",
                     "Names the teacher's emotion from the words, the voice's loudness and pitch, touches and rewards",
-                    EmotionRecognitionParams.class, (layer, p) -> new EmotionRecognition(p), Layer.VIRTUAL);
+                    EmotionRecognitionParams.class, PORTS, (layer, p) -> new EmotionRecognition(p), Layer.VIRTUAL);
         }
     }
 }

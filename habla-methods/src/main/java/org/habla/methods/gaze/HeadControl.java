@@ -3,8 +3,11 @@ package org.habla.methods.gaze;
 import com.fasterxml.jackson.databind.JsonNode;
 import java.time.Duration;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.methods.geometry.CameraModel;
@@ -27,10 +30,19 @@ import org.habla.sample.VectorValue;
  */
 public final class HeadControl extends ProcessingMethod {
 
+    private static final InputPort<RecordValue> BLOBS = InputPort.of("blobs", RecordValue.class, Delivery.latest());
+    private static final InputPort<RecordValue> CAMERA = InputPort.optional("camera", RecordValue.class,
+            Delivery.latest());
+    /** The head's measured pose (the output of the same name is the command). */
+    private static final InputPort<RecordValue> MEASURED_HEAD = InputPort.optional("head", RecordValue.class,
+            Delivery.latest());
+    private static final OutputPort<VectorValue> HEAD = OutputPort.of("head", VectorValue.class,
+            Shape.vector("rad", "[tiltRad, panRad, nodRad] that keeps the target in view"));
+    static final Ports PORTS = Ports.of(BLOBS, CAMERA, MEASURED_HEAD, HEAD);
+
     private final HeadControlParams params;
     private final HeadLimits limits;
-    private final Output<VectorValue> head = output("head", VectorValue.class,
-            Shape.vector("rad", "[tiltRad, panRad, nodRad] that keeps the target in view"));
+    private final Output<VectorValue> head = output(HEAD);
 
     private CameraModel camera;
     private final PoseHistory measured = new PoseHistory();
@@ -44,9 +56,9 @@ public final class HeadControl extends ProcessingMethod {
         this.params = params;
         this.limits = HeadLimits.resolve(params, null);
         this.commanded = limits.clamp(new HeadPose(params.scanTiltRad(), 0, params.nodRad()));
-        input("blobs", RecordValue.class, Delivery.latest(), this::onBlobs);
-        optionalInput("camera", RecordValue.class, Delivery.latest(), this::onCamera);
-        optionalInput("head", RecordValue.class, Delivery.latest(), this::onHead);
+        input(BLOBS, this::onBlobs);
+        input(CAMERA, this::onCamera);
+        input(MEASURED_HEAD, this::onHead);
         tickEvery(Duration.ofMillis(params.periodMs()));
     }
 
@@ -142,7 +154,7 @@ public final class HeadControl extends ProcessingMethod {
     public static final class Provider extends SimpleMethodProvider<HeadControlParams> {
         public Provider() {
             super("head-control", "Turns the head to keep the target's blob in the middle of the image; scans when it is lost",
-                    HeadControlParams.class, (layer, p) -> new HeadControl(p), Layer.PROCESSING);
+                    HeadControlParams.class, PORTS, (layer, p) -> new HeadControl(p), Layer.PROCESSING);
         }
     }
 }

@@ -1,8 +1,11 @@
 package org.habla.methods.locomotion;
 
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.plugin.SimpleMethodProvider;
@@ -21,16 +24,20 @@ import org.habla.sample.VectorValue;
  */
 public final class GaitComposition extends ProcessingMethod {
 
+    private static final InputPort<VectorValue> MOTION = InputPort.of("motion", VectorValue.class, Delivery.queue(8));
+    private static final OutputPort<VectorValue> WALK = OutputPort.of("walk", VectorValue.class,
+            Shape.vector("m/s, rad/s", "[forwardMps, strafeMps, rotateRadps] within the walk limits"));
+    static final Ports PORTS = Ports.of(MOTION, WALK);
+
     private final GaitCompositionParams params;
     private final WalkLimits limits;
-    private final Output<VectorValue> walk = output("walk", VectorValue.class,
-            Shape.vector("m/s, rad/s", "[forwardMps, strafeMps, rotateRadps] within the walk limits"));
+    private final Output<VectorValue> walk = output(WALK);
     private long rejected;
 
     GaitComposition(GaitCompositionParams params) {
         this.params = params;
         this.limits = params.limits();
-        input("motion", VectorValue.class, Delivery.queue(8), this::onMotion);
+        input(MOTION, this::onMotion);
     }
 
     private void onMotion(VectorValue motion, Sample sample) {
@@ -65,7 +72,7 @@ public final class GaitComposition extends ProcessingMethod {
     public static final class Provider extends SimpleMethodProvider<GaitCompositionParams> {
         public Provider() {
             super("gait-composition", "Turns a planar motion [v, w] into a walk [forward, strafe, rotate] within the walk limits",
-                    GaitCompositionParams.class, (layer, p) -> new GaitComposition(p), Layer.PROCESSING);
+                    GaitCompositionParams.class, PORTS, (layer, p) -> new GaitComposition(p), Layer.PROCESSING);
         }
     }
 }

@@ -4,8 +4,11 @@ import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.plugin.SimpleMethodProvider;
@@ -27,10 +30,17 @@ import org.habla.sample.VectorValue;
  */
 public final class MotionComposition extends ProcessingMethod {
 
-    private final MotionCompositionParams params;
-    private final Output<VectorValue> out = output("motion", VectorValue.class,
+    private static final InputPort<VectorValue> MOTION = InputPort.of("motion", VectorValue.class, Delivery.latest());
+    private static final InputPort<RecordValue> LIMITS = InputPort.optional("limits", RecordValue.class,
+            Delivery.latest());
+    /** The ramped motion (the input of the same name is the one asked for). */
+    private static final OutputPort<VectorValue> OUT = OutputPort.of("motion", VectorValue.class,
             new Shape(PayloadKind.VECTOR, "m/s, rad/s", List.of("vMps", "wRadps"),
                     "the motion for the base, within its top speeds and acceleration"));
+    static final Ports PORTS = Ports.of(MOTION, LIMITS, OUT);
+
+    private final MotionCompositionParams params;
+    private final Output<VectorValue> out = output(OUT);
 
     private MotionLimits limits;
     private double targetV;
@@ -44,8 +54,8 @@ public final class MotionComposition extends ProcessingMethod {
     MotionComposition(MotionCompositionParams params) {
         this.params = params;
         this.limits = MotionLimits.NONE.overriddenBy(params.maxVelMps(), params.maxRotVelRadps());
-        input("motion", VectorValue.class, Delivery.latest(), this::onMotion);
-        optionalInput("limits", RecordValue.class, Delivery.latest(), this::onLimits);
+        input(MOTION, this::onMotion);
+        input(LIMITS, this::onLimits);
         tickEvery(Duration.ofMillis(params.tickMs()));
     }
 
@@ -130,7 +140,7 @@ public final class MotionComposition extends ProcessingMethod {
     public static final class Provider extends SimpleMethodProvider<MotionCompositionParams> {
         public Provider() {
             super("motion-composition", "Ramps [v, w] motions within a base's top speeds and acceleration limits",
-                    MotionCompositionParams.class, (layer, p) -> new MotionComposition(p), Layer.PROCESSING);
+                    MotionCompositionParams.class, PORTS, (layer, p) -> new MotionComposition(p), Layer.PROCESSING);
         }
     }
 }

@@ -6,8 +6,11 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Optional;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.plugin.SimpleMethodProvider;
@@ -33,11 +36,20 @@ import org.habla.sample.VectorValue;
  */
 public final class MovementSafety extends ProcessingMethod {
 
-    private final MovementSafetyParams params;
-    private final Output<VectorValue> out = output("motion", VectorValue.class,
+    private static final InputPort<VectorValue> MOTION = InputPort.of("motion", VectorValue.class, Delivery.latest());
+    private static final InputPort<RecordValue> NEAREST = InputPort.of("nearest", RecordValue.class, Delivery.latest());
+    private static final InputPort<RecordValue> LIMITS = InputPort.optional("limits", RecordValue.class,
+            Delivery.latest());
+    /** The safe motion (the input of the same name is the one asked for). */
+    private static final OutputPort<VectorValue> OUT = OutputPort.of("motion", VectorValue.class,
             new Shape(PayloadKind.VECTOR, "m/s, rad/s", List.of("vMps", "wRadps"), "the motion that is safe to make"));
-    private final Output<TextValue> vetoOut = output("veto", TextValue.class,
+    private static final OutputPort<TextValue> VETO = OutputPort.of("veto", TextValue.class,
             Shape.text("why a motion was stopped, once each time a veto begins"));
+    static final Ports PORTS = Ports.of(MOTION, NEAREST, LIMITS, OUT, VETO);
+
+    private final MovementSafetyParams params;
+    private final Output<VectorValue> out = output(OUT);
+    private final Output<TextValue> vetoOut = output(VETO);
 
     private MotionLimits limits;
     private double wantedV;
@@ -54,9 +66,9 @@ public final class MovementSafety extends ProcessingMethod {
     MovementSafety(MovementSafetyParams params) {
         this.params = params;
         this.limits = MotionLimits.NONE.overriddenBy(params.maxVelMps(), params.maxRotVelRadps());
-        input("motion", VectorValue.class, Delivery.latest(), this::onMotion);
-        input("nearest", RecordValue.class, Delivery.latest(), this::onNearest);
-        optionalInput("limits", RecordValue.class, Delivery.latest(), this::onLimits);
+        input(MOTION, this::onMotion);
+        input(NEAREST, this::onNearest);
+        input(LIMITS, this::onLimits);
         tickEvery(Duration.ofMillis(100));
     }
 
@@ -193,7 +205,7 @@ public final class MovementSafety extends ProcessingMethod {
     public static final class Provider extends SimpleMethodProvider<MovementSafetyParams> {
         public Provider() {
             super("movement-safety", "Vetoes motion towards an obstacle nearer than a stop distance, within top speeds",
-                    MovementSafetyParams.class, (layer, p) -> new MovementSafety(p), Layer.PROCESSING);
+                    MovementSafetyParams.class, PORTS, (layer, p) -> new MovementSafety(p), Layer.PROCESSING);
         }
     }
 }

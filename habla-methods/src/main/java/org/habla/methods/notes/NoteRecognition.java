@@ -2,8 +2,11 @@ package org.habla.methods.notes;
 
 import java.util.Set;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.methods.audio.MonoAudio;
@@ -23,10 +26,12 @@ import org.habla.sample.TextValue;
  */
 public final class NoteRecognition extends ProcessingMethod {
 
+    private static final OutputPort<TextValue> NOTE = OutputPort.of("note", TextValue.class,
+            Shape.text("name of a note heard, e.g. C5, once per note event"));
+
     private final NoteRecognitionParams params;
     private final Set<Note> allowed;
-    private final Output<TextValue> note = output("note", TextValue.class,
-            Shape.text("name of a note heard, e.g. C5, once per note event"));
+    private final Output<TextValue> note = output(NOTE);
 
     private AudioFormat format;
     private ToneDetector detector;
@@ -38,7 +43,16 @@ public final class NoteRecognition extends ProcessingMethod {
     NoteRecognition(NoteRecognitionParams params) {
         this.params = params;
         this.allowed = params.allowedNotes();
-        input("audio", AudioChunk.class, Delivery.queue(params.queue()), this::onAudio);
+        input(audio(params), this::onAudio);
+    }
+
+    /** The ports of a note recognition whose input queue holds {@code queue} chunks. */
+    static Ports ports(NoteRecognitionParams params) {
+        return Ports.of(audio(params), NOTE);
+    }
+
+    private static InputPort<AudioChunk> audio(NoteRecognitionParams params) {
+        return InputPort.of("audio", AudioChunk.class, Delivery.queue(params.queue()));
     }
 
     private void onAudio(AudioChunk chunk, Sample sample) {
@@ -76,7 +90,8 @@ public final class NoteRecognition extends ProcessingMethod {
     public static final class Provider extends SimpleMethodProvider<NoteRecognitionParams> {
         public Provider() {
             super("note-recognition", "Names the musical notes heard in audio, once per note",
-                    NoteRecognitionParams.class, (layer, p) -> new NoteRecognition(p), Layer.PROCESSING);
+                    NoteRecognitionParams.class, NoteRecognition::ports, (layer, p) -> new NoteRecognition(p),
+                    Layer.PROCESSING);
         }
     }
 }

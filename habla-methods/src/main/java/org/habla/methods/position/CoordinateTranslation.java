@@ -2,8 +2,11 @@ package org.habla.methods.position;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.methods.gaze.HeadPose;
@@ -35,10 +38,23 @@ import org.habla.sample.Sample;
  */
 public final class CoordinateTranslation extends ProcessingMethod {
 
-    private final CoordinateTranslationParams params;
-    private final Output<RecordValue> position = output("position", RecordValue.class,
+    private static final InputPort<RecordValue> NEAREST = InputPort.optional("nearest", RecordValue.class,
+            Delivery.latest());
+    private static final InputPort<RecordValue> BLOBS = InputPort.optional("blobs", RecordValue.class,
+            Delivery.latest());
+    private static final InputPort<RecordValue> HEAD = InputPort.optional("head", RecordValue.class,
+            Delivery.latest());
+    private static final InputPort<RecordValue> CAMERA = InputPort.optional("camera", RecordValue.class,
+            Delivery.latest());
+    private static final InputPort<RecordValue> ODOMETRY = InputPort.optional("odometry", RecordValue.class,
+            Delivery.latest());
+    private static final OutputPort<RecordValue> POSITION = OutputPort.of("position", RecordValue.class,
             Shape.record("the target in the robot frame (distance to its near surface); seen false keeps the last sighting",
                     "xM", "yM", "distanceM", "angleRad", "seen"));
+    static final Ports PORTS = Ports.of(NEAREST, BLOBS, HEAD, CAMERA, ODOMETRY, POSITION);
+
+    private final CoordinateTranslationParams params;
+    private final Output<RecordValue> position = output(POSITION);
 
     private CameraModel camera;
     private final PoseHistory heads = new PoseHistory();
@@ -52,11 +68,11 @@ public final class CoordinateTranslation extends ProcessingMethod {
 
     CoordinateTranslation(CoordinateTranslationParams params) {
         this.params = params;
-        optionalInput("nearest", RecordValue.class, Delivery.latest(), this::onNearest);
-        optionalInput("blobs", RecordValue.class, Delivery.latest(), this::onBlobs);
-        optionalInput("head", RecordValue.class, Delivery.latest(), this::onHead);
-        optionalInput("camera", RecordValue.class, Delivery.latest(), this::onCamera);
-        optionalInput("odometry", RecordValue.class, Delivery.latest(), this::onOdometry);
+        input(NEAREST, this::onNearest);
+        input(BLOBS, this::onBlobs);
+        input(HEAD, this::onHead);
+        input(CAMERA, this::onCamera);
+        input(ODOMETRY, this::onOdometry);
         if (params.hfovRad() != null && params.vfovRad() != null && params.cameraHeightM() != null) {
             camera = new CameraModel(params.hfovRad(), params.vfovRad(), 1, 1, params.cameraHeightM());
         }
@@ -216,7 +232,7 @@ public final class CoordinateTranslation extends ProcessingMethod {
         public Provider() {
             super("coordinate-translation",
                     "Places the target in the robot frame (and the world frame) from a range reading or a camera blob",
-                    CoordinateTranslationParams.class, (layer, p) -> new CoordinateTranslation(p), Layer.PROCESSING);
+                    CoordinateTranslationParams.class, PORTS, (layer, p) -> new CoordinateTranslation(p), Layer.PROCESSING);
         }
     }
 }

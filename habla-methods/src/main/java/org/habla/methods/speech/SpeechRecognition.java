@@ -4,8 +4,11 @@ import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.Optional;
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.methods.audio.MonoAudio;
@@ -51,6 +54,12 @@ public final class SpeechRecognition extends ProcessingMethod {
     /** The pause after speech at which the utterance so far is decoded, in case it is over (audio input). */
     static final double SPECULATE_AFTER_MS = 30;
 
+    private static final OutputPort<TextValue> WORDS = OutputPort.of("words", TextValue.class,
+            Shape.text("the phrase of the grammar recognised in one utterance"));
+    private static final OutputPort<RecordValue> RESULT = OutputPort.of("result", RecordValue.class,
+            Shape.record("the recognised phrase with its confidence and decoding time", "phrase", "confidence",
+                    "timeMs", "audioMs", "score"));
+
     /**
      * An utterance waiting for the decoder, with the source time of its last audio; a speculative one
      * (the audio input's utterance so far, taken at a pause) carries its {@link Speculation}.
@@ -80,11 +89,8 @@ public final class SpeechRecognition extends ProcessingMethod {
     }
 
     private final SpeechRecognitionParams params;
-    private final Output<TextValue> words = output("words", TextValue.class,
-            Shape.text("the phrase of the grammar recognised in one utterance"));
-    private final Output<RecordValue> result = output("result", RecordValue.class,
-            Shape.record("the recognised phrase with its confidence and decoding time", "phrase", "confidence",
-                    "timeMs", "audioMs", "score"));
+    private final Output<TextValue> words = output(WORDS);
+    private final Output<RecordValue> result = output(RESULT);
     private final ArrayDeque<Pending> pending = new ArrayDeque<>();
     private final VoiceCheck voice;
 
@@ -104,8 +110,21 @@ public final class SpeechRecognition extends ProcessingMethod {
     SpeechRecognition(SpeechRecognitionParams params) {
         this.params = params;
         this.voice = new VoiceCheck(params.minVoicedMs());
-        optionalInput("segments", AudioChunk.class, Delivery.queue(params.queue()), this::onSegment);
-        optionalInput("audio", AudioChunk.class, Delivery.queue(params.queue()), this::onAudio);
+        input(segments(params), this::onSegment);
+        input(audio(params), this::onAudio);
+    }
+
+    /** The ports of a speech recognition whose input queues hold {@code queue} chunks. */
+    static Ports ports(SpeechRecognitionParams params) {
+        return Ports.of(segments(params), audio(params), WORDS, RESULT);
+    }
+
+    private static InputPort<AudioChunk> segments(SpeechRecognitionParams params) {
+        return InputPort.optional("segments", AudioChunk.class, Delivery.queue(params.queue()));
+    }
+
+    private static InputPort<AudioChunk> audio(SpeechRecognitionParams params) {
+        return InputPort.optional("audio", AudioChunk.class, Delivery.queue(params.queue()));
     }
 
     @Override
@@ -343,7 +362,8 @@ public final class SpeechRecognition extends ProcessingMethod {
     public static final class Provider extends SimpleMethodProvider<SpeechRecognitionParams> {
         public Provider() {
             super("speech-recognition", "Recognises spoken phrases of a grammar with Sphinx-4",
-                    SpeechRecognitionParams.class, (layer, p) -> new SpeechRecognition(p), Layer.PROCESSING);
+                    SpeechRecognitionParams.class, SpeechRecognition::ports, (layer, p) -> new SpeechRecognition(p),
+                    Layer.PROCESSING);
         }
     }
 }

@@ -1,8 +1,11 @@
 package org.habla.methods.vision;
 
 import org.habla.method.Delivery;
+import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.OutputPort;
+import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.plugin.SimpleMethodProvider;
@@ -25,12 +28,17 @@ import org.habla.sample.Sample;
  */
 public final class ImageSegmentation extends ProcessingMethod {
 
-    private final ImageSegmentationParams params;
-    private final Output<RecordValue> blobs = output("blobs", RecordValue.class, Shape.record(
+    private static final InputPort<ImageFrame> IMAGE = InputPort.of("image", ImageFrame.class, Delivery.latest());
+    private static final OutputPort<RecordValue> BLOBS = OutputPort.of("blobs", RecordValue.class, Shape.record(
             "regions of each colour class in pixels, largest first", "width", "height", "blobs"));
-    private final Output<RecordValue> largest = output("largest", RecordValue.class, Shape.record(
+    private static final OutputPort<RecordValue> LARGEST = OutputPort.of("largest", RecordValue.class, Shape.record(
             "the largest region of the first colour class", "seen", "label", "cx", "cy", "area", "x", "y", "w", "h",
             "width", "height"));
+    static final Ports PORTS = Ports.of(IMAGE, BLOBS, LARGEST);
+
+    private final ImageSegmentationParams params;
+    private final Output<RecordValue> blobs = output(BLOBS);
+    private final Output<RecordValue> largest = output(LARGEST);
 
     private ColorSegmenter segmenter;
     private boolean busy;
@@ -41,7 +49,7 @@ public final class ImageSegmentation extends ProcessingMethod {
 
     ImageSegmentation(ImageSegmentationParams params) {
         this.params = params;
-        input("image", ImageFrame.class, Delivery.latest(), this::onImage);
+        input(IMAGE, this::onImage);
     }
 
     @Override
@@ -119,7 +127,7 @@ public final class ImageSegmentation extends ProcessingMethod {
     public static final class Provider extends SimpleMethodProvider<ImageSegmentationParams> {
         public Provider() {
             super("image-segmentation", "Finds the regions of configured colours in camera frames with OpenCV",
-                    ImageSegmentationParams.class, (layer, p) -> new ImageSegmentation(p), Layer.PROCESSING);
+                    ImageSegmentationParams.class, PORTS, (layer, p) -> new ImageSegmentation(p), Layer.PROCESSING);
         }
     }
 }
