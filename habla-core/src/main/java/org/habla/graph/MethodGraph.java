@@ -8,7 +8,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ExecutorService;
-import org.habla.config.ConfigError;
 import org.habla.config.HablaConfig;
 import org.habla.config.InterfaceConfig;
 import org.habla.config.MethodConfig;
@@ -78,10 +77,10 @@ public final class MethodGraph implements AutoCloseable {
         }
         this.watchdog = new MotionWatchdog(config.safety().watchdogMs(), clock, List.copyOf(links.values()));
         links.values().forEach(l -> l.watchdog(watchdog));
-        for (int i = 0; i < config.methods().size(); i++) {
-            MethodConfig mc = config.methods().get(i);
-            runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), createMethod(registry, mc, i), clock, backgroundPool,
-                    work, tap, config.cycleInputs(mc.id())));
+        for (MethodConfig mc : config.methods()) {
+            Method made = createMethod(registry, mc, config.methods().indexOf(mc));
+            runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), made, clock, backgroundPool, work, tap,
+                    config.cycleInputs(mc.id())));
         }
         var workerLink = config.methods().stream().anyMatch(m -> m.host().isPresent())
                 ? config.security().workerLink() : org.habla.security.WorkerLink.PLAIN;
@@ -169,13 +168,11 @@ public final class MethodGraph implements AutoCloseable {
 
     /** Makes the method of {@code $.methods[index]}; a constructor's refusal names that path. */
     private static Method createMethod(PluginRegistry registry, MethodConfig mc, int index) {
-        MethodProvider<?> provider = registry.method(mc.type()).orElseThrow(() ->
-                new IllegalStateException("no method type '" + mc.type() + "'"));
         try {
-            return MethodProvider.make(provider, mc.layer(), mc.params());
+            return MethodProvider.make(registry.method(mc.type()).orElseThrow(() ->
+                    new IllegalStateException("no method type '" + mc.type() + "'")), mc.layer(), mc.params());
         } catch (RuntimeException | LinkageError e) {
-            throw new MethodNotMadeException(new ConfigError("$.methods[" + index + "]", "method '" + mc.id()
-                    + "' of type '" + mc.type() + "' cannot be made: " + e.getMessage()), e);
+            throw new MethodNotMadeException(index, mc, e);
         }
     }
 

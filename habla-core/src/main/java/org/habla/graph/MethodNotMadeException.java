@@ -1,6 +1,7 @@
 package org.habla.graph;
 
 import org.habla.config.ConfigError;
+import org.habla.config.MethodConfig;
 
 /**
  * A method of the config could not be made when the graph was built: its type lists its ports for the params
@@ -10,7 +11,12 @@ public final class MethodNotMadeException extends RuntimeException {
 
     private final transient ConfigError error;
 
-    MethodNotMadeException(ConfigError error, Throwable cause) {
+    MethodNotMadeException(int index, MethodConfig method, Throwable cause) {
+        this(new ConfigError("$.methods[" + index + "]", "method '" + method.id() + "' of type '" + method.type()
+                + "' cannot be made: " + cause.getMessage()), cause);
+    }
+
+    private MethodNotMadeException(ConfigError error, Throwable cause) {
         super(error.toString(), cause);
         this.error = error;
     }

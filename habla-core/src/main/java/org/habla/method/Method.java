@@ -134,39 +134,6 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
         return out;
     }
 
-    // ---- the string-named declarations, while methods move to ports (removed once none uses them)
-
-    protected final <P extends Payload> Input<P> input(String name, Class<P> type, InputHandler<P> handler) {
-        return input(InputPort.of(name, type), handler);
-    }
-
-    protected final <P extends Payload> Input<P> input(String name, Class<P> type, Delivery delivery,
-            InputHandler<P> handler) {
-        return input(InputPort.of(name, type, delivery), handler);
-    }
-
-    protected final <P extends Payload> Input<P> input(String name, Class<P> type, Delivery delivery,
-            InputHandler<P> handler, Function<? super P, String> refusal) {
-        return input(InputPort.of(name, type, delivery), handler, refusal);
-    }
-
-    protected final <P extends Payload> Input<P> optionalInput(String name, Class<P> type, Delivery delivery,
-            InputHandler<P> handler) {
-        return input(InputPort.optional(name, type, delivery), handler);
-    }
-
-    protected final <P extends Payload> Input<P> input(String name, Class<P> type, Delivery delivery) {
-        return input(InputPort.of(name, type, delivery));
-    }
-
-    protected final <P extends Payload> Output<P> output(String name, Class<P> type) {
-        return output(OutputPort.of(name, type));
-    }
-
-    protected final <P extends Payload> Output<P> output(String name, Class<P> type, Shape shape) {
-        return output(OutputPort.of(name, type, shape));
-    }
-
     /** Asks the engine for {@link #onTick} every {@code period}; call from the constructor. */
     protected final void tickEvery(Duration period) {
         requireNew("ask for ticks");

@@ -54,13 +54,6 @@ public abstract class SimpleMethodProvider<P extends Record> implements MethodPr
         this.layers = Set.copyOf(EnumSet.of(first, more));
     }
 
-    /** TRANSITIONAL: ports learnt by making a method; removed once every provider lists its ports. */
-    protected SimpleMethodProvider(String name, String description, Class<P> paramsType,
-            BiFunction<Layer, P, Method> factory, Layer first, Layer... more) {
-        this(name, description, paramsType, (Function<P, Ports>) p -> factory.apply(first, p).boundPorts(), factory,
-                first, more);
-    }
-
     private static <P> Function<P, Ports> fixed(Ports ports) {
         Objects.requireNonNull(ports, "ports");
         return p -> ports;
