@@ -5,7 +5,6 @@ package org.habla.net;
 
 import java.io.IOException;
 import java.io.InputStream;
-import java.net.Socket;
 import java.net.SocketTimeoutException;
 import java.util.List;
 import java.util.Optional;
@@ -16,13 +15,16 @@ import org.slf4j.LoggerFactory;
 
 /**
  * One control client's connection: a reader that turns its frames into requests, a writer that drains its
- * {@link Outbox}, each on its own virtual thread. Whatever goes wrong stays inside: one log line, the
+ * {@link Outbox}, each on its own virtual thread. On a plain TCP connection a sample for a client that keeps up
+ * (nothing queued, nobody writing) is written by the engine thread that hands it out, without waking the writer;
+ * what the socket does not take at once is queued first. Whatever goes wrong stays inside: one log line, the
  * connection closes, the server and the other clients carry on. Its {@link ConnectionGuard} sees what it
  * does ({@link PeerActivity}, the frame it is reading) and may evict it: the client is told why, then closed.
  *
  * <pre>
  *   socket in  -&gt; FrameReader -&gt; ControlProtocol -&gt; ControlPoint.write / replies -+
  *   engine     -&gt; offerSample / offerNotice -----------------------------------&gt; Outbox -&gt; FrameWriter -&gt; socket out
+ *   engine     -&gt; offerSample, nothing queued -------------------------------------------&gt; tryWrite --&gt; socket out
  * </pre>
  */
 final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Guarded {
@@ -32,7 +34,7 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     /** How long a connection that broke the protocol may take to receive its error line before it is closed. */
     private static final long LINGER_MS = 2_000;
 
-    private final Socket socket;
+    private final ClientConnection socket;
     private final String label;
     private final ControlProtocol protocol;
     private final Limits limits;
@@ -50,10 +52,13 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     private volatile Thread writer;
     private volatile Thread reader;
     private volatile FrameReader frames;
+    /** Whether samples may be written by the engine thread that hands them out ({@link ClientConnection#tryWrite}). */
+    private final boolean direct;
 
-    ControlClient(Socket socket, String label, ClientId id, ControlProtocol protocol, Limits limits,
+    ControlClient(ClientConnection socket, String label, ClientId id, ControlProtocol protocol, Limits limits,
             BlockBudget budget, ConnectionGuard guard, ControlServer.Counters counters, Runnable onClosed) {
         this.socket = socket;
+        this.direct = socket.writesWithoutWaiting();
         this.id = id;
         this.label = label;
         this.protocol = protocol;
@@ -128,10 +133,41 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
         close();
     }
 
-    /** Queues a sample for the client, once it may read (it has authenticated, or the port is open). */
+    /**
+     * Hands a sample to the client, once it may read (it has authenticated, or the port is open): written at once
+     * where the connection allows and nothing is queued, queued otherwise.
+     */
     void offerSample(String output, EncodedFrame frame) {
-        if (admitted != null) {
-            outbox.offerSample(output, frame);
+        if (admitted == null) {
+            return;
+        }
+        if (direct && frame.body().length == 0 && outbox.claimDirect()) {
+            writeDirect(frame);
+            return;
+        }
+        outbox.offerSample(output, frame);
+    }
+
+
+    /** Writes what the socket takes of {@code frame} now; the rest goes to the outbox, first in line. */
+    private void writeDirect(EncodedFrame frame) {
+        byte[] line = frame.line();
+        int n;
+        try {
+            n = socket.tryWrite(line);
+        } catch (IOException e) {
+            n = 0; // the connection is gone: its reader or writer finds out and closes it
+        }
+        if (n == line.length) {
+            outbox.releaseDirect(null, false);
+            activity.delivered();
+            counters.linesOut.incrementAndGet();
+        } else if (n == 0) {
+            outbox.releaseDirect(frame, true);
+        } else {
+            activity.delivered();
+            outbox.releaseDirect(new EncodedFrame(frame.frame(), java.util.Arrays.copyOfRange(line, n, line.length)),
+                    false);
         }
     }
 
@@ -188,7 +224,7 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     private void readLoop() {
         boolean client = false; // whether its first frame made it a client of the port
         try {
-            FrameReader in = new FrameReader(socket.getInputStream(), limits.maxLineBytes(), limits.maxBinaryBytes(),
+            FrameReader in = new FrameReader(socket.in(), limits.maxLineBytes(), limits.maxBinaryBytes(),
                     budget);
             frames = in;
             while (!closed.get()) {
@@ -244,10 +280,11 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
 
     private void writeLoop() {
         try {
-            FrameWriter out = new FrameWriter(socket.getOutputStream());
+            FrameWriter out = new FrameWriter(socket.out());
             List<EncodedFrame> batch;
             while ((batch = outbox.take()) != null) {
                 out.send(batch);
+                outbox.sent();
                 activity.delivered();
                 counters.linesOut.addAndGet(batch.size());
             }
@@ -277,8 +314,8 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
                 return;
             }
             socket.shutdownOutput();
-            socket.setSoTimeout(200);
-            InputStream in = socket.getInputStream();
+            socket.readTimeout(200);
+            InputStream in = socket.in();
             byte[] sink = new byte[16_384];
             long until = System.nanoTime() + LINGER_MS * 1_000_000;
             while (System.nanoTime() < until && in.read(sink) >= 0) {

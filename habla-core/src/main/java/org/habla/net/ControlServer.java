@@ -110,7 +110,8 @@ public final class ControlServer implements AutoCloseable {
             throw new IllegalStateException("control socket '" + point.name() + "' is already bound");
         }
         String bind = bindAddress();
-        ServerSocket server = new ServerSocket();
+        // A channel's socket: what it accepts are channels, so a plain connection can be written without waiting.
+        ServerSocket server = java.nio.channels.ServerSocketChannel.open().socket();
         try {
             server.setReuseAddress(true);
             server.bind(new InetSocketAddress(InetAddress.getByName(bind), expose.port()), ConnectionGuard.ACCEPT_BACKLOG);
@@ -261,7 +262,10 @@ public final class ControlServer implements AutoCloseable {
         ControlClient[] self = new ControlClient[1];
         ClientId id = new ClientId(point.name() + "#" + n,
                 socket.getInetAddress().getHostAddress() + ":" + socket.getPort());
-        self[0] = new ControlClient(socket, label, id, protocol, limits, budget, guard, counters, () -> {
+        ClientConnection connection = socket.getChannel() != null && !(socket instanceof javax.net.ssl.SSLSocket)
+                ? new ChannelConnection(socket.getChannel(), ChannelReadiness.shared())
+                : ClientConnection.of(socket);
+        self[0] = new ControlClient(connection, label, id, protocol, limits, budget, guard, counters, () -> {
             guard.left(self[0]);
             if (clients.remove(self[0])) {
                 droppedByGone.addAndGet(self[0].dropped());

@@ -1,3 +1,5 @@
+// Over 300 lines, on purpose: one lock guards the queue, the rate limit's held samples, the drop count and who owns
+// the socket's writing side (the writer or a direct sender); split, the parts would have to share that lock.
 package org.habla.net;
 
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
@@ -24,7 +26,10 @@ import java.util.concurrent.locks.ReentrantLock;
  *   <li>Notices (staleness, who commands the socket, ...) never wait and never pile up: a newer one replaces one
  *       of the same type not yet sent.</li>
  * </ul>
- * One writer thread takes batches with {@link #take}.
+ * One writer thread takes batches with {@link #take} and says when it has {@link #sent} them. An engine thread may
+ * instead write a sample to the socket itself when nothing waits here and nobody is writing: it
+ * {@link #claimDirect claims} the writing side, writes what the socket takes at once, and hands back the rest
+ * ({@link #releaseDirect}), which goes out first.
  */
 final class Outbox {
 
@@ -41,11 +46,14 @@ final class Outbox {
     private long droppedUntold;
     private long droppedTotal;
     private boolean finished;
+    /** Whether the writer or a direct sender is writing to the socket now. */
+    private boolean sending;
 
     private record Entry(EncodedFrame frame, Kind kind) {
     }
 
-    private enum Kind { SAMPLE, REPLY, NOTICE }
+    /** PARTIAL: the unsent end of a line written directly, never dropped. */
+    private enum Kind { SAMPLE, REPLY, NOTICE, PARTIAL }
 
     Outbox(int sampleCapacity, int replyCapacity) {
         if (sampleCapacity < 1 || replyCapacity < 1) {
@@ -85,6 +93,64 @@ final class Outbox {
             samples++;
             changed.signal();
             return dropped;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Claims the socket's writing side for a sample written directly, if nothing waits to be written, nobody
+     * writes, no drop is untold and no rate limit holds samples back.
+     *
+     * @return whether the caller now owns the writing side and must {@link #releaseDirect} it
+     */
+    boolean claimDirect() {
+        lock.lock();
+        try {
+            if (finished || sending || !queue.isEmpty() || minIntervalNanos > 0 || droppedUntold > 0) {
+                return false;
+            }
+            sending = true;
+            return true;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Gives back the writing side after a direct write; {@code rest}, if not null, is what the socket did not take:
+     * the whole sample ({@code whole}), which may still be dropped like any queued one, or the end of a line
+     * begun, which is written next whatever happens.
+     */
+    void releaseDirect(EncodedFrame rest, boolean whole) {
+        lock.lock();
+        try {
+            sending = false;
+            if (rest != null) {
+                if (!whole) {
+                    queue.addFirst(new Entry(rest, Kind.PARTIAL));
+                } else if (!finished) {
+                    if (samples == sampleCapacity) {
+                        dropOldestSample();
+                    }
+                    queue.addFirst(new Entry(rest, Kind.SAMPLE));
+                    samples++;
+                }
+            }
+            if (!queue.isEmpty()) {
+                changed.signalAll(); // the writer, who waited for the writing side; otherwise it sleeps on
+            }
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** The writer has written the batch {@link #take} gave it. */
+    void sent() {
+        lock.lock();
+        try {
+            sending = false;
+            changed.signalAll();
         } finally {
             lock.unlock();
         }
@@ -136,7 +202,8 @@ final class Outbox {
 
     /**
      * Takes everything ready to write, in order, preceded by a {@code dropped} notice if samples were dropped
-     * since the last one. Blocks until something is ready.
+     * since the last one. Blocks until something is ready and nobody else writes; the caller then owns the writing
+     * side until it calls {@link #sent}.
      *
      * @return the batch, or {@code null} once {@link #finish}ed and empty
      */
@@ -146,9 +213,11 @@ final class Outbox {
             while (true) {
                 long wait = releaseDueSamples();
                 if (!queue.isEmpty()) {
-                    return drain();
-                }
-                if (finished) {
+                    if (!sending) {
+                        sending = true;
+                        return drain();
+                    }
+                } else if (finished) {
                     return null;
                 }
                 if (wait > 0) {
@@ -184,7 +253,7 @@ final class Outbox {
             if (finished) {
                 return;
             }
-            queue.clear();
+            queue.removeIf(e -> e.kind != Kind.PARTIAL); // a line begun is ended before the last one
             held.clear();
             samples = 0;
             replies = 0;

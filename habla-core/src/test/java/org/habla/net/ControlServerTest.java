@@ -274,6 +274,41 @@ class ControlServerTest {
     }
 
     @Test
+    void aClientWhoseSocketFillsNowAndThenGetsEveryLineWholeWithItsRepliesAmongTheSamples() throws Exception {
+        FakeControlPoint point = FakeControlPoint.twoWay();
+        ControlServer server = serve(point, new Limits(4_096, 65_536, 4, 4_096));
+        TestClient c = connect(server);
+        await("the client is registered", () -> server.clientCount() == 1);
+        String block = "b".repeat(2_500);
+        int count = 3_000;
+        int pings = 0;
+        for (int i = 1; i <= count; i++) {
+            point.emit("command", new TextValue(i + block)); // lines the socket takes in part once it is full
+            if (i % 100 == 0) {
+                c.send("{\"op\":\"ping\",\"id\":" + i + "}");
+                pings++;
+            }
+        }
+        long lastSeq = 0;
+        int pongs = 0;
+        while (lastSeq != count) {
+            Frame f = c.next(); // fails on a line cut short or spliced into another
+            if (f.type().equals("sample")) {
+                assertThat(f.header().path("seq").asLong()).isEqualTo(lastSeq + 1); // the queue holds them all
+                lastSeq = f.header().path("seq").asLong();
+                assertThat(f.header().path("value").asText()).isEqualTo(lastSeq + block);
+            } else if (f.type().equals("pong")) {
+                pongs++;
+            }
+        }
+        while (pongs < pings) {
+            assertThat(c.next().type()).isEqualTo("pong");
+            pongs++;
+        }
+        assertThat(pongs).isEqualTo(pings);
+    }
+
+    @Test
     void aNewClientIsRefusedWithAnErrorLineOnlyWhenEveryClientIsWorking() throws Exception {
         ControlServer server = serve(FakeControlPoint.twoWay(), new Limits(4_096, 65_536, 2, 8));
         for (int i = 0; i < 2; i++) {

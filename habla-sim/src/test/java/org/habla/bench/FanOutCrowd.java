@@ -54,48 +54,69 @@ final class FanOutCrowd {
                 rateHz, warmupS, seconds);
         try (BenchRobot robot = new BenchRobot(1_000_000_000L / rateHz)) {
             Daemon daemon = BenchDaemon.start(robot.port());
-            List<SampleClient> threads = new ArrayList<>();
-            CrowdReader crowd = null;
-            Socket silent = new Socket();
             try {
-                int port = daemon.port("value");
-                List<Figures> readers = new ArrayList<>();
-                if (threadPerClient) {
-                    for (int i = 0; i < clients; i++) {
-                        threads.add(new SampleClient(port));
-                    }
-                    readers.addAll(threads);
-                } else {
-                    crowd = new CrowdReader(port, clients);
-                    readers.addAll(crowd.clients());
-                }
-                silent.setReceiveBufferSize(4096);
-                silent.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), port));
-                for (Figures c : readers) {
-                    LatencyBench.await(() -> c.total() > 0, 20_000, "no sample reached a fan-out client");
-                }
-                Thread.sleep(warmupS * 1000L);
+                System.out.println("the daemon: channel -> pass-through x2, the exposed socket");
                 long droppedBefore = FanOutBench.dropped(daemon);
-                threads.forEach(SampleClient::startRecording);
-                if (crowd != null) {
-                    crowd.startRecording();
-                }
-                Thread.sleep(seconds * 1000L);
-                threads.forEach(SampleClient::stopRecording);
-                if (crowd != null) {
-                    crowd.stopRecording();
-                }
-                print(readers, FanOutBench.dropped(daemon) - droppedBefore);
+                measure(daemon.port("value"), () -> FanOutBench.dropped(daemon) - droppedBefore);
             } finally {
-                for (SampleClient c : threads) {
-                    c.close();
-                }
-                if (crowd != null) {
-                    crowd.close();
-                }
-                silent.close();
                 daemon.close();
             }
+        }
+        for (PlainFanout.Writers writers : PlainFanout.Writers.values()) {
+            try (BenchRobot robot = new BenchRobot(1_000_000_000L / rateHz);
+                    PlainFanout plain = new PlainFanout(robot.port(), writers)) {
+                System.out.printf("%n%s%n", writers.title);
+                measure(plain.port(), plain::start, () -> 0L);
+            }
+        }
+    }
+
+    private void measure(int port, java.util.function.LongSupplier dropped) throws Exception {
+        measure(port, () -> { }, dropped);
+    }
+
+    /** Connects the readers and the silent client to {@code port}, runs {@code begin}, warms up, measures, prints. */
+    private void measure(int port, Runnable begin, java.util.function.LongSupplier dropped) throws Exception {
+        List<SampleClient> threads = new ArrayList<>();
+        CrowdReader crowd = null;
+        Socket silent = new Socket();
+        try {
+            List<Figures> readers = new ArrayList<>();
+            if (threadPerClient) {
+                for (int i = 0; i < clients; i++) {
+                    threads.add(new SampleClient(port));
+                }
+                readers.addAll(threads);
+            } else {
+                crowd = new CrowdReader(port, clients);
+                readers.addAll(crowd.clients());
+            }
+            silent.setReceiveBufferSize(4096);
+            silent.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), port));
+            begin.run();
+            for (Figures c : readers) {
+                LatencyBench.await(() -> c.total() > 0, 20_000, "no sample reached a fan-out client");
+            }
+            Thread.sleep(warmupS * 1000L);
+            long droppedBefore = dropped.getAsLong();
+            threads.forEach(SampleClient::startRecording);
+            if (crowd != null) {
+                crowd.startRecording();
+            }
+            Thread.sleep(seconds * 1000L);
+            threads.forEach(SampleClient::stopRecording);
+            if (crowd != null) {
+                crowd.stopRecording();
+            }
+            print(readers, dropped.getAsLong() - droppedBefore);
+        } finally {
+            for (SampleClient c : threads) {
+                c.close();
+            }
+            if (crowd != null) {
+                crowd.close();
+            }
+            silent.close();
         }
     }
 
