@@ -6,8 +6,8 @@
 #   JDK 24 and later: the JDK's ahead-of-time cache (classes already loaded and linked).
 #     no cache, no recording   the daemon records what it loads, when it stops     DIR/NAME-KEY.PID.aotconf
 #                              (not one with a flight recording: the JVM would turn that off)
-#     a finished recording     the launch makes the cache from it in the background, at the lowest priority,
-#                              and starts without one                              DIR/NAME-KEY.aot
+#     a finished recording     the launch makes the cache from it in the background, at the lowest priority
+#                              (HABLA_CACHE_NICE, default 19), and starts without one   DIR/NAME-KEY.aot
 #     a cache                  the daemon maps it
 #   KEY sums the JDK's release file and OPTS: another JDK or other options make a cache of their own. A cache
 #   older than a jar of LIB is deleted (the JVM would refuse it); one the JVM refuses anyway (a JDK updated in
@@ -49,7 +49,7 @@ habla_class_cache() {
     mv "$_rec" "$_making.aotconf" 2>/dev/null || return 0
     # shellcheck disable=SC2086
     ( trap '' INT HUP
-      if nice -n 19 "$JAVA_HOME/bin/java" $_opts -XX:AOTMode=create "-XX:AOTConfiguration=$_making.aotconf" \
+      if nice -n "${HABLA_CACHE_NICE:-19}" "$JAVA_HOME/bin/java" $_opts -XX:AOTMode=create "-XX:AOTConfiguration=$_making.aotconf" \
           "-XX:AOTCache=$_making.aot" "${_quiet[@]}" -cp "$_lib/*" >/dev/null 2>&1; then
         mv -f "$_making.aot" "$_base.aot"
       fi

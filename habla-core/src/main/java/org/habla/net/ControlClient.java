@@ -148,7 +148,6 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
         outbox.offerSample(output, frame);
     }
 
-
     /** Writes what the socket takes of {@code frame} now; the rest goes to the outbox, first in line. */
     private void writeDirect(EncodedFrame frame) {
         byte[] line = frame.line();
