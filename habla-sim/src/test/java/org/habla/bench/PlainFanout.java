@@ -1,8 +1,6 @@
 package org.habla.bench;
 
-import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
@@ -112,7 +110,7 @@ final class PlainFanout implements AutoCloseable {
             long seq = 0;
             int turn = 0;
             for (String line = in.readLine(); line != null && !closed; line = in.readLine()) {
-                byte[] bytes = sampleLine(JSON.readTree(line), ++seq);
+                byte[] bytes = PlainRelay.sampleLine(JSON.readTree(line), ++seq).getBytes(StandardCharsets.UTF_8);
                 Object[] all = clients.toArray();
                 int n = all.length;
                 for (int i = 0; i < n; i++) {
@@ -133,23 +131,19 @@ final class PlainFanout implements AutoCloseable {
         }
     }
 
+    /** A client's writer: sends what its queue holds until the client goes away. */
     private static void write(SocketChannel channel, BlockingQueue<ByteBuffer> queue) {
         try {
             while (true) {
-                send(channel, queue.take());
+                ByteBuffer bytes = queue.take();
+                while (bytes.hasRemaining()) {
+                    channel.write(bytes);
+                }
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
-        }
-    }
-
-    private static void send(SocketChannel channel, ByteBuffer bytes) {
-        try {
-            while (bytes.hasRemaining()) {
-                channel.write(bytes);
-            }
         } catch (IOException e) {
-            // that client went away
+            // that client went away (or the relay closed its socket)
         }
     }
 
@@ -160,13 +154,6 @@ final class PlainFanout implements AutoCloseable {
         } catch (IOException e) {
             return false;
         }
-    }
-
-    private static byte[] sampleLine(JsonNode reading, long seq) throws IOException {
-        ObjectNode s = JSON.createObjectNode().put("type", "sample").put("output", "out").put("seq", seq)
-                .put("t", reading.path("t").asLong()).put("stale", false).put("kind", "number");
-        s.set("value", reading.path("value"));
-        return (JSON.writeValueAsString(s) + "\n").getBytes(StandardCharsets.UTF_8);
     }
 
     @Override

@@ -125,7 +125,8 @@ final class PlainRelay implements AutoCloseable {
         }
     }
 
-    private static String sampleLine(JsonNode reading, long seq) throws IOException {
+    /** The sample line a plain relay writes for {@code reading}, newline included. */
+    static String sampleLine(JsonNode reading, long seq) throws IOException {
         ObjectNode s = JSON.createObjectNode().put("type", "sample").put("output", "out").put("seq", seq)
                 .put("t", reading.path("t").asLong()).put("stale", false).put("kind", "number");
         s.set("value", reading.path("value"));
