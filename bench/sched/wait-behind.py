@@ -39,7 +39,7 @@ def main():
                 name = re.sub(r'\[.*', '', task).strip()
                 pid = (ids.group(2) or ids.group(1)) if ids else '-'
                 behind[(name, pid)] += overlap * 1000
-    total = sum(since_until[2] - since_until[1] for since_until in waits) * 1000
+    total = sum(until - since for _, since, until in waits) * 1000
     print(f'{len(waits)} wake-ups of {thread} waited more than {least} ms, {total:.1f} ms in all; '
           f'on their CPU meanwhile (ms, thread, process):')
     for (name, pid), ms in behind.most_common(15):
