@@ -350,6 +350,23 @@ class WorkerPlacementTest {
     }
 
     @Test
+    void theDaemonRefusesToStartWhenAWorkerAtStartDoesNotTrustItsSecret() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0, org.habla.security.WorkerSecret.of(SECRET));
+        String host = "127.0.0.1:" + worker.port();
+        HablaConfig wrong = secured("not-the-lab-secret-0123", numbersOnFreePorts(host, Fallback.NONE));
+        assertThatThrownBy(() -> Daemon.start(wrong, WorkerTestMethods.all(), EngineClock.system()))
+                .isInstanceOf(PlacementRefusedException.class)
+                .hasMessageContaining("method 'p' is placed on worker " + host)
+                .hasMessageContaining("does not trust this daemon");
+
+        try (Daemon right = Daemon.start(secured(SECRET, numbersOnFreePorts(host, Fallback.NONE)),
+                WorkerTestMethods.all(), EngineClock.system())) {
+            await(() -> right.status().path("methods").findValues("placement").stream()
+                    .anyMatch(p -> p.path("up").asBoolean()), "the placement of a daemon with the secret comes up");
+        }
+    }
+
+    @Test
     void aWorkerWithASecretRefusesAPlaceLineThatCameWithoutTheProof() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.all(), 0, org.habla.security.WorkerSecret.of(SECRET));
         try (Socket s = new Socket("127.0.0.1", worker.port())) {
