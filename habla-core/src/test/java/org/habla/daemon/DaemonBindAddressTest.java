@@ -19,7 +19,7 @@ import org.junit.jupiter.api.Timeout;
  * one, {@code ::} is both (the kernel's dual stack). Checked on the loopback addresses of both families.
  */
 @Timeout(60)
-class DaemonBindAddressTest {
+public class DaemonBindAddressTest {
 
     private static final int CONNECT_MILLIS = 2_000;
 
@@ -68,7 +68,7 @@ class DaemonBindAddressTest {
     }
 
     /** Whether ::1 can be bound here (a container may have IPv6 off). */
-    static boolean ipv6Loopback() {
+    public static boolean ipv6Loopback() {
         try (var s = new java.net.ServerSocket()) {
             s.bind(new InetSocketAddress(InetAddress.getByName("::1"), 0));
             return true;

@@ -403,6 +403,23 @@ class WorkerPlacementTest {
     }
 
     @Test
+    void aWorkerAskedForEveryIpv4AddressDoesNotListenOnIpv6() throws Exception {
+        org.junit.jupiter.api.Assumptions.assumeTrue(org.habla.daemon.DaemonBindAddressTest.ipv6Loopback(),
+                "this computer has no IPv6 loopback");
+        EngineClock clock = EngineClock.system();
+        toClose.add(clock::close);
+        WorkerServer worker = new WorkerServer(WorkerTestMethods.all(), "0.0.0.0", 0, clock, Limits.DEFAULTS,
+                org.habla.security.WorkerSecret.of(SECRET), null);
+        toClose.add(worker);
+        worker.start();
+        try (Socket v4 = new Socket("127.0.0.1", worker.port())) {
+            v4.setSoTimeout(15_000);
+            assertThat(JSON.readTree(lines(v4).readLine()).path("type").asText()).isEqualTo("hello");
+        }
+        assertThatThrownBy(() -> new Socket("::1", worker.port()).close()).isInstanceOf(java.net.ConnectException.class);
+    }
+
+    @Test
     void aDaemonTrustingTheWorkersCertificatePlacesOverTlsAndAPlainDaemonIsToldWhy(@org.junit.jupiter.api.io.TempDir
             java.nio.file.Path dir) throws Exception {
         java.nio.file.Path cert = dir.resolve("worker.crt");
