@@ -48,6 +48,8 @@ final class MethodRunner {
 
     static final String TICK_PREFIX = "tick:";
     private final GraphTap tap;
+    /** Why the outputs are stale, or null while they are fresh (set under the link-state lock). */
+    private volatile StaleCause staleCause;
 
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
             WorkCount work, GraphTap tap) {
@@ -150,8 +152,10 @@ final class MethodRunner {
         return context.commandChannelsByOutput();
     }
 
-    void stale(boolean isStale) {
-        context.stale(isStale);
+    /** Marks the outputs stale for {@code cause}, or fresh when it is null. */
+    void stale(StaleCause cause) {
+        staleCause = cause;
+        context.stale(cause != null);
     }
 
     boolean stale() {
@@ -278,6 +282,10 @@ final class MethodRunner {
             n.put("readiness", context.readinessDetail());
         }
         n.put("stale", context.stale());
+        StaleCause cause = staleCause;
+        if (cause != null) {
+            n.putObject("staleBecause").put("source", cause.source()).put("why", cause.why());
+        }
         scheduler.host().status(n);
         scheduler.statusTo(n, nowMicros);
         ObjectNode inputs = n.putObject("inputs");

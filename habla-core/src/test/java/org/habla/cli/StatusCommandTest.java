@@ -63,6 +63,42 @@ class StatusCommandTest {
         }
     }
 
+    @Test
+    void theCommandFindsTheStatusEndpointFromTheDaemonsConfig(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        int port = org.habla.testing.DaemonProcess.freePorts(1)[0];
+        java.nio.file.Path config = java.nio.file.Files.writeString(dir.resolve("room.json"), """
+                {"system": "room", "security": {"insecure": true}, "status": {"bind": "0.0.0.0", "port": %d}}
+                """.formatted(port));
+        try (var server = new org.habla.status.StatusServer(new org.habla.config.StatusConfig("0.0.0.0", port),
+                () -> new ObjectMapper().createObjectNode().put("system", "room"))) {
+            server.start();
+            CommandRun positional = CommandRun.of(new StatusCommand(), config.toString(), "--json");
+            assertThat(positional.exitCode()).as(positional.err()).isEqualTo(ExitCodes.OK);
+            assertThat(positional.out()).contains("\"system\" : \"room\"");
+
+            CommandRun option = CommandRun.of(new StatusCommand(), "--config", config.toString(), "--json");
+            assertThat(option.exitCode()).as(option.err()).isEqualTo(ExitCodes.OK);
+            assertThat(option.out()).contains("\"system\" : \"room\"");
+        }
+        CommandRun gone = CommandRun.of(new StatusCommand(), config.toString());
+        assertThat(gone.exitCode()).isEqualTo(ExitCodes.RUNTIME_FAILURE);
+        assertThat(gone.err()).contains("no daemon status at 127.0.0.1:" + port, "status.port of " + config);
+    }
+
+    @Test
+    void aConfigWithoutAStatusEndpointIsSaidSo(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        java.nio.file.Path config = java.nio.file.Files.writeString(dir.resolve("quiet.json"),
+                "{\"system\": \"quiet\", \"status\": {\"port\": 0}}");
+        CommandRun run = CommandRun.of(new StatusCommand(), config.toString());
+        assertThat(run.exitCode()).isEqualTo(ExitCodes.USAGE_OR_CONFIG);
+        assertThat(run.err()).contains("turns the status endpoint off (status.port 0)");
+
+        CommandRun broken = CommandRun.of(new StatusCommand(), dir.resolve("missing.json").toString());
+        assertThat(broken.exitCode()).isEqualTo(ExitCodes.USAGE_OR_CONFIG);
+    }
+
     private static String line(String[] lines, String socket) {
         for (String l : lines) {
             if (l.startsWith(socket + " ")) {
