@@ -150,6 +150,7 @@ final class MqttSession implements ClientSession {
                     + ReadingDecoder.abbreviate(payload) + "', neither '" + d.online() + "' nor '" + d.offline() + "'");
             return;
         }
+        sink.device(d.name(), online, d.availabilityTopic() + " says " + state);
         synchronized (offlineDevices) {
             if (online) {
                 offlineDevices.remove(d.name());
