@@ -28,7 +28,7 @@ class MqttDeviceStatusTest {
 
     private static Daemon daemon(Mosquitto broker, int[] ports) throws Exception {
         String json = """
-            {"system": "mqtt-status", "status": {"port": 0}, "safety": {"watchdogMs": 0},
+            {"system": "mqtt-status", "status": {"port": %d}, "safety": {"watchdogMs": 0},
              "interfaces": [{"id": "room", "driver": "mqtt", "address": "%s",
                "params": {"devices": [
                    {"name": "hall_motion", "availabilityTopic": "z2m/hall_motion/availability"},
@@ -40,7 +40,7 @@ class MqttDeviceStatusTest {
              "methods": [
                %s, %s, %s,
                %s, %s, %s]}
-            """.formatted(broker.address(),
+            """.formatted(ports[2], broker.address(),
                 relay("motion-raw", "sensors_actuators", "@room.motion", ""),
                 relay("motion-up", "processing", "motion-raw.out", ""),
                 relay("motion", "virtual", "motion-up.out", ", \"expose\": {\"port\": " + ports[0] + "}"),
@@ -57,7 +57,7 @@ class MqttDeviceStatusTest {
 
     @Test
     void theStatusNamesTheOfflineDeviceAndWhatItMadeStale(@TempDir Path tmp) throws Exception {
-        int[] ports = DaemonProcess.freePorts(2);
+        int[] ports = DaemonProcess.freePorts(3);
         try (Mosquitto broker = Mosquitto.start(tmp); Daemon daemon = daemon(broker, ports);
                 ControlLines motion = new ControlLines(ports[0])) {
             motion.staleness(false);
@@ -72,12 +72,21 @@ class MqttDeviceStatusTest {
             JsonNode because = method(st, "motion").path("staleBecause");
             assertThat(because.path("source").asText()).isEqualTo("@room.motion");
             assertThat(because.path("why").asText()).contains("hall_motion is offline");
+
+            java.io.StringWriter out = new java.io.StringWriter();
+            int code = new picocli.CommandLine(new org.habla.cli.StatusCommand()).setOut(new java.io.PrintWriter(out))
+                    .execute("--port", "" + daemon.statusPort());
+            assertThat(code).isZero();
+            assertThat(out.toString().lines()).anySatisfy(l -> assertThat(l)
+                    .matches("hall_motion +room +OFFLINE +z2m/hall_motion/availability says offline"));
+            assertThat(out.toString().lines()).anySatisfy(l -> assertThat(l)
+                    .matches("motion-raw +@room\\.motion +the device of @room\\.motion is unavailable: .*"));
         }
     }
 
     @Test
     void aCommandToAnOfflineDeviceIsDroppedNamingTheDevice(@TempDir Path tmp) throws Exception {
-        int[] ports = DaemonProcess.freePorts(2);
+        int[] ports = DaemonProcess.freePorts(3);
         try (Mosquitto broker = Mosquitto.start(tmp); Daemon daemon = daemon(broker, ports);
                 ControlLines lamp = new ControlLines(ports[1])) {
             await(daemon, st -> room(st).path("up").asBoolean(), "the broker link up");
