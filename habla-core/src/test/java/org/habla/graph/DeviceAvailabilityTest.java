@@ -88,8 +88,13 @@ class DeviceAvailabilityTest {
         MethodGraph g = start(robot.port());
         await(g, st -> !method(st, "v").path("stale").asBoolean(), "the link up and v fresh");
 
-        robot.send("device hall_sensor offline value");
-        JsonNode st = await(g, x -> method(x, "v").path("stale").asBoolean(), "v stale");
+        JsonNode st;
+        try (LogLines log = new LogLines(InterfaceReadings.class)) {
+            robot.send("device hall_sensor offline value");
+            st = await(g, x -> method(x, "v").path("stale").asBoolean(), "v stale");
+            assertThat(log.at(Level.INFO)).contains("interface robot: device hall_sensor is offline (the robot says "
+                    + "offline)");
+        }
         for (String id : List.of("s", "p", "v")) {
             JsonNode because = method(st, id).path("staleBecause");
             assertThat(because.path("source").asText()).as(id).isEqualTo("@robot.value");
