@@ -66,6 +66,14 @@ final class WorkerCheck {
         return refusals;
     }
 
+    /**
+     * Whether a failed proof is the two sides not trusting each other — the worker's {@code auth_failed}, or the
+     * secret missing, unasked for or unproven on either side — rather than a worker that is busy or went away.
+     */
+    private static boolean distrust(String message) {
+        return message != null && (message.contains("auth_failed") || message.contains("shared secret"));
+    }
+
     /** Reads the worker's hello and, where it speaks this daemon's protocol, proves the secret; null if no answer. */
     private static Answer ask(String host, org.habla.security.WorkerLink link, int timeoutMillis) {
         InterfaceAddress a = InterfaceAddress.parse(host);
@@ -88,7 +96,12 @@ final class WorkerCheck {
             } catch (FrameException | java.net.SocketException | java.io.InterruptedIOException e) {
                 throw e; // the connection failed or went quiet: as if the worker had not answered
             } catch (IOException e) {
-                return new Answer(hello, e.getMessage()); // the proof itself failed
+                if (distrust(e.getMessage())) {
+                    return new Answer(hello, e.getMessage());
+                }
+                // Busy (too_many_methods) or gone mid-way: the placement tries again once the daemon runs.
+                LOG.warn("worker {}: {}", host, e.getMessage());
+                return new Answer(hello, null);
             }
         } catch (IOException | RuntimeException e) {
             LOG.debug("worker {}: {}", host, e.toString());

@@ -367,6 +367,26 @@ class WorkerPlacementTest {
     }
 
     @Test
+    void aWorkerFullOfMethodsAtStartDoesNotStopTheDaemonItTrusts() throws Exception {
+        EngineClock clock = EngineClock.system();
+        toClose.add(clock::close);
+        WorkerServer worker = new WorkerServer(WorkerTestMethods.all(), "127.0.0.1", 0, clock,
+                WorkerCommand.limits(1), org.habla.security.WorkerSecret.of(SECRET), null);
+        toClose.add(worker);
+        worker.start();
+        String host = "127.0.0.1:" + worker.port();
+        MethodGraph first = graph(secured(SECRET, numbers(host, Fallback.NONE)));
+        await(() -> placement(first).path("up").asBoolean(), "the first daemon's placement takes the only place");
+
+        try (Daemon second = Daemon.start(secured(SECRET, numbersOnFreePorts(host, Fallback.LOCAL)),
+                WorkerTestMethods.all(), EngineClock.system())) {
+            await(() -> second.status().path("methods").findValues("placement").stream()
+                    .anyMatch(p -> p.path("lastError").asText().contains("too_many_methods")),
+                    "the second daemon runs, its placement down with the worker's reason");
+        }
+    }
+
+    @Test
     void aWorkerWithASecretRefusesAPlaceLineThatCameWithoutTheProof() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.all(), 0, org.habla.security.WorkerSecret.of(SECRET));
         try (Socket s = new Socket("127.0.0.1", worker.port())) {
