@@ -48,8 +48,6 @@ final class MethodRunner {
 
     static final String TICK_PREFIX = "tick:";
     private final GraphTap tap;
-    /** Why the outputs are stale, or null while they are fresh (set under the link-state lock). */
-    private volatile StaleCause staleCause;
 
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
             WorkCount work, GraphTap tap) {
@@ -154,8 +152,7 @@ final class MethodRunner {
 
     /** Marks the outputs stale for {@code cause}, or fresh when it is null. */
     void stale(StaleCause cause) {
-        staleCause = cause;
-        context.stale(cause != null);
+        context.stale(cause);
     }
 
     boolean stale() {
@@ -281,11 +278,7 @@ final class MethodRunner {
         if (!context.readinessDetail().isEmpty()) {
             n.put("readiness", context.readinessDetail());
         }
-        n.put("stale", context.stale());
-        StaleCause cause = staleCause;
-        if (cause != null) {
-            n.putObject("staleBecause").put("source", cause.source()).put("why", cause.why());
-        }
+        context.staleTo(n);
         scheduler.host().status(n);
         scheduler.statusTo(n, nowMicros);
         ObjectNode inputs = n.putObject("inputs");
