@@ -44,6 +44,11 @@ public class DaemonBindAddressTest {
                 assertThat(connects("::1", port)).as("[::1]:%d", port).isFalse();
             }
         }
+        for (int port : ports) {
+            try (var again = org.habla.net.BindAddress.of("0.0.0.0").listen(port, 1)) {
+                assertThat(again.isOpen()).as("port %d is free again once the daemon is closed", port).isTrue();
+            }
+        }
     }
 
     @Test
