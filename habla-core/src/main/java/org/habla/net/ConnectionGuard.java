@@ -1,3 +1,5 @@
+// Over 300 lines, on purpose: admitting, evicting and closing on a deadline share one lock over the pending and
+// client lists, and each leaves the same log line and audit entry; who gives way is AdmissionPolicy's.
 package org.habla.net;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;

@@ -1,3 +1,5 @@
+// Over 300 lines, on purpose: every request of habla-control/1, the auth line among them, is answered here from the
+// same point, lease and security, as the picture below lists them; the hello is ControlHello's, values SampleCodec's.
 package org.habla.net;
 
 import com.fasterxml.jackson.databind.JsonNode;
