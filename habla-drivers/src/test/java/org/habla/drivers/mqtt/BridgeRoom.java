@@ -57,12 +57,18 @@ final class BridgeRoom {
         return Daemon.start(new ConfigLoader(REGISTRY).parse(config), REGISTRY, EngineClock.system());
     }
 
-    /** Waits until the bridge has said it is online (retained). */
-    static void awaitOnline(Mosquitto broker) throws IOException, InterruptedException {
-        String seen = broker.client(15_000, "mosquitto_sub", "-t", "habla/bridge-test/availability", "-C", "1", "-W",
-                "10").strip();
-        if (!seen.equals("online")) {
-            throw new AssertionError("the bridge did not say it is online: " + seen);
+    /** Waits until the bridge has said it is online (a daemon stopped before left "offline" retained). */
+    static void awaitOnline(Mosquitto broker) throws IOException {
+        Process sub = broker.subscriber("-t", "habla/bridge-test/availability", "-W", "15");
+        try (BufferedReader seen = new BufferedReader(new InputStreamReader(sub.getInputStream(), UTF_8))) {
+            for (String line = seen.readLine(); line != null; line = seen.readLine()) {
+                if (line.equals("online")) {
+                    return;
+                }
+            }
+            throw new AssertionError("the bridge did not say it is online within 15 s");
+        } finally {
+            sub.destroyForcibly();
         }
     }
 
