@@ -1,5 +1,6 @@
 package org.habla.drivers.mqtt;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import com.hivemq.client.mqtt.MqttClient;
@@ -12,6 +13,7 @@ import com.hivemq.client.mqtt.mqtt5.message.publish.Mqtt5Publish;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
@@ -77,7 +79,7 @@ final class MqttBridge implements Bridge {
     private final ClientId commanderId;
     private final Map<String, Long> lastSentNanos = new ConcurrentHashMap<>();
     /** Why each published socket last turned stale; also the lock that keeps its retained staleness in order. */
-    private final Map<String, String> staleWhy = new java.util.HashMap<>();
+    private final Map<String, String> staleWhy = new HashMap<>();
     private final List<ControlPoint.Subscription> subscriptions = new ArrayList<>();
     private final AtomicInteger inFlight = new AtomicInteger();
     private final LongAdder published = new LongAdder();
@@ -201,8 +203,13 @@ final class MqttBridge implements Bridge {
                 publishStale(socket, stale, stale ? staleWhy.getOrDefault(socket, "") : "");
             }
             if (params.discovery()) {
-                p.latest().forEach((output, sample) -> send(discovery.stateTopic(socket, output),
-                        HomeAssistantDiscovery.state(sample), true, true));
+                Map<String, Sample> latest = p.latest();
+                for (Output<?> out : p.outputs()) {
+                    Sample sample = latest.get(out.name());
+                    if (sample != null && HomeAssistantDiscovery.carried(out.kind())) {
+                        send(discovery.stateTopic(socket, out.name()), HomeAssistantDiscovery.state(sample), true, true);
+                    }
+                }
             }
         }
         for (ControlPoint p : points.values()) {
@@ -308,8 +315,9 @@ final class MqttBridge implements Bridge {
         var commands = n.putArray("commands");
         for (ControlPoint p : points.values()) {
             p.lease().ifPresent(l -> {
-                if (l.status().path("holder").path("connection").asText().equals(commanderId.connection())
-                        && l.status().path("holder").path("address").asText().equals(commanderId.address())) {
+                JsonNode holder = l.status().path("holder");
+                if (holder.path("connection").asText().equals(commanderId.connection())
+                        && holder.path("address").asText().equals(commanderId.address())) {
                     commands.add(p.name());
                 }
             });
