@@ -149,6 +149,11 @@ final class StatusTables {
                 failures += s.path("authFailures").asLong();
             }
         }
+        JsonNode endpoint = st.path("statusEndpoint");
+        if (endpoint.path("auth").asText().equals("required")) {
+            guarded.add("the status endpoint");
+            failures += endpoint.path("authFailures").asLong();
+        }
         if (!guarded.isEmpty()) {
             out.printf(Locale.ROOT, "authentication required on %s; %d failed attempts%n",
                     String.join(", ", guarded), failures);

@@ -106,7 +106,8 @@ final class RunnerContext implements MethodContext {
         }
     }
 
-    boolean stale() {
+    @Override
+    public boolean stale() {
         return stale;
     }
 

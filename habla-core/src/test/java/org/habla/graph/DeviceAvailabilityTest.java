@@ -25,6 +25,7 @@ import org.habla.method.Layer;
 import org.habla.net.ControlPoint;
 import org.habla.plugin.NoParams;
 import org.habla.sample.NumberValue;
+import org.habla.testing.LogLines;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;

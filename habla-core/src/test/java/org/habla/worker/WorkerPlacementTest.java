@@ -381,7 +381,7 @@ class WorkerPlacementTest {
         try (Daemon second = Daemon.start(secured(SECRET, numbersOnFreePorts(host, Fallback.LOCAL)),
                 WorkerTestMethods.all(), EngineClock.system())) {
             await(() -> second.status().path("methods").findValues("placement").stream()
-                    .anyMatch(p -> p.path("lastError").asText().contains("too_many_methods")),
+                    .anyMatch(p -> p.path("lastError").asText().contains("--max-methods=1")),
                     "the second daemon runs, its placement down with the worker's reason");
         }
     }

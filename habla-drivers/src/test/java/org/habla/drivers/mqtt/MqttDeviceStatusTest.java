@@ -97,7 +97,7 @@ class MqttDeviceStatusTest {
             JsonNode st = await(daemon, x -> room(x).path("commandsDropped").asLong() == 1, "the command dropped");
             assertThat(room(st).path("lastDrop").path("channel").asText()).isEqualTo("lamp");
             assertThat(room(st).path("lastDrop").path("why").asText())
-                    .isEqualTo("device hall_lamp is offline: z2m/hall_lamp/availability says offline");
+                    .isEqualTo("device hall_lamp cannot be reached: hall_lamp is offline (z2m/hall_lamp/availability says offline)");
             assertThat(room(st).path("up").asBoolean()).isTrue();
         }
     }
