@@ -90,6 +90,10 @@ final class ScenarioRunner {
                         "--speed", fmt(o.speed()), "--step-s", fmt(sc.stepS() / o.speed()),
                         "--reward-wait-s", fmt(sc.rewardWaitS() / o.speed()), "--log", o.reportDir().resolve("control.jsonl").toString()),
                         o.home(), o.reportDir().resolve("control.log"));
+                long startedAt = System.nanoTime();
+                DaemonReadiness.awaitClients(statusPort(derived), List.of(names), READY_TIMEOUT_MS, control::alive);
+                say("control program connected to all four sockets (%.1f s after it started)",
+                        (System.nanoTime() - startedAt) / 1e9);
                 try (TeacherLog log = new TeacherLog(o.reportDir())) {
                     this.teacherLog = log;
                     for (int e = 1; e <= o.episodes(); e++) {
