@@ -26,7 +26,11 @@ def habla_command():
 def free_offset():
     """A port offset whose whole block of HABLA ports is free (below the ephemeral range)."""
     if os.environ.get("HABLA_TEST_PORT_OFFSET"):
-        return int(os.environ["HABLA_TEST_PORT_OFFSET"])
+        offset = int(os.environ["HABLA_TEST_PORT_OFFSET"])
+        taken = [p + offset for p in DEFAULT_PORTS if not port_free(p + offset)]
+        if taken:
+            raise RuntimeError("HABLA_TEST_PORT_OFFSET=%d: ports %s are taken" % (offset, taken))
+        return offset
     rng = random.Random()
     for _ in range(50):
         offset = 100 * rng.randint(10, 224)

@@ -67,6 +67,8 @@ def test_a_tls_socket_is_read_with_the_lab_certificate_and_refuses_plain_clients
     with pytest.raises(habla.RefusedError) as plain:
         habla.connect("127.0.0.1", rig.ports["pose"], client="tester", token=TOKENS["tester"], timeout=10)
     assert plain.value.code == "tls_required"
+    with pytest.raises(habla.TlsError):
+        habla.connect("127.0.0.1", rig.ports["reward"], client="tester", token=TOKENS["tester"], tls=rig.certificate)
 
 
 def test_the_asyncio_client_reads_and_acts(rig):

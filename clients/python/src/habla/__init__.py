@@ -9,10 +9,10 @@ habla.Reconnecting keeps a socket connected across losses of the link; habla.aio
 """
 
 from .control import ControlSocket, connect
-from .errors import AuthError, BadHelloError, FrameError, HablaError, LinkLostError, RefusedError
+from .errors import AuthError, BadHelloError, FrameError, HablaError, LinkLostError, RefusedError, TlsError
 from .hello import PROTOCOL, Hello, Input, Output, Sample
 from .reconnect import Backoff, Reconnecting
 
 __all__ = ["AuthError", "Backoff", "BadHelloError", "ControlSocket", "FrameError", "HablaError", "Hello", "Input",
-           "LinkLostError", "Output", "PROTOCOL", "Reconnecting", "RefusedError", "Sample", "connect"]
+           "LinkLostError", "Output", "PROTOCOL", "Reconnecting", "RefusedError", "Sample", "TlsError", "connect"]
 __version__ = "1.0.0"

@@ -18,7 +18,7 @@ import ssl
 import threading
 import time
 
-from .errors import AuthError, LinkLostError, RefusedError
+from .errors import AuthError, LinkLostError, RefusedError, TlsError
 from .framing import FrameReader, encode
 from .hello import Hello, Sample
 
@@ -64,7 +64,10 @@ class ControlSocket:
             raise LinkLostError("cannot connect to %s:%s: %s" % (host, port, e)) from e
         try:
             if tls is not None:
-                self._sock = tls_context(tls).wrap_socket(self._sock, server_hostname=host)
+                try:
+                    self._sock = tls_context(tls).wrap_socket(self._sock, server_hostname=host)
+                except ssl.SSLError as e:
+                    raise TlsError("TLS with %s:%s failed: %s" % (host, port, e)) from e
             first = self.read_frame(timeout)
             if first.get("type") == "error":
                 raise RefusedError(first)

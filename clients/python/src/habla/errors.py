@@ -30,5 +30,10 @@ class AuthError(RefusedError):
     client or a wrong token (auth_failed), or a client with no role on this socket (forbidden)."""
 
 
+class TlsError(HablaError, ConnectionError):
+    """The TLS handshake failed: the socket does not speak TLS, or its certificate is not the trusted one or does
+    not name the address connected to."""
+
+
 class FrameError(HablaError):
     """A frame that cannot be resynchronised: a line or a binary block over the client's limit."""

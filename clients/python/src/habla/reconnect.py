@@ -4,7 +4,7 @@ import random
 import threading
 
 from .control import ControlSocket
-from .errors import AuthError, BadHelloError, LinkLostError, RefusedError
+from .errors import AuthError, BadHelloError, LinkLostError, RefusedError, TlsError
 
 RETRIED_CODES = ("too_many_clients", "evicted", "idle_timeout")
 
@@ -34,7 +34,7 @@ class Backoff:
 class Reconnecting:
     """One socket kept connected. samples() yields samples across losses of the link: when the daemon goes
     away it waits (with back-off) and connects again; on_link(up, why) is told each time the link comes up
-    or goes down. Refusals that will not change by trying again (a bad hello, failed authentication) are
+    or goes down. Refusals that will not change by trying again (a bad hello, failed authentication or TLS) are
     raised, not retried. close() from any thread ends it."""
 
     def __init__(self, host, port, backoff=None, on_link=None, **connect_args):
@@ -55,7 +55,7 @@ class Reconnecting:
         while not self._closed.is_set():
             try:
                 s = ControlSocket(self.host, self.port, **self.connect_args)
-            except (AuthError, BadHelloError):
+            except (AuthError, BadHelloError, TlsError):
                 raise
             except RefusedError as e:
                 if e.code not in RETRIED_CODES:

@@ -17,7 +17,7 @@ import java.util.concurrent.TimeUnit;
  */
 final class PytestRun {
 
-    static final long LIMIT_S = 240;
+    static final long LIMIT_S = 360;
 
     private final List<String> python;
     private final Path workDir;
