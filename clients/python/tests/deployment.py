@@ -41,6 +41,7 @@ def free_offset():
 
 def port_free(port):
     with socket.socket() as s:
+        s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)   # as the servers bind: TIME_WAIT is no obstacle
         try:
             s.bind(("127.0.0.1", port))
             return True
@@ -155,6 +156,8 @@ class Truth:
                     obj = json.loads(line)
                     with self._cv:
                         if "ok" in obj or "error" in obj:
+                            # the state lines after a reply were made after its operation was carried out
+                            obj["_after_t"] = self._latest["t"] if self._latest else -1.0
                             self._replies.append(obj)
                         else:
                             self._latest = obj
@@ -200,10 +203,9 @@ class Truth:
         return reply
 
     def place(self, x, y, theta):
-        """Puts the robot there; returns the first state line after it."""
-        t = self.await_time(0, 30)["t"]
-        self.send({"op": "reset", "robot": {"xM": x, "yM": y, "thetaRad": theta}})
-        return self.await_time(t + 0.2, 30)
+        """Puts the robot there; returns the first state line made after it."""
+        reply = self.send({"op": "reset", "robot": {"xM": x, "yM": y, "thetaRad": theta}})
+        return self.await_time(reply["_after_t"] + 0.05, 30)
 
     def close(self):
         try:
