@@ -17,7 +17,9 @@ def ramp(current, wanted, up, down):
 
 
 class Base:
-    def __init__(self, radius_m=0.25, max_v=0.75, max_w=1.74, accel=0.5, decel=1.0, rot_accel=3.0,
+    # The speeds and accelerations of habla-sim's Pioneer 2 DX (docs/simulator.md): a ROS 2 driver of a Pioneer
+    # (or a base like it) under the same experiment.
+    def __init__(self, radius_m=0.25, max_v=0.75, max_w=1.74, accel=0.3, decel=0.6, rot_accel=1.74,
                  cmd_timeout_s=0.5):
         self.radius_m, self.max_v, self.max_w = radius_m, max_v, max_w
         self.accel, self.decel, self.rot_accel = accel, decel, rot_accel
