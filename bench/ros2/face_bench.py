@@ -14,6 +14,7 @@ Latency is the subscriber's clock minus the stamp. Usage: face_bench.py [--secon
 import argparse
 import json
 import os
+import random
 import socket
 import subprocess
 import sys
@@ -24,7 +25,7 @@ import time
 import rclpy
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
-from rclpy.qos import qos_profile_sensor_data
+from rclpy.qos import DurabilityPolicy, HistoryPolicy, QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -35,12 +36,22 @@ import habla  # noqa: E402
 PYTHONPATH = os.pathsep.join([os.path.join(HOME, "clients", "python", "src"),
                               os.path.join(HOME, "clients", "python-ros2", "src")])
 START_S = 90
+LISTENER_DEPTH = 1000     # the subscriber's history: a burst while its callback is busy is kept, not dropped
+SETTLE_S = 1.0            # after the publishers are matched, before the robot starts
 
 
 def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
+    """A free port below the ephemeral range, so that no connection made meanwhile takes it."""
+    for _ in range(200):
+        port = random.randint(20000, 32000)
+        with socket.socket() as s:
+            s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)
+            try:
+                s.bind(("127.0.0.1", port))
+                return port
+            except OSError:
+                continue
+    raise RuntimeError("no free port found")
 
 
 def wait_port(port, proc, timeout_s=START_S):
@@ -71,8 +82,13 @@ class Listener:
         self.node = Node("bench_listener_%d" % os.getpid())
         self.lock = threading.Lock()
         self.latencies_us, self.seen = [], [set() for _ in topics]
-        self.subs = [self.node.create_subscription(String, t, lambda m, i=i: self.take(i, m), qos_profile_sensor_data)
+        qos = QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=LISTENER_DEPTH, reliability=ReliabilityPolicy.BEST_EFFORT)
+        self.subs = [self.node.create_subscription(String, t, lambda m, i=i: self.take(i, m), qos)
                      for i, t in enumerate(topics)]
+        self.states = {}
+        latched = QoSProfile(depth=1, reliability=ReliabilityPolicy.RELIABLE, durability=DurabilityPolicy.TRANSIENT_LOCAL)
+        self.subs += [self.node.create_subscription(String, t + "/state", lambda m, t=t: self.state(t, m), latched)
+                      for t in topics]
         self.executor = SingleThreadedExecutor()
         self.executor.add_node(self.node)
         self.running = True
@@ -90,6 +106,10 @@ class Listener:
             self.latencies_us.append(now - line["t"])
             self.seen[i].add(line["value"]["n"])
 
+    def state(self, topic, msg):
+        with self.lock:
+            self.states[topic] = json.loads(msg.data)
+
     def close(self):
         self.running = False
         self.thread.join(5)
@@ -103,11 +123,11 @@ def daemon_config(folder, channels, robot_port, status_port):
     for i in range(channels):
         methods += [
             {"id": "in%d" % i, "type": "channel", "layer": "sensors_actuators", "inputs": {"in": "@robot.c%d" % i},
-             "params": {"kind": "record"}},
+             "params": {"kind": "record", "delivery": "queue"}},
             {"id": "up%d" % i, "type": "pass-through", "layer": "processing", "inputs": {"in": "in%d.out" % i},
-             "params": {"kind": "record"}},
+             "params": {"kind": "record", "delivery": "queue"}},
             {"id": "p%d" % i, "type": "pass-through", "layer": "virtual", "inputs": {"in": "up%d.out" % i},
-             "params": {"kind": "record"}, "expose": {"port": ports[i], "name": "p%d" % i}}]
+             "params": {"kind": "record", "delivery": "queue"}, "expose": {"port": ports[i], "name": "p%d" % i}}]
     root = {"system": "bench", "status": {"port": status_port},
             "interfaces": [{"id": "robot", "driver": "habla", "address": "127.0.0.1:%d" % robot_port,
                             "params": {"channels": [{"name": "c%d" % i, "direction": "reading", "kind": "record"}
@@ -128,7 +148,7 @@ class FaceRig:
         self.config, self.ports = daemon_config(folder, channels, robot_port, status_port)
         log = open(os.path.join(folder, "bench-%d-%g.log" % (channels, hz)), "ab")
         self.robot = self.start([sys.executable, os.path.join(HERE, "robot.py"), str(robot_port), str(channels),
-                                 str(hz), str(seconds)], stdout=subprocess.PIPE)
+                                 str(hz), str(seconds)], stdout=subprocess.PIPE, stdin=subprocess.PIPE)
         self.robot.stdout.readline()
         daemon = self.start([os.path.join(HOME, "habla"), "run", self.config], stdout=log)
         wait_port(self.ports[-1], daemon)
@@ -136,14 +156,26 @@ class FaceRig:
             self.start([sys.executable, "-m", "habla_ros2", "face", self.config], stdout=log,
                        env=dict(os.environ, PYTHONPATH=PYTHONPATH))
 
-    def start(self, args, stdout, env=None):
+    def start(self, args, stdout, env=None, stdin=None):
         p = subprocess.Popen(args, stdout=stdout, stderr=subprocess.STDOUT if stdout is not subprocess.PIPE else None,
-                             env=env, cwd=HOME)
+                             env=env, cwd=HOME, stdin=stdin)
         self.procs.append(p)
         return p
 
+    def go(self):
+        """Waits until HABLA has the robot's hello, then lets the robot stream."""
+        assert self.robot.stdout.readline().strip() == b"connected"
+        time.sleep(SETTLE_S)
+        self.robot.stdin.write(b"go\n")
+        self.robot.stdin.flush()
+
     def sent(self):
         return json.loads(self.robot.stdout.readline())["sent"]
+
+    def cpu_s(self, index):
+        """CPU seconds (user + system) a started process has used so far."""
+        fields = open("/proc/%d/stat" % self.procs[index].pid).read().rsplit(")", 1)[1].split()
+        return (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
 
     def close(self):
         for p in reversed(self.procs):
@@ -169,15 +201,21 @@ def face_round(folder, channels, hz, seconds):
     listener = Listener(topics)
     rig = FaceRig(folder, channels, hz, seconds)
     try:
-        await_publishers(listener, topics)
+        await_publishers(listener, topics + [t + "/state" for t in topics])
+        face_cpu0 = rig.cpu_s(2)
+        rig.go()
         sent = rig.sent()
         time.sleep(0.5)
+        face_cpu = rig.cpu_s(2) - face_cpu0
     finally:
         rig.close()
         listener.close()
     received = [len(s) for s in listener.seen]
+    states = listener.states.values()
     return {"latencyUs": percentiles(listener.latencies_us), "sent": sum(sent), "received": sum(received),
-            "lost": sum(sent) - sum(received)}
+            "lost": sum(sent) - sum(received), "socketDropped": sum(st["dropped"] for st in states),
+            "facePublished": sum(st["samples"] for st in states),
+            "faceCpuUsPerSample": round(1e6 * face_cpu / max(1, sum(st["samples"] for st in states)))}
 
 
 def socket_round(folder, hz, seconds):
@@ -185,6 +223,7 @@ def socket_round(folder, hz, seconds):
     latencies = []
     try:
         with habla.connect("127.0.0.1", rig.ports[0]) as s:
+            rig.go()
             end = time.monotonic() + seconds
             while time.monotonic() < end:
                 try:
@@ -229,13 +268,18 @@ def main():
     results["face"] = face_round(folder, 1, 100, a.seconds)
     results["face 1 kHz x 1"] = face_round(folder, 1, 1000, a.seconds)
     results["face 200 Hz x 10"] = face_round(folder, 10, 200, a.seconds)
-    print("%-18s %8s %8s %8s %8s %8s %9s %9s %6s" % ("round", "n", "p50 ms", "p90 ms", "p99 ms", "max ms", "sent",
-                                                    "received", "lost"))
+    print("%-18s %6s %7s %7s %7s %7s %7s %8s %9s %9s %6s" % (
+        "round", "n", "p50 ms", "p90 ms", "p99 ms", "max ms", "sent", "dropped", "published", "received", "lost"))
     for name, r in results.items():
         lat = r["latencyUs"]
-        print("%-18s %8d %8s %8s %8s %8s %9s %9s %6s" % (
+        print("%-18s %6d %7s %7s %7s %7s %7s %8s %9s %9s %6s" % (
             name, lat["n"], ms(lat["p50"]), ms(lat["p90"]), ms(lat["p99"]), ms(lat["max"]), r.get("sent", "-"),
-            r.get("received", "-"), r.get("lost", "-")))
+            r.get("socketDropped", "-"), r.get("facePublished", "-"), r.get("received", "-"), r.get("lost", "-")))
+    for name, r in results.items():
+        if "faceCpuUsPerSample" in r:
+            print("%-18s the face used %d us of CPU per sample" % (name, r["faceCpuUsPerSample"]))
+    print("dropped: by the daemon's socket for the face (a client that did not keep up); published: by the face;"
+          " received: by the subscriber; lost: sent - received")
     pair, sock, face = (results[k]["latencyUs"]["p50"] for k in ("pair", "socket", "face"))
     added = face - sock
     print("the face adds %s ms at p50 (face %s - socket %s) = %.2f x the plain pair's p50 (%s ms); goal <= 1.5" % (

@@ -1,8 +1,10 @@
 """The bench's robot: an interface program (habla-interface/1) that streams a record reading on each of N
 channels at a fixed rate, each stamped with the time it was made, and counts what it sent.
-    python3 robot.py PORT CHANNELS HZ SECONDS       (prints {"sent": [...]} when done)"""
+    python3 robot.py PORT CHANNELS HZ SECONDS       (prints {"sent": [...]} when done)
+It says "connected" once HABLA has taken its hello, and starts streaming when a line comes on its stdin."""
 
 import json
+import select
 import socket
 import sys
 import time
@@ -16,6 +18,15 @@ def main(port, channels, hz, seconds):
     hello = {"type": "hello", "protocol": "habla-interface/1", "robot": "bench",
              "channels": [{"name": "c%d" % i, "direction": "reading", "kind": "record"} for i in range(channels)]}
     conn.sendall((json.dumps(hello) + "\n").encode())
+    print("connected", flush=True)
+    # Until told to go, answer HABLA's pings: a program silent for three of them is taken as lost.
+    while True:
+        ready, _, _ = select.select([sys.stdin, conn], [], [])
+        if sys.stdin in ready:
+            sys.stdin.readline()
+            break
+        if b"ping" in conn.recv(65536):
+            conn.sendall(b'{"type":"pong"}\n')
     sent = [0] * channels
     period = 1.0 / hz
     start = time.monotonic()

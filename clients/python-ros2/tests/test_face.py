@@ -48,11 +48,14 @@ def sample_of(rig, name, **kw):
 def test_every_socket_is_a_topic_of_the_type_its_shape_gives(rig, probe):
     probe.wait_for_topics({
         NS + "/command": "std_msgs/msg/String", NS + "/command/sample": "std_msgs/msg/String",
+        NS + "/action/motion/sample": "std_msgs/msg/String",
         NS + "/distance_angle": "std_msgs/msg/String", NS + "/reward": "std_msgs/msg/Float64",
         NS + "/action": "std_msgs/msg/String", NS + "/action/motion": "geometry_msgs/msg/Twist",
         NS + "/action/set": "std_msgs/msg/String", NS + "/pose": "geometry_msgs/msg/PoseStamped",
         NS + "/link": "std_msgs/msg/String", NS + "/pose/state": "std_msgs/msg/String",
         "/diagnostics": "diagnostic_msgs/msg/DiagnosticArray"}, WAIT_S)
+    # a sample's JSON already has its source time: no companion
+    assert NS + "/distance_angle/sample" not in probe.topics() and NS + "/pose/sample" not in probe.topics()
 
 
 def test_stream_topics_carry_the_sockets_samples_with_their_source_time(rig, probe):

@@ -30,7 +30,7 @@ def sample(value, t_us=1_700_000_000_123_456, **extra):
 
 def test_a_motion_vector_is_a_twist_and_a_pose_record_a_stamped_pose():
     twist = mapping.carrier_of(habla.Output("motion", "vector", "m/s, rad/s", ["vMps", "wRadps"], ""))
-    assert twist.name == "geometry_msgs/Twist" and not twist.headed
+    assert twist.name == "geometry_msgs/Twist" and not twist.stamped
     m = twist.message(sample([0.25, -0.6]), "base_link")
     assert (m.linear.x, m.angular.z) == (0.25, -0.6)
     pose = mapping.carrier_of(habla.Output("pose", "record", "", ["xM", "yM", "thetaRad"], ""))
@@ -57,5 +57,5 @@ def test_an_evenly_spaced_ring_is_a_laser_scan_and_an_uneven_one_is_binned_by_be
 
 def test_any_other_record_travels_as_the_samples_json():
     carrier = mapping.carrier_of(habla.Output("link", "record", "", ["connected"], ""))
-    assert carrier.name == "std_msgs/String (JSON)"
+    assert carrier.name == "std_msgs/String (JSON)" and carrier.stamped
     assert '"seq":3' in carrier.message(sample({"connected": True}), "x").data

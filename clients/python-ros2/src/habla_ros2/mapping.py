@@ -44,10 +44,11 @@ def _fields(output):
 
 
 class Carrier:
-    """How one output travels: its message type, whether it has a header, and sample -> message."""
+    """How one output travels: its message type, whether the message carries the source time (in a header or
+    in the JSON), and sample -> message."""
 
-    def __init__(self, name, msg_type, convert, headed):
-        self.name, self.msg_type, self._convert, self.headed = name, msg_type, convert, headed
+    def __init__(self, name, msg_type, convert, stamped):
+        self.name, self.msg_type, self._convert, self.stamped = name, msg_type, convert, stamped
 
     def message(self, sample, frame_id):
         """The sample as this carrier's message, or None where this sample does not fit (it goes as JSON)."""
@@ -78,7 +79,7 @@ def carrier_of(output):
 
 
 def json_carrier():
-    return Carrier("std_msgs/String (JSON)", String, lambda s, f: String(data=sample_json(s)), False)
+    return Carrier("std_msgs/String (JSON)", String, lambda s, f: String(data=sample_json(s)), True)
 
 
 def sample_json(sample):

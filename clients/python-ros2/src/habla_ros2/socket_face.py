@@ -102,7 +102,7 @@ class SocketFace:
                 carrier = mapping.carrier_of(output)
                 topic = names.output_topic(self.system, self.endpoint.name, output.name, output.name == main)
                 pub = self.node.create_publisher(carrier.msg_type, topic, qos_for(output, hello, self._qos_override))
-                companion = None if carrier.headed else self.node.create_publisher(String, topic + "/sample",
+                companion = None if carrier.stamped else self.node.create_publisher(String, topic + "/sample",
                                                                                    EVENT_QOS)
                 self._pubs[output.name] = (carrier, pub, companion)
                 self._log.info("%s -> %s [%s]" % (self.endpoint.name, topic, carrier.name))
