@@ -27,8 +27,8 @@ import ssl
 import threading
 import time
 
-# How often keep_alive() pings a quiet socket at most; the daemon closes a client that sends nothing and is
-# sent nothing for limits.idleTimeoutMs (the hello's limits.idleTimeoutMs, 5 minutes by default).
+# How often keep_alive() pings a quiet socket at most; on a full socket the daemon lets a new client push out a
+# client that has sent nothing and been sent nothing for limits.evictableIdleMs (2 minutes by default).
 KEEP_ALIVE_S = 60.0
 
 
@@ -79,8 +79,8 @@ class ControlSocket:
     def __init__(self, host, port, timeout=5.0, max_line=1 << 20, announce=True, client=None, token=None,
                  tls=None):
         """Connects and reads the hello. With announce (the default) it sends one ping at once: a connection
-        that has sent no request is only "pending" for the daemon, which closes it after limits.idleTimeoutMs
-        and lets newcomers push it out when the port is crowded (docs/protocol.md).
+        that has sent no request is only "pending" for the daemon, which lets newcomers push it out when the port
+        is crowded (docs/protocol.md).
 
         Where the hello says authentication is required, it authenticates as client with token (default: the
         HABLA_CLIENT and HABLA_TOKEN environment variables) and self.hello is the full hello that follows. tls
@@ -195,8 +195,8 @@ class ControlSocket:
             self._last_sent = time.monotonic()
 
     def keep_alive(self):
-        """Sends a ping if nothing was sent for a while, so that the daemon does not close a client of a quiet
-        socket as idle. Call it now and then (e.g. whenever a read times out); it sends at most one line per
+        """Sends a ping if nothing was sent for a while, so that a client of a quiet socket is not the idle one
+        that gives way to a new client when the socket is full. Call it now and then (e.g. whenever a read times out); it sends at most one line per
         KEEP_ALIVE_S, or per a third of the hello's idleTimeoutMs if that is shorter."""
         idle_ms = (self.hello.get("limits") or {}).get("idleTimeoutMs") or 0
         every = KEEP_ALIVE_S if not idle_ms else min(KEEP_ALIVE_S, idle_ms / 3000.0)

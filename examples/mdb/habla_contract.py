@@ -193,7 +193,7 @@ class ContractLink:
                 try:
                     line = sock.read_line(timeout=1.0)
                 except socket.timeout:
-                    sock.keep_alive()  # a quiet socket (command, reward) must not be closed as idle
+                    sock.keep_alive()  # a client of a quiet socket (command, reward) must not be the idle one a full socket evicts
                     continue
                 if line is None:
                     break

@@ -133,8 +133,10 @@ class ShortTermMemory:
     def experiences(self):
         return list(self._items)
 
-    def rewarded(self):
-        return [e for e in self._items if e.reward is not None]
+    def judged(self):
+        """Experiences the teacher judged: a command was heard before the action and a reward came for it. A
+        reward that came when no command had been heard judges a command the robot missed; it teaches nothing."""
+        return [e for e in self._items if e.reward is not None and e.before.command in COMMANDS]
 
 
 class Evolution:
@@ -142,8 +144,14 @@ class Evolution:
 
     Each generation keeps the `elite` best, and breeds the rest from the better half: uniform crossover
     of two tournament winners, then Gaussian mutation whose step size each individual carries and
-    mutates itself (log-normal). The whole population is re-scored at every run, because the memory it
-    is scored on has changed since the last."""
+    mutates itself (log-normal), never below `MIN_SIGMA`. The whole population is re-scored at every run,
+    because the memory it is scored on has changed since the last.
+
+    The floor keeps a model able to move: a step size left to shrink while nothing changes (it fell to about
+    0.001 within a hundred runs) leaves a model that can no longer follow what changes later; a relevance
+    entry that one early mistake had set high stayed there through a dozen punishments."""
+
+    MIN_SIGMA = 0.03
 
     def __init__(self, dim, rng, size=16, elite=4, init_scale=0.1, sigma=0.3):
         if dim < 1 or size < 4 or not 1 <= elite < size:
@@ -165,7 +173,7 @@ class Evolution:
         _, pa, sa = self._tournament(parents)
         _, pb, sb = self._tournament(parents)
         genes = [x if rng.random() < 0.5 else y for x, y in zip(pa, pb)]
-        sigma = clamp(math.sqrt(sa * sb) * math.exp(self._tau * rng.gauss(0.0, 1.0)), 1e-3, 2.0)
+        sigma = clamp(math.sqrt(sa * sb) * math.exp(self._tau * rng.gauss(0.0, 1.0)), self.MIN_SIGMA, 2.0)
         forced = rng.randrange(self.dim)
         return [g + sigma * rng.gauss(0.0, 1.0) if i == forced or rng.random() < self._gene_rate else g
                 for i, g in enumerate(genes)], sigma
@@ -206,6 +214,7 @@ class WorldModel:
     MOTION_DIM = 8
     RELEVANCE_DECAY = 0.05  # pulls untried entries of the table towards 0: neither good nor bad
     RELEVANCE_GENERATIONS = 3  # the table gets this many times the generations: commands are few and precious
+    RELEVANCE_HALF_LIFE = 3.0  # later judgements of the same action and command after which one counts half
 
     def __init__(self, rng, distance_scale_m=0.2, angle_scale_rad=0.5, population=16):
         self.ds, self.as_ = distance_scale_m, angle_scale_rad
@@ -239,9 +248,24 @@ class WorldModel:
             total += min(OUTLIER, ((dd - e.delta_distance) / self.ds) ** 2 + (wrap(da - e.delta_angle) / self.as_) ** 2)
         return total / len(experiences)
 
-    def relevance_error(self, params, experiences):
-        total = sum((e.reward - self._relevance(params, e.action, e.before.command)) ** 2 for e in experiences)
-        return total / len(experiences) + self.RELEVANCE_DECAY * sum(p * p for p in params) / len(params)
+    def relevance_error(self, params, weighted):
+        """Weighted mean squared error over (experience, weight) pairs, plus a little decay."""
+        total = sum(w * (e.reward - self._relevance(params, e.action, e.before.command)) ** 2 for e, w in weighted)
+        return total / sum(w for _, w in weighted) + self.RELEVANCE_DECAY * sum(p * p for p in params) / len(params)
+
+    def recency_weighted(self, judged):
+        """Each judged experience with its weight: halved for every RELEVANCE_HALF_LIFE later judgements of the
+        same action after the same command. An entry of the table is then a mean that follows the teacher's
+        latest judgements of it, so a few punishments outweigh an early reward that was a mistake (a command
+        misheard, a reward that judged the step before)."""
+        later = collections.Counter()
+        out = []
+        for e in reversed(judged):
+            pair = (e.action, e.before.command)
+            out.append((e, 0.5 ** (later[pair] / self.RELEVANCE_HALF_LIFE)))
+            later[pair] += 1
+        out.reverse()
+        return out
 
     def learn(self, memory, generations):
         """Evolves every part that has experiences to learn from; returns the errors by part."""
@@ -251,9 +275,9 @@ class WorldModel:
             mine = [e for e in sighted if e.action == action]
             if mine:
                 errors["motion." + action] = population.run(lambda p: self.motion_error(p, mine), generations)
-        commanded = [e for e in memory.rewarded() if e.before.command in COMMANDS]
-        if commanded:
-            errors["relevance"] = self.relevance.run(lambda p: self.relevance_error(p, commanded),
+        judged = self.recency_weighted(memory.judged())
+        if judged:
+            errors["relevance"] = self.relevance.run(lambda p: self.relevance_error(p, judged),
                                                    generations * self.RELEVANCE_GENERATIONS)
         return errors
 
@@ -300,7 +324,7 @@ class SatisfactionModel:
 
     def learn(self, memory, generations):
         examples = [(self.sensed(e.before, e.after.distance_m, e.after.angle_rad), e.reward)
-                    for e in memory.rewarded() if usable(e, self.ds)]
+                    for e in memory.judged() if usable(e, self.ds)]
         if not examples:
             return {}
         return {"satisfaction.induced": self.induced.run(lambda p: self.induced_error(p, examples), generations)}
@@ -374,15 +398,17 @@ class Brain:
 
     def _plan_scores(self, perception):
         trust = {a: self.confidence(a) for a in ACTIONS}
+        induced = self.satisfaction.induced_of
         plans = {}  # first action -> [(satisfaction, confidence)] of its plans
         for first, p in self.predictions.items():
+            now = induced(perception, p.distance_m, p.angle_rad)
             if self.horizon < 2:
-                ends = [(p, trust[first])]
-            else:
-                middle = Perception(p.distance_m, p.angle_rad, True, None)
-                ends = [(self.world.predict(middle, a), min(trust[first], trust[a])) for a in ACTIONS]
-            plans[first] = [(self.satisfaction.induced_of(perception, e.distance_m, e.angle_rad), c) for e, c in ends]
-        stay = self.satisfaction.induced_of(perception, perception.distance_m, perception.angle_rad)
+                plans[first] = [(now, trust[first])]
+                continue
+            middle = Perception(p.distance_m, p.angle_rad, True, None)
+            plans[first] = [(now + induced(middle, e.distance_m, e.angle_rad), min(trust[first], trust[a]))
+                            for a, e in ((a, self.world.predict(middle, a)) for a in ACTIONS)]
+        stay = min(self.horizon, 2) * self.satisfaction.induced_of(perception, perception.distance_m, perception.angle_rad)
         return {a: max(stay + c * (v - stay) for v, c in ends) for a, ends in plans.items()}
 
     def remember(self, experience):
@@ -454,6 +480,7 @@ class Runner:
     def _step(self, before, sample_number, start):
         link, brain = self.link, self.brain
         action, explored, scores = brain.decide(before)
+        decided_wall = time.time()
         rewards_mark, commands_mark = link.rewards_heard, link.commands_heard
         if not link.act(action):
             self.log({"event": "not_written", "action": action})
@@ -473,7 +500,10 @@ class Runner:
             link.wait_until(lambda: link.rewards_heard > rewards_mark or link.commands_heard > commands_mark,
                             written_at + self.step_s + self.reward_wait_s - self.clock())
         rewards = link.rewards_after(rewards_mark)
-        reward = rewards[-1].value if rewards else None
+        reward = rewards[-1].value if rewards and before.command is not None else None
+        if rewards and before.command is None:
+            # the teacher judged a command this robot never heard (not yet listening, or missed): not this step's
+            self.log({"event": "reward_without_command", "reward": rewards[-1].value, "action": action})
         da = link.distance_angle
         if da.number <= sample_number or da.stale:
             self.log({"event": "no_fresh_perception", "action": action})  # the daemon went away meanwhile
@@ -481,7 +511,7 @@ class Runner:
         after = self._perceive(da, None)
         brain.remember(Experience(before, action, after, reward))
         self.steps += 1
-        self.log({"t": round(self.clock() - start, 3), "step": self.steps, "command": before.command,
+        self.log({"t": round(self.clock() - start, 3), "wall": round(decided_wall, 3), "step": self.steps, "command": before.command,
                   "distanceM": round(before.distance_m, 4), "angleRad": round(before.angle_rad, 4),
                   "seen": before.seen, "action": action, "explored": explored,
                   "epsilon": round(brain.epsilon, 4), "scores": {a: round(s, 4) for a, s in scores.items()},

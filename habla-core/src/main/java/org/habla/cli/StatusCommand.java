@@ -166,6 +166,11 @@ public final class StatusCommand implements Callable<Integer> {
                     failures += s.path("authFailures").asLong();
                 }
             }
+            JsonNode endpoint = st.path("statusEndpoint");
+            if (endpoint.path("auth").asText().equals("required")) {
+                guarded.add("the status endpoint");
+                failures += endpoint.path("authFailures").asLong();
+            }
             if (!guarded.isEmpty()) {
                 out.printf(Locale.ROOT, "authentication required on %s; %d failed attempts%n",
                         String.join(", ", guarded), failures);

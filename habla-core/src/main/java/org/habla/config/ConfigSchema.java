@@ -126,14 +126,15 @@ public final class ConfigSchema {
                 "maxBinaryBytes", integer(1, ConfigLoader.MAX_BINARY_BYTES, d.maxBinaryBytes(),
                         "The largest \"bytes\" block accepted after a line [bytes]"),
                 "maxClientsPerPort", integer(1, ConfigLoader.MAX_CLIENTS_PER_PORT, d.maxClientsPerPort(),
-                        "Clients (connections that have sent a request) at once on one port"),
+                        "Clients (connections admitted: a first request or, where the port requires it, an authentication) at once on one port"),
                 "maxPendingPerPort", integer(1, ConfigLoader.MAX_PENDING_PER_PORT, d.maxPendingPerPort(),
-                        "Connections at once on one port that have sent no request yet; the one waiting longest "
-                                + "gives way to a newcomer"),
+                        "Connections at once on one port not admitted yet; of the address with the most of them, the "
+                                + "one waiting longest gives way to a newcomer"),
                 "clientQueueSamples", integer(1, ConfigLoader.MAX_CLIENT_QUEUE_SAMPLES, d.clientQueueSamples(),
                         "Samples waiting for one slow client before the oldest are dropped"),
                 "idleTimeoutMs", integer(0, ConfigLoader.MAX_MS, d.idleTimeoutMs(),
-                        "Close a connection that has sent no frame and taken no byte for this long; 0: never [ms]"),
+                        "Close a connection that has taken nothing of the lines waiting for it and sent nothing for this "
+                                + "long, or has not authenticated within it (a reader is never idle); 0: never [ms]"),
                 "frameTimeoutMs", integer(1, ConfigLoader.MAX_MS, d.frameTimeoutMs(),
                         "A frame a peer has begun to send must arrive whole within this time; the status "
                                 + "endpoint's answer must be taken within it [ms]"),

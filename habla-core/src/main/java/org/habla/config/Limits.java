@@ -6,13 +6,15 @@ package org.habla.config;
  *
  * @param maxLineBytes            the longest JSON line accepted, newline excluded
  * @param maxBinaryBytes          the largest {@code "bytes"} block accepted after a line
- * @param maxClientsPerPort       clients (connections that have sent a request) at once on one port; at the cap
- *                                a new client evicts one idle for {@code evictableIdleMs}, or is refused
+ * @param maxClientsPerPort       clients (connections admitted: a first request or, where the port requires it, an
+ *                                authentication) at once on one port; at the cap a new client evicts one idle for
+ *                                {@code evictableIdleMs}, or is refused
  * @param clientQueueSamples      samples waiting for one slow client before the oldest are dropped (and counted)
- * @param maxPendingPerPort       connections at once on one port that have sent no request yet; the one waiting
- *                                longest gives way to a newcomer
- * @param idleTimeoutMs           a connection that has sent no frame and taken no byte for this long is closed
- *                                ({@code idle_timeout}); 0 never closes an idle connection
+ * @param maxPendingPerPort       connections at once on one port not admitted yet; of the address with the most of
+ *                                them, the one waiting longest gives way to a newcomer
+ * @param idleTimeoutMs           a connection that has taken nothing of the lines waiting for it and sent nothing for
+ *                                this long, or has not authenticated within it, is closed ({@code idle_timeout}); a
+ *                                reader that takes what it is sent is never idle; 0 never closes an idle connection
  * @param frameTimeoutMs          a frame a peer has begun to send must arrive whole within this long
  *                                ({@code frame_timeout}); the status endpoint's answer must be taken within it
  * @param evictableIdleMs         on a full port, a client that has sent requests but then neither sent nor taken
@@ -33,8 +35,11 @@ public record Limits(int maxLineBytes, int maxBinaryBytes, int maxClientsPerPort
     public static final long IDLE_TIMEOUT_MS = 300_000;
     /** Default of {@link #frameTimeoutMs}: ten seconds, an 8 MiB block at 1 MB/s with room to spare. */
     public static final long FRAME_TIMEOUT_MS = 10_000;
-    /** Default of {@link #evictableIdleMs}. */
-    public static final long EVICTABLE_IDLE_MS = 10_000;
+    /**
+     * Default of {@link #evictableIdleMs}: two minutes, so that a client of a quiet socket that pings every minute, as
+     * the control contract asks, is never the one to give way.
+     */
+    public static final long EVICTABLE_IDLE_MS = 120_000;
     /** Default of {@link #socketBlockBudgetBytes}: two blocks of the default largest size. */
     public static final long SOCKET_BLOCK_BUDGET_BYTES = 16L * 1024 * 1024;
     /** Default of {@link #processBlockBudgetBytes}. */

@@ -137,7 +137,7 @@ public final class Daemon implements AutoCloseable {
             }
             if (config.status().port() > 0) {
                 d.statusServer = new StatusServer(config.status(), config.limits(), d::status,
-                        d.guards.status(config.status().bind()), d.guards.statusTls(config.status()));
+                        d.guards.status(config.status()));
                 try {
                     d.statusServer.bind();
                 } catch (IOException e) {

@@ -5,6 +5,7 @@ import org.habla.config.Expose;
 import org.habla.config.HablaConfig;
 import org.habla.config.SecurityConfig;
 import org.habla.security.AuditLog;
+import org.habla.security.LoginThrottle;
 import org.habla.security.PortAccess;
 import org.habla.security.PortSecurity;
 import org.habla.security.Principal;
@@ -14,7 +15,8 @@ import org.slf4j.LoggerFactory;
 
 /**
  * How a daemon guards each of its ports, from the config's {@code security}: who may use each socket and the
- * status endpoint, the one audit log every command goes to, and the TLS of the sockets that ask for it. Warns, at
+ * status endpoint, the one audit log every command and refusal goes to, the one {@link LoginThrottle} that limits
+ * each address's failed logins over all the ports, and the TLS of the sockets that ask for it. Warns, at
  * every start, of each port an {@code insecure} config leaves open beyond loopback.
  */
 final class PortGuards implements AutoCloseable {
@@ -24,6 +26,8 @@ final class PortGuards implements AutoCloseable {
     private final SecurityConfig security;
     private final AuditLog audit;
     private final Tls tls;
+    /** The failed logins each address may make, over every port of the daemon together. */
+    private final LoginThrottle throttle = new LoginThrottle();
 
     private PortGuards(SecurityConfig security, AuditLog audit, Tls tls) {
         this.security = security;
@@ -45,21 +49,17 @@ final class PortGuards implements AutoCloseable {
 
     /** The guard of a control socket. */
     PortSecurity socket(Expose expose) {
-        PortAccess access = security.authenticates(expose.bind())
-                ? PortAccess.authenticated(expose.name(), security.credentials())
-                : PortAccess.open(expose.name());
-        return new PortSecurity(access, audit, expose.tls() ? tls : null);
+        return new PortSecurity(access(expose.name(), expose.bind()), audit, expose.tls() ? tls : null);
     }
 
-    /** Who may read the status endpoint bound to {@code bind}. */
-    PortAccess status(String bind) {
-        return security.authenticates(bind) ? PortAccess.authenticated(Principal.STATUS, security.credentials())
-                : PortAccess.open(Principal.STATUS);
+    /** The guard of the status endpoint: who may read it, the audit log, its TLS. */
+    PortSecurity status(org.habla.config.StatusConfig status) {
+        return new PortSecurity(access(Principal.STATUS, status.bind()), audit, status.tls() ? tls : null);
     }
 
-    /** The TLS of the status endpoint, or null for plain TCP. */
-    Tls statusTls(org.habla.config.StatusConfig status) {
-        return status.tls() ? tls : null;
+    private PortAccess access(String key, String bind) {
+        return security.authenticates(bind) ? PortAccess.authenticated(key, security.credentials(), throttle)
+                : PortAccess.open(key);
     }
 
     AuditLog audit() {

@@ -94,7 +94,8 @@ final class RunnerContext implements MethodContext {
         stale = isStale;
     }
 
-    boolean stale() {
+    @Override
+    public boolean stale() {
         return stale;
     }
 

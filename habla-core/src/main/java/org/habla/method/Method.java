@@ -198,6 +198,14 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
         return context().nowMicros();
     }
 
+    /**
+     * Whether a link, device or worker the method's inputs come from is down now: a command sent meanwhile may
+     * never arrive, so a method that skips repeated commands should not count it as delivered.
+     */
+    protected final boolean stale() {
+        return context().stale();
+    }
+
     /** The source time of the message being handled (the raw reading's time, or the tick's time). */
     protected final long sourceMicros() {
         return currentSourceMicros;

@@ -41,6 +41,7 @@ public final class MethodHarness {
     private long nextTickMicros;
     private boolean backgroundAtOnce;
     private boolean ready = true;
+    private boolean stale;
     private String readinessDetail = "";
 
     private MethodHarness(String id, Method method) {
@@ -125,6 +126,12 @@ public final class MethodHarness {
             throw new IllegalArgumentException(why);
         });
         return push(input, value);
+    }
+
+    /** Makes the method stale or fresh, as a link or device its inputs come from going down or up would. */
+    public MethodHarness stale(boolean isStale) {
+        stale = isStale;
+        return this;
     }
 
     /** Tells the method the engine stopped the robot (the motion watchdog tripped, or control came back). */
@@ -224,13 +231,18 @@ public final class MethodHarness {
         }
 
         @Override
+        public boolean stale() {
+            return stale;
+        }
+
+        @Override
         public void emit(Output<?> output, Payload value, long sourceMicros) {
             if (!output.type().isInstance(value)) {
                 throw new IllegalArgumentException(output + " cannot carry " + value.kind().wireName());
             }
             long seq = sequences.merge(output.name(), 1L, Long::sum);
             emitted.computeIfAbsent(output.name(), k -> new ArrayList<>())
-                    .add(new Sample(value, id + "." + output.name(), seq, sourceMicros, false));
+                    .add(new Sample(value, id + "." + output.name(), seq, sourceMicros, stale));
         }
 
         @Override

@@ -27,6 +27,12 @@ public record ClientId(String client, String connection, String address) {
         return new ClientId(name, connection, address);
     }
 
+    /** The host part of {@link #address}: the address without its port. */
+    public String host() {
+        int colon = address.lastIndexOf(':');
+        return colon < 0 ? address : address.substring(0, colon);
+    }
+
     public ObjectNode toJson() {
         return JsonNodeFactory.instance.objectNode().put("client", client).put("connection", connection)
                 .put("address", address);

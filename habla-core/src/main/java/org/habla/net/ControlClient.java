@@ -52,6 +52,8 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     private volatile Thread writer;
     private volatile Thread reader;
     private volatile FrameReader frames;
+    /** Whether the port has made it a client ({@link ConnectionGuard#promote}); read and written by the reader. */
+    private boolean promoted;
     /** Whether samples may be written by the engine thread that hands them out ({@link ClientConnection#tryWrite}). */
     private final boolean direct;
 
@@ -90,6 +92,24 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     @Override
     public long lastActiveNanos() {
         return activity.lastActiveNanos();
+    }
+
+    /**
+     * Idle while lines wait that its peer does not take, and, where the port requires authentication, until it has
+     * authenticated: it gets nothing to read before, so its silence is not a reader's.
+     */
+    @Override
+    public long idleSinceNanos() {
+        if (admitted == null) {
+            return activity.connectedNanos();
+        }
+        long waiting = outbox.waitingSinceNanos();
+        return waiting == 0 ? 0 : Math.max(waiting, activity.lastActiveNanos());
+    }
+
+    @Override
+    public String idleness() {
+        return admitted == null ? "it did not authenticate" : "it took nothing of the lines waiting for it and sent nothing";
     }
 
     @Override
@@ -182,10 +202,35 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     }
 
     @Override
-    public void admit(org.habla.security.PortAccess.Admitted who) {
+    public boolean admit(org.habla.security.PortAccess.Admitted who, com.fasterxml.jackson.databind.JsonNode requestId)
+            throws InterruptedException {
         id = id.named(who.principal().name());
-        admitted = who;
         LOG.info("{}: authenticated as client '{}' (role {})", label, who.principal().name(), who.role().fileName());
+        if (!becomeClient(requestId)) {
+            return false;
+        }
+        admitted = who;
+        FrameReader f = frames;
+        if (f != null) {
+            f.acceptBlocks();
+        }
+        return true;
+    }
+
+    /**
+     * Asks the port for a client's place; without one, the client is told (the port's {@code fullCode}) and closed.
+     * Called by the reader when the connection is admitted: its first frame on an open port, its authentication
+     * where the port requires it.
+     */
+    private boolean becomeClient(com.fasterxml.jackson.databind.JsonNode requestId) throws InterruptedException {
+        promoted = true;
+        Optional<String> refusal = guard.promote(this);
+        if (refusal.isEmpty()) {
+            return true;
+        }
+        reply(ControlProtocol.error("too_many_clients", refusal.get(), requestId));
+        closeAfterError();
+        return false;
     }
 
     @Override
@@ -221,10 +266,13 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     }
 
     private void readLoop() {
-        boolean client = false; // whether its first frame made it a client of the port
         try {
             FrameReader in = new FrameReader(socket.in(), limits.maxLineBytes(), limits.maxBinaryBytes(),
                     budget);
+            if (admitted == null) {
+                in.refuseBlocks(FrameException.fatal("auth_required", "no block is read before the client has "
+                        + "authenticated"));
+            }
             frames = in;
             while (!closed.get()) {
                 Frame frame;
@@ -236,6 +284,10 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
                             break;
                         }
                         continue;
+                    }
+                    if (admitted == null) { // before authenticating, nothing but an auth line is read
+                        refuse(protocol.authRequired(e.code() + ": " + e.getMessage(), null), false);
+                        return;
                     }
                     reply(ControlProtocol.error(e.code(), e.getMessage(), null));
                     if (e.fatal()) {
@@ -252,15 +304,8 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
                     continue;
                 }
                 activity.received();
-                if (!client) {
-                    client = true;
-                    Optional<String> refusal = guard.promote(this);
-                    if (refusal.isPresent()) {
-                        reply(ControlProtocol.error("too_many_clients", refusal.get(), frame.header().get("id")));
-                        LOG.info("{}: refused as a client: {}", label, refusal.get());
-                        closeAfterError();
-                        return;
-                    }
+                if (!promoted && admitted != null && !becomeClient(frame.header().get("id"))) {
+                    return; // an open port: its first frame makes it a client
                 }
                 counters.linesIn.incrementAndGet();
                 protocol.handle(frame, this);

@@ -1,3 +1,5 @@
+// Over 300 lines, on purpose: every request of habla-control/1, the auth line among them, is answered here from the
+// same point, lease and security, as the picture below lists them; the hello is ControlHello's, values SampleCodec's.
 package org.habla.net;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -29,14 +31,16 @@ import org.habla.security.Role;
  *   {"op":"ping"}                               -&gt; {"type":"pong"} (with the "id", which acknowledges it)
  *   {"op":"take"}                               -&gt; ok (if "id"); this client commands the socket now
  *   {"op":"release"}                            -&gt; ok (if "id") | error not_commander; the robot is stopped
- *   {"op":"auth","client":NAME,"token":TOKEN}   -&gt; the full hello | error auth_failed / forbidden, then closed
+ *   {"op":"auth","client":NAME,"token":TOKEN}   -&gt; the full hello | error auth_failed / auth_throttled / forbidden /
+ *                                                  too_many_clients, then closed | error already_authenticated
  * </pre>
  *
  * On an actuating socket a write goes through the socket's {@link ControlLease}: one commander at a time.
  *
  * <p>Where the port requires authentication ({@link PortAccess}), the first hello says only {@code "auth":
  * "required"}; the client's first request must be its auth line, which earns it the full hello, then its samples.
- * Anything else first gets {@code auth_required} and the connection closes. Writing, taking and releasing need
+ * Anything else first — another request, a line the framing refuses, a block — gets {@code auth_required} and the
+ * connection closes; no block is read before authentication. Writing, taking and releasing need
  * the {@code command} role on the socket, reading needs {@code read}. Every write, take and release, accepted or
  * not, and every refused authentication goes to the port's audit log.
  */
@@ -55,8 +59,14 @@ final class ControlProtocol {
         /** Who the connection has proved to be; null until it has (never null on an open port). */
         PortAccess.Admitted admitted();
 
-        /** The connection has proved who it is: from now on it gets samples and may use its role. */
-        void admit(PortAccess.Admitted admitted);
+        /**
+         * The connection has proved who it is: from now on it gets samples and may use its role, once the port has
+         * a client's place for it.
+         *
+         * @param requestId the auth line's {@code "id"}, for the error line of a refusal
+         * @return whether it is a client; if not, it has been told why and closed
+         */
+        boolean admit(PortAccess.Admitted admitted, JsonNode requestId) throws InterruptedException;
 
         /**
          * Sends {@code error} (after {@link PortAccess#FAILURE_DELAY_MS} when {@code delay}) and closes the
@@ -88,8 +98,7 @@ final class ControlProtocol {
 
     /** Who a new connection is before it says: anonymous with every role on an open port, nobody otherwise. */
     PortAccess.Admitted initialAccess() {
-        return security.access().required() ? null
-                : (PortAccess.Admitted) security.access().authenticate(NODES.objectNode());
+        return security.access().required() ? null : security.access().anonymous();
     }
 
     /**
@@ -112,12 +121,11 @@ final class ControlProtocol {
         }
         PortAccess.Admitted who = replies.admitted();
         if (who == null) {
-            String why = "socket '" + point.name() + "' requires authentication before anything else: send "
-                    + "{\"op\":\"auth\",\"client\":NAME,\"token\":TOKEN} first";
+            Frame refusal = authRequired(null, id);
             if (commands(op)) {
-                audit(replies, op, request, "auth_required: " + why);
+                audit(replies, op, request, "auth_required: " + refusal.header().path("message").asText());
             }
-            replies.refuse(error("auth_required", why, id), false);
+            replies.refuse(refusal, false);
             return;
         }
         if (commands(op) && !who.role().covers(Role.COMMAND)) {
@@ -157,6 +165,16 @@ final class ControlProtocol {
             String code = e.code() == null || e.code().isBlank() ? "rejected" : e.code();
             replies.reply(error(code, e.getMessage(), id));
         }
+    }
+
+    /**
+     * The error line of a connection that sent something other than an auth line before authenticating: a request,
+     * or a line the framing refused ({@code problem}, null for a request).
+     */
+    Frame authRequired(String problem, JsonNode id) {
+        return error("auth_required", "socket '" + point.name() + "' requires authentication before anything else: "
+                + "send {\"op\":\"auth\",\"client\":NAME,\"token\":TOKEN} first"
+                + (problem == null ? "" : " (the line was refused: " + problem + ")"), id);
     }
 
     /** Whether {@code op} drives the robot (needs the command role, and is audited). */
@@ -213,16 +231,17 @@ final class ControlProtocol {
             replies.reply(ControlHello.full(point, limits, lease, null)); // an open port: a client configured with a token still gets on
             return;
         }
-        switch (security.access().authenticate(h)) {
+        ClientId who = replies.id();
+        switch (security.access().authenticate(h, who.host())) {
             case PortAccess.Admitted a -> {
-                replies.admit(a);
-                replies.reply(ControlHello.full(point, limits, lease, a));
+                if (replies.admit(a, id)) {
+                    replies.reply(ControlHello.full(point, limits, lease, a));
+                }
             }
             case PortAccess.Refused r -> {
-                ClientId who = replies.id();
                 security.audit().add(new AuditEntry(Instant.now(), r.client(), who.address(), point.name(),
                         "auth", null, null, false, r.code() + ": " + r.message()));
-                replies.refuse(error(r.code(), r.message(), id), r.code().equals("auth_failed"));
+                replies.refuse(error(r.code(), r.message(), id), r.delayed());
             }
         }
     }

@@ -31,9 +31,9 @@ import org.slf4j.LoggerFactory;
  *
  * The engine's listener never blocks and never does I/O; a client that stops reading loses its oldest
  * samples (counted, and told) and delays nobody else. A newcomer is always let in; at most
- * {@code maxPendingPerPort} connections wait without having sent a request and at most
- * {@code maxClientsPerPort} clients hold the port, and a full port evicts one that only holds its place
- * ({@link AdmissionPolicy}). The blocks clients write reserve their memory from the port's
+ * {@code maxPendingPerPort} connections wait to be admitted (a first request; where the port requires it, an
+ * authentication) and at most {@code maxClientsPerPort} clients hold the port, and a full port evicts one that only
+ * holds its place ({@link AdmissionPolicy}). The blocks clients write reserve their memory from the port's
  * {@link BlockBudget} as they arrive.
  */
 public final class ControlServer implements AutoCloseable {
@@ -94,8 +94,8 @@ public final class ControlServer implements AutoCloseable {
         this.limits = Objects.requireNonNull(limits, "limits");
         this.lease = point.lease().orElse(null);
         this.protocol = new ControlProtocol(point, limits, lease, security);
-        this.guard = new ConnectionGuard("control socket '" + point.name() + "'", limits.maxClientsPerPort(),
-                "limits.maxClientsPerPort", limits);
+        this.guard = new ConnectionGuard(new ConnectionGuard.Port("control socket '" + point.name() + "'", point.name(),
+                "limits.maxClientsPerPort", "too_many_clients"), limits.maxClientsPerPort(), limits, security.audit());
         this.budget = processBudget.child("limits.socketBlockBudgetBytes", limits.socketBlockBudgetBytes());
         this.handshakes = security.tls() == null ? null
                 : new TlsHandshakes(point.name(), security.tls(), limits.maxPendingPerPort());

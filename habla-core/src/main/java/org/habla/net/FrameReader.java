@@ -41,7 +41,7 @@ import java.util.Objects;
  *     -&gt; Frame(header, body)
  * </pre>
  *
- * Blank lines are skipped (a person typing into {@code nc} may press Enter twice). Recoverable errors
+ * A reader may be told to refuse blocks for a while ({@link #refuseBlocks}). Blank lines are skipped (a person typing into {@code nc} may press Enter twice). Recoverable errors
  * leave the stream at the next frame; after a fatal one the connection must be closed. Not thread-safe,
  * except {@link #frameSinceNanos()}, which a watchdog of slow frames reads.
  */
@@ -63,6 +63,8 @@ public final class FrameReader {
     private final LineFramer lines;
     private final int maxBinaryBytes;
     private final BlockBudget budget;
+    /** What a header that declares a block gets while blocks are refused, or null while they are read. */
+    private FrameException blockRefusal;
 
     /** A reader whose blocks take as much memory as they declare, up to {@code maxBinaryBytes} each. */
     public FrameReader(InputStream in, int maxLineBytes, int maxBinaryBytes) {
@@ -77,6 +79,20 @@ public final class FrameReader {
         this.lines = new LineFramer(in, maxLineBytes);
         this.maxBinaryBytes = maxBinaryBytes;
         this.budget = Objects.requireNonNull(budget, "budget");
+    }
+
+    /**
+     * Refuses blocks from now on: a header that declares {@code "bytes"} throws {@code refusal} (make it fatal: the
+     * block that follows cannot be skipped) and nothing of the block is read. A port refuses them from a connection
+     * that has not authenticated, so that it buffers nothing for it beyond one line.
+     */
+    public void refuseBlocks(FrameException refusal) {
+        this.blockRefusal = java.util.Objects.requireNonNull(refusal, "refusal");
+    }
+
+    /** Reads blocks again, within {@code maxBinaryBytes} and the budget. */
+    public void acceptBlocks() {
+        this.blockRefusal = null;
     }
 
     /**
@@ -119,6 +135,9 @@ public final class FrameReader {
         JsonNode count = header.get("bytes");
         if (count == null) {
             return Frame.of(header);
+        }
+        if (blockRefusal != null) {
+            throw blockRefusal;
         }
         if (!count.isIntegralNumber() || !count.canConvertToLong() || count.longValue() < 0) {
             throw FrameException.recoverable("bad_bytes", "\"bytes\" must be a whole number >= 0, was " + count);

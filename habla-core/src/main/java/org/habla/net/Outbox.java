@@ -29,7 +29,8 @@ import java.util.concurrent.locks.ReentrantLock;
  * One writer thread takes batches with {@link #take} and says when it has {@link #sent} them. An engine thread may
  * instead write a sample to the socket itself when nothing waits here and nobody is writing: it
  * {@link #claimDirect claims} the writing side, writes what the socket takes at once, and hands back the rest
- * ({@link #releaseDirect}), which goes out first.
+ * ({@link #releaseDirect}), which goes out first. Since when lines have waited for the peer ({@link #waitingSinceNanos})
+ * is what the port's idle deadline reads: a client that takes what it is sent is never idle, however quiet.
  */
 final class Outbox {
 
@@ -48,6 +49,10 @@ final class Outbox {
     private boolean finished;
     /** Whether the writer or a direct sender is writing to the socket now. */
     private boolean sending;
+    /** Whether the writer is writing a batch now (a direct sender's write never waits, so it is not counted). */
+    private boolean writing;
+    /** Since when lines have waited for the peer to take them ({@link System#nanoTime()}), 0 while none wait. */
+    private long waitingSinceNanos;
 
     private record Entry(EncodedFrame frame, Kind kind) {
     }
@@ -91,6 +96,7 @@ final class Outbox {
             }
             queue.add(new Entry(frame, Kind.SAMPLE));
             samples++;
+            noteWaiting();
             changed.signal();
             return dropped;
         } finally {
@@ -138,6 +144,7 @@ final class Outbox {
                 }
             }
             if (!queue.isEmpty()) {
+                noteWaiting();
                 changed.signalAll(); // the writer, who waited for the writing side; otherwise it sleeps on
             }
         } finally {
@@ -150,6 +157,8 @@ final class Outbox {
         lock.lock();
         try {
             sending = false;
+            writing = false;
+            noteWaiting();
             changed.signalAll();
         } finally {
             lock.unlock();
@@ -168,6 +177,7 @@ final class Outbox {
             }
             queue.add(new Entry(frame, Kind.REPLY));
             replies++;
+            noteWaiting();
             changed.signalAll();
         } finally {
             lock.unlock();
@@ -183,6 +193,7 @@ final class Outbox {
             }
             queue.removeIf(e -> e.kind == Kind.NOTICE && e.frame.type().equals(frame.type()));
             queue.add(new Entry(frame, Kind.NOTICE));
+            noteWaiting();
             changed.signal();
         } finally {
             lock.unlock();
@@ -215,6 +226,7 @@ final class Outbox {
                 if (!queue.isEmpty()) {
                     if (!sending) {
                         sending = true;
+                        writing = true;
                         return drain();
                     }
                 } else if (finished) {
@@ -258,10 +270,33 @@ final class Outbox {
             samples = 0;
             replies = 0;
             queue.add(new Entry(last, Kind.REPLY));
+            noteWaiting();
             finished = true;
             changed.signalAll();
         } finally {
             lock.unlock();
+        }
+    }
+
+    /**
+     * Since when lines have waited here or in the writer's hands for the peer to take them
+     * ({@link System#nanoTime()}), or 0 while none do.
+     */
+    long waitingSinceNanos() {
+        lock.lock();
+        try {
+            return waitingSinceNanos;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Notes whether lines wait now; called under the lock after every change to the queue or the writer. */
+    private void noteWaiting() {
+        if (queue.isEmpty() && !writing) {
+            waitingSinceNanos = 0;
+        } else if (waitingSinceNanos == 0) {
+            waitingSinceNanos = System.nanoTime() | 1; // never 0
         }
     }
 
@@ -311,6 +346,7 @@ final class Outbox {
                 }
                 queue.add(new Entry(h.getValue(), Kind.SAMPLE));
                 samples++;
+                noteWaiting();
             } else {
                 next = Math.min(next, due - now);
             }

@@ -5,13 +5,19 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.net.Socket;
+import java.time.Instant;
 import java.util.function.Supplier;
 import org.habla.config.Limits;
+import org.habla.net.ClientId;
 import org.habla.net.ConnectionGuard;
 import org.habla.net.Frame;
 import org.habla.net.FrameException;
 import org.habla.net.FrameReader;
+import org.habla.security.AuditEntry;
+import org.habla.security.AuditLog;
 import org.habla.security.PortAccess;
+import org.habla.security.PortSecurity;
+import org.habla.security.Principal;
 import org.habla.security.Tls;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -30,19 +36,23 @@ final class StatusAnswer implements ConnectionGuard.Guarded {
     private final ConnectionGuard guard;
     private final Limits limits;
     private final PortAccess access;
+    private final AuditLog audit;
     private final Tls tls;
+    private final ClientId id;
     private final long connected = System.nanoTime();
     private volatile boolean written;
 
-    /** @param tls the endpoint's TLS, or null for plain TCP */
-    StatusAnswer(Socket socket, Supplier<ObjectNode> snapshot, ConnectionGuard guard, Limits limits, PortAccess access,
-            Tls tls) {
+    /** @param security who may read the endpoint, where refusals are audited, its TLS (null for plain TCP) */
+    StatusAnswer(Socket socket, Supplier<ObjectNode> snapshot, ConnectionGuard guard, Limits limits,
+            PortSecurity security) {
         this.socket = socket;
         this.snapshot = snapshot;
         this.guard = guard;
         this.limits = limits;
-        this.access = access;
-        this.tls = tls;
+        this.access = security.access();
+        this.audit = security.audit();
+        this.tls = security.tls();
+        this.id = new ClientId(Principal.STATUS, socket.getInetAddress().getHostAddress() + ":" + socket.getPort());
     }
 
     void run() {
@@ -106,11 +116,13 @@ final class StatusAnswer implements ConnectionGuard.Guarded {
                     + "{\"op\":\"auth\",\"client\":NAME,\"token\":TOKEN} first", false);
             return false;
         }
-        return switch (access.authenticate(request.header())) {
+        return switch (access.authenticate(request.header(), id.host())) {
             case PortAccess.Admitted a -> true;
             case PortAccess.Refused r -> {
                 LOG.info("status client {}: refused: {}", socket.getRemoteSocketAddress(), r.message());
-                refuse(out, r.code(), r.message(), true);
+                audit.add(new AuditEntry(Instant.now(), r.client(), id.address(), Principal.STATUS, "auth", null, null,
+                        false, r.code() + ": " + r.message()));
+                refuse(out, r.code(), r.message(), r.delayed());
                 yield false;
             }
         };
@@ -140,6 +152,17 @@ final class StatusAnswer implements ConnectionGuard.Guarded {
     @Override
     public long lastActiveNanos() {
         return connected;
+    }
+
+    /** It can read nothing until it has authenticated (where it must) and its answer is sent within the frame deadline. */
+    @Override
+    public long idleSinceNanos() {
+        return connected;
+    }
+
+    @Override
+    public ClientId id() {
+        return id;
     }
 
     @Override

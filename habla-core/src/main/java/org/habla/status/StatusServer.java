@@ -12,7 +12,9 @@ import java.util.function.Supplier;
 import org.habla.config.Limits;
 import org.habla.config.StatusConfig;
 import org.habla.net.ConnectionGuard;
+import org.habla.security.AuditLog;
 import org.habla.security.PortAccess;
+import org.habla.security.PortSecurity;
 import org.habla.security.Principal;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -29,7 +31,8 @@ import org.slf4j.LoggerFactory;
  * <p>Where authentication is on ({@link PortAccess}), the endpoint first sends
  * {@code {"type":"hello","protocol":"habla-status/1","auth":"required"}} and waits (within
  * {@code limits.frameTimeoutMs}) for the client's auth line; a client with the {@code read} role on
- * {@code "@status"} (or {@code "*"}) gets the snapshot, any other an error line after a short delay.
+ * {@code "@status"} (or {@code "*"}) gets the snapshot, any other an error line after a short delay; every refused
+ * login is counted and goes to the audit log, as on a control socket.
  */
 public final class StatusServer implements AutoCloseable {
 
@@ -42,8 +45,7 @@ public final class StatusServer implements AutoCloseable {
     private final Supplier<ObjectNode> snapshot;
     private final ConnectionGuard guard;
     private final Limits limits;
-    private final PortAccess access;
-    private final org.habla.security.Tls tls;
+    private final PortSecurity security;
     /** The longest {@link #close} waits for the acceptor to leave {@code accept}, which is when the port is released. */
     private static final long ACCEPTOR_STOP_MILLIS = 2_000;
 
@@ -67,13 +69,20 @@ public final class StatusServer implements AutoCloseable {
     /** An endpoint that answers only the clients {@code access} admits, over TLS unless {@code tls} is null. */
     public StatusServer(StatusConfig config, Limits limits, Supplier<ObjectNode> snapshot, PortAccess access,
             org.habla.security.Tls tls) {
-        this.tls = tls;
+        this(config, limits, snapshot, new PortSecurity(access, AuditLog.withoutFile(), tls));
+    }
+
+    /**
+     * An endpoint guarded by {@code security}: who may read it, where its refused logins and the connections it
+     * evicts are audited, whether it speaks TLS.
+     */
+    public StatusServer(StatusConfig config, Limits limits, Supplier<ObjectNode> snapshot, PortSecurity security) {
+        this.security = Objects.requireNonNull(security, "security");
         this.limits = Objects.requireNonNull(limits, "limits");
-        this.access = Objects.requireNonNull(access, "access");
         this.config = Objects.requireNonNull(config, "config");
         this.snapshot = Objects.requireNonNull(snapshot, "snapshot");
-        this.guard = new ConnectionGuard("the status endpoint", limits.maxClientsPerPort(), "limits.maxClientsPerPort",
-                limits);
+        this.guard = new ConnectionGuard(new ConnectionGuard.Port("the status endpoint", Principal.STATUS,
+                "limits.maxClientsPerPort", "too_many_clients"), limits.maxClientsPerPort(), limits, security.audit());
     }
 
     /**
@@ -149,7 +158,7 @@ public final class StatusServer implements AutoCloseable {
 
     /** Who may read the endpoint, and its counts of authentications. */
     public PortAccess access() {
-        return access;
+        return security.access();
     }
 
     /** Answers being written now. */
@@ -190,7 +199,7 @@ public final class StatusServer implements AutoCloseable {
                 }
                 return;
             }
-            StatusAnswer answer = new StatusAnswer(client, snapshot, guard, limits, access, tls);
+            StatusAnswer answer = new StatusAnswer(client, snapshot, guard, limits, security);
             guard.admit(answer);
             Thread.ofVirtual().name("status-client").start(answer::run);
         }

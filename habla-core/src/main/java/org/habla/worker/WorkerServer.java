@@ -19,10 +19,12 @@ import org.slf4j.LoggerFactory;
 /**
  * The listening side of {@code habla worker}: accepts daemon connections, each running one placed method
  * in a {@link WorkerSession} of its own. Its {@link ConnectionGuard} keeps the control sockets' rules: at most
- * {@code limits.maxPendingPerPort} connections wait to place a method (the one waiting longest gives way to a
- * newcomer) and at most {@code limits.maxClientsPerPort} run one ({@code habla worker --max-methods}); a place
- * line beyond that evicts a method idle for {@code evictableIdleMs}, or gets a {@code too_many_methods} error
- * line and is closed; a connection that breaks a deadline is closed.
+ * {@code limits.maxPendingPerPort} connections wait to place a method (the busiest address's that waited longest
+ * gives way to a newcomer) and at most {@code limits.maxClientsPerPort} run one ({@code habla worker --max-methods});
+ * a place line (after the daemon's proof of the secret, where the worker has one) beyond that evicts a method idle
+ * for {@code evictableIdleMs}, or gets a {@code too_many_methods} error line and is closed; a connection that breaks a
+ * deadline is closed. A daemon that fails the proof never holds a method's place, and each address may fail it
+ * only as often as a {@link org.habla.security.LoginThrottle} allows.
  * The blocks the daemon sends reserve their memory from the worker's {@link BlockBudget} as they arrive.
  */
 public final class WorkerServer implements AutoCloseable {
@@ -40,6 +42,8 @@ public final class WorkerServer implements AutoCloseable {
     private final org.habla.security.WorkerSecret secret;
     private final org.habla.security.Tls tls;
     private final java.util.concurrent.atomic.AtomicLong authFailures = new java.util.concurrent.atomic.AtomicLong();
+    /** The failed proofs each daemon address may make. */
+    private final org.habla.security.LoginThrottle throttle = new org.habla.security.LoginThrottle();
     private volatile boolean running;
     private ServerSocket server;
     private Thread acceptor;
@@ -61,8 +65,8 @@ public final class WorkerServer implements AutoCloseable {
         this.requestedPort = port;
         this.clock = clock;
         this.limits = limits;
-        this.guard = new ConnectionGuard("worker port", limits.maxClientsPerPort(), "habla worker --max-methods",
-                limits);
+        this.guard = new ConnectionGuard(new ConnectionGuard.Port("worker port", "worker", "habla worker --max-methods",
+                "too_many_methods"), limits.maxClientsPerPort(), limits, org.habla.security.AuditLog.withoutFile());
         this.budget = BlockBudget.of("limits.processBlockBudgetBytes", limits.processBlockBudgetBytes())
                 .child("limits.socketBlockBudgetBytes", limits.socketBlockBudgetBytes());
         this.backgroundPool = org.habla.graph.BackgroundPool.create("habla-worker-background-");
@@ -124,7 +128,7 @@ public final class WorkerServer implements AutoCloseable {
                 continue;
             }
             WorkerSession session = new WorkerSession(s, registry, clock, backgroundPool, limits, budget, guard,
-                    secret, tls, authFailures);
+                    secret, tls, authFailures, throttle);
             sessions.add(s);
             guard.admit(session);
             Thread.ofVirtual().name("habla-worker-session").start(() -> {

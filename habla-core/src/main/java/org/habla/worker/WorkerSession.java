@@ -54,6 +54,8 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
     private final org.habla.security.WorkerSecret secret;
     private final org.habla.security.Tls tls;
     private final AtomicLong authFailures;
+    private final org.habla.security.LoginThrottle throttle;
+    private final org.habla.net.ClientId id;
     private final PluginRegistry registry;
     private final EngineClock clock;
     private final ExecutorService backgroundPool;
@@ -74,8 +76,11 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
 
     WorkerSession(Socket socket, PluginRegistry registry, EngineClock clock, ExecutorService backgroundPool,
             Limits limits, BlockBudget budget, ConnectionGuard guard, org.habla.security.WorkerSecret secret,
-            org.habla.security.Tls tls, AtomicLong authFailures) {
+            org.habla.security.Tls tls, AtomicLong authFailures, org.habla.security.LoginThrottle throttle) {
         this.secret = secret;
+        this.throttle = throttle;
+        this.id = new org.habla.net.ClientId("daemon", "worker", socket.getInetAddress().getHostAddress() + ":"
+                + socket.getPort());
         this.tls = tls;
         this.authFailures = authFailures;
         this.socket = socket;
@@ -97,6 +102,17 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
         return activity.lastActiveNanos();
     }
 
+    /** A placed method's heartbeats always wait for the daemon: it is idle when it takes none and sends nothing. */
+    @Override
+    public long idleSinceNanos() {
+        return activity.lastActiveNanos();
+    }
+
+    @Override
+    public org.habla.net.ClientId id() {
+        return id;
+    }
+
     @Override
     public long frameSinceNanos() {
         FrameReader f = frames;
@@ -112,8 +128,7 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
         if (!evicted.compareAndSet(false, true)) {
             return;
         }
-        LOG.info("closing the connection of method {} from {}: {} {}", methodId, socket.getRemoteSocketAddress(),
-                code, message);
+        LOG.debug("closing the connection of method {} from {}: {}", methodId, socket.getRemoteSocketAddress(), code);
         Thread.ofVirtual().name("habla-worker-evict").start(() -> {
             try {
                 FrameWriter w = out;
@@ -168,25 +183,18 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
             String challenge = secret == null ? null : org.habla.security.WorkerSecret.challenge();
             send(secret == null ? WorkerProtocol.hello(registry.methods().keySet())
                     : WorkerProtocol.hello(registry.methods().keySet(), challenge));
+            if (secret != null && !proven(reader, challenge, peer)) {
+                return;
+            }
             Frame place = reader.read();
             if (place == null || evicted.get()) {
                 return;
             }
             activity.received();
-            Optional<String> full = guard.promote(this);
+            Optional<String> full = guard.promote(this); // only now does it take a method's place
             if (full.isPresent()) {
                 send(WorkerProtocol.error("too_many_methods", full.get()));
-                LOG.warn("refused a method for {}: {}", peer, full.get());
                 return;
-            }
-            if (secret != null) {
-                if (!trusts(place, challenge, peer)) {
-                    return;
-                }
-                place = reader.read();
-                if (place == null || evicted.get()) {
-                    return;
-                }
             }
             PlaceLine.Made made = PlaceLine.make(place, registry, clock, backgroundPool);
             methodId = made.methodId();
@@ -220,13 +228,47 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
     }
 
     /**
-     * Checks the daemon's proof of the shared secret and proves it back; a daemon that does not prove it gets
-     * {@code auth_failed} after {@link org.habla.security.PortAccess#FAILURE_DELAY_MS} and no placement.
+     * Reads the daemon's first line, which must prove the shared secret, while refusing blocks: nothing is buffered
+     * for a daemon that has not proved it beyond one line.
+     */
+    private boolean proven(FrameReader reader, String challenge, String peer) throws IOException {
+        reader.refuseBlocks(FrameException.fatal("auth_failed", "no block is read before the shared secret is proved"));
+        Frame auth;
+        try {
+            auth = reader.read();
+        } catch (FrameException e) {
+            auth = null; // not a line the framing takes (a block, garbage): not a proof
+        }
+        if (evicted.get()) {
+            return false;
+        }
+        activity.received();
+        if (!trusts(auth, challenge, peer)) {
+            return false;
+        }
+        reader.acceptBlocks();
+        return true;
+    }
+
+    /**
+     * Checks the daemon's proof of the shared secret ({@code auth}; null for a line the framing refused) and proves
+     * it back; a daemon that does not prove it gets {@code auth_failed} after
+     * {@link org.habla.security.PortAccess#FAILURE_DELAY_MS} and no placement, and an address out of tries
+     * ({@link org.habla.security.LoginThrottle}) gets {@code auth_throttled} at once, its proof unchecked.
      */
     private boolean trusts(Frame auth, String challenge, String peer) throws IOException {
-        String theirs = auth.header().path("challenge").asText(null);
-        if (auth.type().equals("auth") && theirs != null && theirs.length() <= 256
+        long waitMs = throttle.take(id.host());
+        if (waitMs > 0) {
+            long n = authFailures.incrementAndGet();
+            LOG.warn("refused daemon {}: too many failed proofs from its address ({} refused so far)", peer, n);
+            send(WorkerProtocol.error("auth_throttled", "too many failed proofs from " + id.host() + ": not checked; "
+                    + "try again in " + waitMs + " ms"));
+            return false;
+        }
+        String theirs = auth == null ? null : auth.header().path("challenge").asText(null);
+        if (auth != null && auth.type().equals("auth") && theirs != null && theirs.length() <= 256
                 && secret.verify(auth.header().path("proof").asText(null), "daemon", challenge, theirs)) {
+            throttle.giveBack(id.host());
             send(WorkerProtocol.trusted(secret.proof("worker", challenge, theirs)));
             LOG.info("daemon {} proved the shared secret", peer);
             return true;
@@ -238,7 +280,7 @@ final class WorkerSession implements Runnable, ConnectionGuard.Guarded {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
-        send(WorkerProtocol.error("auth_failed", auth.type().equals("auth")
+        send(WorkerProtocol.error("auth_failed", auth != null && auth.type().equals("auth")
                 ? "the proof of the shared secret is wrong: this worker does not trust this daemon"
                 : "this worker places methods only for a daemon that proves the shared secret first "
                         + "({\"type\":\"auth\",...}, see docs/protocol.md)"));

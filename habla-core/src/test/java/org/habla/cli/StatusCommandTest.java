@@ -21,7 +21,8 @@ class StatusCommandTest {
                   {"socket": "drive", "port": 7014, "clients": 1, "auth": "required", "authFailures": 2, "control":
                     {"holder": {"client": "mdb", "connection": "drive#1", "address": "10.0.0.9:5000"},
                     "since": "2025-01-01T10:00:00Z", "silentMs": 5}},
-                  {"socket": "distance_angle", "port": 7002, "clients": 1}]}
+                  {"socket": "distance_angle", "port": 7002, "clients": 1}],
+                 "statusEndpoint": {"auth": "required", "authenticated": 4, "authFailures": 3}}
                 """);
         StringWriter text = new StringWriter();
         StatusCommand.print(st, new PrintWriter(text));
@@ -30,7 +31,7 @@ class StatusCommandTest {
         assertThat(line(lines, "action")).endsWith("action#3 127.0.0.1:53422 since 2025-01-01T10:00:00Z (silent 120 ms)");
         assertThat(line(lines, "say")).endsWith("nobody");
         assertThat(line(lines, "drive")).endsWith("mdb drive#1 10.0.0.9:5000 since 2025-01-01T10:00:00Z (silent 5 ms)");
-        assertThat(text.toString()).contains("authentication required on drive; 2 failed attempts");
+        assertThat(text.toString()).contains("authentication required on drive, the status endpoint; 5 failed attempts");
         assertThat(line(lines, "distance_angle")).endsWith("-");
     }
 

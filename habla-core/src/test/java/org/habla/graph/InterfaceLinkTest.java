@@ -30,6 +30,7 @@ import org.habla.plugin.NoParams;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
+import org.habla.testing.LogLines;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;

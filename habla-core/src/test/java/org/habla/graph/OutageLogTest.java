@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import ch.qos.logback.classic.Level;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import org.habla.testing.LogLines;
 import org.junit.jupiter.api.Test;
 import org.slf4j.LoggerFactory;
 

@@ -32,6 +32,7 @@ import org.habla.config.StatusConfig;
 import org.habla.driver.InterfaceAddress;
 import org.habla.method.Layer;
 import org.habla.plugin.NoParams;
+import org.habla.testing.LogLines;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;

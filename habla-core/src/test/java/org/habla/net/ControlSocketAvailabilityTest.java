@@ -3,20 +3,32 @@ package org.habla.net;
 import static java.nio.charset.StandardCharsets.UTF_8;
 import static org.assertj.core.api.Assertions.assertThat;
 
+import ch.qos.logback.classic.Level;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
+import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import org.habla.config.Expose;
 import org.habla.config.Limits;
+import org.habla.sample.TextValue;
+import org.habla.security.AuditEntry;
+import org.habla.security.AuditLog;
+import org.habla.security.PortAccess;
+import org.habla.security.PortSecurity;
+import org.habla.testing.LogLines;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
 
-/** Idle and slow connections are closed on their deadlines, and a full port still admits a good client. */
+/**
+ * Connections that stop taking what they are sent and slow ones are closed on their deadlines, readers stay, a full
+ * port still admits a good client, and every eviction is logged and audited.
+ */
 @Timeout(60)
 class ControlSocketAvailabilityTest {
 
@@ -28,7 +40,11 @@ class ControlSocketAvailabilityTest {
     }
 
     private ControlServer serve(Limits limits) throws IOException {
-        ControlServer server = new ControlServer(FakeControlPoint.twoWay(), new Expose("tracker", "127.0.0.1", 0), limits);
+        return serve(FakeControlPoint.twoWay(), limits);
+    }
+
+    private ControlServer serve(FakeControlPoint point, Limits limits) throws IOException {
+        ControlServer server = new ControlServer(point, new Expose("tracker", "127.0.0.1", 0), limits);
         server.start();
         open.add(server);
         return server;
@@ -68,29 +84,74 @@ class ControlSocketAvailabilityTest {
     }
 
     @Test
-    void aConnectionThatSendsAndTakesNothingIsClosedAtTheIdleDeadline() throws Exception {
-        ControlServer server = serve(limits(4, 300, 10_000, 10_000));
-        TestClient idle = connect(server);
-        assertThat(assertError(idle, "idle_timeout").path("message").asText()).contains("limits.idleTimeoutMs=300");
-        assertThat(idle.next()).isNull();
-        await("the idle client is gone", () -> server.clientCount() == 0);
-        assertThat(server.stats().path("idleTimeouts").asLong()).isEqualTo(1);
+    void readersThatSendNothingOutliveTheIdleDeadline() throws Exception {
+        FakeControlPoint point = FakeControlPoint.twoWay();
+        // The idle deadline at 200 ms; the witness below is closed at its frame deadline, 1.5 s after it began.
+        ControlServer server = serve(point, limits(4, 200, 1_500, 10_000));
+        TestClient nc = connect(server); // `nc 127.0.0.1 7002`: never sends a line, takes what comes
+        TestClient listener = connect(server); // a control program on a quiet socket: one ping, then it listens
+        listener.send("{\"op\":\"ping\"}");
+        listener.next("pong");
+        TestClient witness = connect(server);
+        witness.sendRaw("{\"op\":\"pi".getBytes(UTF_8));
+        assertError(witness, "frame_timeout");
+        // Both readers have now been quiet (nothing sent, nothing to take) for well over the idle deadline.
+        point.emit("command", new TextValue("forward"));
+        assertThat(nc.next("sample").header().path("value").asText()).isEqualTo("forward");
+        assertThat(listener.next("sample").header().path("value").asText()).isEqualTo("forward");
+        assertThat(server.stats().path("idleTimeouts").asLong()).isZero();
     }
 
     @Test
-    void aClientThatKeepsTalkingOutlivesTheIdleDeadline() throws Exception {
-        ControlServer server = serve(limits(4, 300, 10_000, 10_000));
-        TestClient idle = connect(server);
-        TestClient talker = connect(server);
-        int pongs = 0;
-        while (server.stats().path("idleTimeouts").asLong() == 0 && pongs < 100_000) {
-            talker.send("{\"op\":\"ping\"}");
-            talker.next("pong");
-            pongs++;
+    void aConnectionThatTakesNothingOfWhatWaitsForItIsClosedAtTheIdleDeadlineAndAReaderStays() throws Exception {
+        FakeControlPoint point = FakeControlPoint.twoWay();
+        ControlServer server = serve(point, limits(4, 300, 10_000, 10_000));
+        TestClient reader = connect(server);
+        Socket holder = new Socket();
+        open.add(holder);
+        holder.setReceiveBufferSize(4_096);
+        holder.connect(new InetSocketAddress("127.0.0.1", server.port()));
+        await("the holder is admitted", () -> server.clientCount() == 2);
+        String big = "x".repeat(100_000);
+        // Samples the holder never reads fill its buffers; the reader takes every one. Bounded by the count.
+        for (int i = 0; i < 100_000 && server.stats().path("idleTimeouts").asLong() == 0; i++) {
+            point.emit("command", new TextValue(big));
+            assertThat(reader.next("sample").header().path("value").asText()).hasSize(big.length());
         }
-        assertError(idle, "idle_timeout");
-        talker.send("{\"op\":\"ping\",\"id\":1}");
-        assertThat(talker.next().header().toString()).isEqualTo("{\"type\":\"pong\",\"id\":1}");
+        assertThat(server.stats().path("idleTimeouts").asLong()).isEqualTo(1);
+        await("the holder is gone", () -> server.clientCount() == 1);
+        point.emit("command", new TextValue("still here"));
+        assertThat(reader.next("sample").header().path("value").asText()).isEqualTo("still here");
+    }
+
+    @Test
+    void everyEvictionAndRefusalIsLoggedAtInfoAndAudited() throws Exception {
+        List<AuditEntry> audited = new CopyOnWriteArrayList<>();
+        AuditLog audit = AuditLog.withoutFile();
+        audit.addListener(audited::add);
+        try (LogLines log = new LogLines(ConnectionGuard.class)) {
+            ControlServer server = new ControlServer(FakeControlPoint.twoWay(), new Expose("tracker", "127.0.0.1", 0),
+                    limits(1, 60_000, 10_000, 60_000), BlockBudget.of("test", 1 << 20),
+                    new PortSecurity(PortAccess.open("tracker"), audit, null));
+            server.start();
+            open.add(server);
+            TestClient client = connect(server);
+            client.send("{\"op\":\"ping\"}");
+            client.next("pong");
+            TestClient pending = connect(server);
+            TestClient newcomer = connect(server); // the one pending place: the older pending connection gives way
+            assertError(pending, "evicted");
+            newcomer.send("{\"op\":\"ping\"}"); // the one client place is taken by a working client
+            assertError(newcomer, "too_many_clients");
+            await("both are audited", () -> audited.size() >= 2);
+            assertThat(audited).extracting(e -> e.json().toString()).anySatisfy(e -> assertThat(e)
+                    .contains("\"socket\":\"tracker\"", "\"action\":\"connect\"", "\"accepted\":false",
+                            "evicted: ", "limits.maxPendingPerPort=1"))
+                    .anySatisfy(e -> assertThat(e).contains("\"action\":\"connect\"", "too_many_clients: ",
+                            "limits.maxClientsPerPort=1"));
+            assertThat(log.at(Level.INFO)).anySatisfy(l -> assertThat(l).contains("evicted", "limits.maxPendingPerPort=1"))
+                    .anySatisfy(l -> assertThat(l).contains("too_many_clients", "limits.maxClientsPerPort=1"));
+        }
     }
 
     @Test

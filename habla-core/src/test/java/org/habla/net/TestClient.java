@@ -15,7 +15,14 @@ final class TestClient implements AutoCloseable {
     private final OutputStream out;
 
     TestClient(int port) throws IOException {
-        socket = new Socket("127.0.0.1", port);
+        this(port, "127.0.0.1");
+    }
+
+    /** A client whose connection comes from {@code fromAddress} (any 127.x.y.z on Linux: each a host of its own). */
+    TestClient(int port, String fromAddress) throws IOException {
+        socket = new Socket();
+        socket.bind(new java.net.InetSocketAddress(fromAddress, 0));
+        socket.connect(new java.net.InetSocketAddress("127.0.0.1", port), 5_000);
         socket.setSoTimeout(5_000);
         reader = new FrameReader(socket.getInputStream(), 1 << 20, 1 << 24);
         out = socket.getOutputStream();

@@ -158,6 +158,35 @@ class StatusServerTest {
         }
     }
 
+    @Test
+    void everyRefusedLoginIsCountedAndAuditedAndAnAddressOutOfTriesIsNotChecked() throws Exception {
+        var credentials = org.habla.security.Credentials.of(java.util.Map.of("viewer", java.util.Map.entry(
+                "viewer-token-0123456789", java.util.Map.of("@status", org.habla.security.Role.READ))), null);
+        java.util.List<org.habla.security.AuditEntry> audited = new java.util.concurrent.CopyOnWriteArrayList<>();
+        org.habla.security.AuditLog audit = org.habla.security.AuditLog.withoutFile();
+        audit.addListener(audited::add);
+        try (StatusServer server = new StatusServer(new StatusConfig("127.0.0.1", 7099), Limits.DEFAULTS,
+                () -> JsonNodeFactory.instance.objectNode().put("snapshot", 1), new org.habla.security.PortSecurity(
+                        org.habla.security.PortAccess.authenticated("@status", credentials), audit, null))) {
+            server.startOnAnyPort();
+            int attempts = org.habla.security.LoginThrottle.BURST + 5;
+            java.util.List<String> answers = new java.util.concurrent.CopyOnWriteArrayList<>();
+            try (var guessers = java.util.concurrent.Executors.newVirtualThreadPerTaskExecutor()) {
+                for (int i = 0; i < attempts; i++) { // at once: more than the address's burst of tries
+                    String guess = "{\"op\":\"auth\",\"client\":\"viewer\",\"token\":\"guess-" + i + "-0123456789\"}";
+                    guessers.submit(() -> answers.add(exchange(server.port(), guess).getLast()));
+                }
+            }
+            assertThat(answers).filteredOn(a -> a.contains("auth_failed")).hasSizeGreaterThanOrEqualTo(1)
+                    .hasSizeLessThanOrEqualTo(org.habla.security.LoginThrottle.BURST + 1);
+            assertThat(answers).filteredOn(a -> a.contains("auth_throttled")).isNotEmpty();
+            assertThat(server.access().failures()).isEqualTo(attempts);
+            assertThat(audited).hasSize(attempts).allSatisfy(e -> assertThat(e.json().toString()).contains(
+                    "\"socket\":\"@status\"", "\"action\":\"auth\"", "\"accepted\":false",
+                    "\"address\":\"127.0.0.1:"));
+        }
+    }
+
     /** Connects, sends one line, and returns every line the server sends before it closes. */
     private static java.util.List<String> exchange(int port, String line) throws IOException {
         try (Socket s = new Socket("127.0.0.1", port)) {

@@ -7,12 +7,17 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.io.OutputStream;
+import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BooleanSupplier;
 import org.habla.config.Limits;
 import org.habla.graph.EngineClock;
@@ -20,6 +25,7 @@ import org.habla.net.Frame;
 import org.habla.net.FrameReader;
 import org.habla.net.FrameWriter;
 import org.habla.net.WorkerProtocol;
+import org.habla.security.WorkerSecret;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
@@ -38,8 +44,12 @@ class WorkerAvailabilityTest {
     }
 
     private WorkerServer worker(Limits limits) throws IOException {
+        return worker(limits, null);
+    }
+
+    private WorkerServer worker(Limits limits, WorkerSecret secret) throws IOException {
         EngineClock clock = EngineClock.system();
-        WorkerServer w = new WorkerServer(WorkerTestMethods.all(), "127.0.0.1", 0, clock, limits);
+        WorkerServer w = new WorkerServer(WorkerTestMethods.all(), "127.0.0.1", 0, clock, limits, secret, null);
         open.add(clock::close);
         open.add(w);
         w.start();
@@ -53,7 +63,14 @@ class WorkerAvailabilityTest {
         final FrameWriter out;
 
         Link(WorkerServer w) throws IOException {
-            socket = new Socket("127.0.0.1", w.port());
+            this(w, "127.0.0.1");
+        }
+
+        /** A link from {@code from} (any 127.x.y.z: each a host of its own). */
+        Link(WorkerServer w, String from) throws IOException {
+            socket = new Socket();
+            socket.bind(new InetSocketAddress(from, 0));
+            socket.connect(new InetSocketAddress("127.0.0.1", w.port()), 5_000);
             socket.setSoTimeout(5_000);
             in = new FrameReader(new BufferedInputStream(socket.getInputStream()), 1 << 20, 1 << 20);
             out = new FrameWriter(socket.getOutputStream());
@@ -175,6 +192,56 @@ class WorkerAvailabilityTest {
                 s.close();
             }
         }
+    }
+
+    @Test
+    void daemonsThatFailTheSecretNeverCostAGoodDaemonItsPlaceNorHoldABlock() throws Exception {
+        WorkerSecret secret = WorkerSecret.of("the-lab-worker-secret-0123");
+        WorkerServer w = worker(Limits.DEFAULTS.withCaps(2, 64), secret);
+        AtomicBoolean attacking = new AtomicBoolean(true);
+        AtomicInteger attempts = new AtomicInteger();
+        ExecutorService attackers = Executors.newVirtualThreadPerTaskExecutor();
+        try {
+            for (int i = 0; i < 20; i++) {
+                attackers.submit(() -> {
+                    while (attacking.get()) {
+                        int n = attempts.incrementAndGet();
+                        try (Socket s = new Socket()) { // each attempt from an address of its own
+                            s.bind(new InetSocketAddress("127.0." + (1 + n / 250) + "." + (2 + n % 250), 0));
+                            s.connect(new InetSocketAddress("127.0.0.1", w.port()), 5_000);
+                            s.setSoTimeout(5_000);
+                            s.getOutputStream().write((WorkerProtocol.auth("c", "not-the-proof") + "\n").getBytes(UTF_8));
+                            s.getInputStream().readAllBytes();
+                        } catch (IOException e) {
+                            // refused or reset: the next attempt
+                        }
+                    }
+                    return null;
+                });
+            }
+            await("twenty attempts are under way", () -> attempts.get() >= 20);
+            for (int i = 0; i < 6; i++) {
+                try (Link good = new Link(w)) {
+                    WorkerProtocol.Hello hello = WorkerProtocol.Hello.of(good.next());
+                    WorkerProtocol.prove(hello, secret, good.in, good.out, "test");
+                    good.out.send(WorkerProtocol.place("m" + i, "audio-digest", "processing",
+                            JsonNodeFactory.instance.objectNode(), Map.of(), Map.of()));
+                    Frame placed = good.nextNotHeartbeat();
+                    assertThat(placed.type()).as(placed.header().toString()).isEqualTo("placed");
+                }
+            }
+        } finally {
+            attacking.set(false);
+            attackers.shutdown();
+            assertThat(attackers.awaitTermination(20, TimeUnit.SECONDS)).isTrue();
+        }
+        Link early = new Link(w);
+        assertThat(early.next().type()).isEqualTo("hello");
+        early.sendAudioHeader(1 << 20);
+        early.sendRaw(new byte[600_000]);
+        Frame refused = early.next();
+        assertThat(refused.header().path("code").asText()).as(refused.header().toString()).isEqualTo("auth_failed");
+        assertThat(w.blockBytesInFlight()).as("nothing is buffered before the daemon proves the secret").isZero();
     }
 
     @Test

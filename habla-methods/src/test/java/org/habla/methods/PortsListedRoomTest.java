@@ -43,8 +43,8 @@ class PortsListedRoomTest {
                 List.of("climate"));
         assertListed(new Comfort.Provider(), new Comfort.Params(null, null, null, null, null, null, null),
                 List.of("climate", "lux", "sound"), List.of("comfort"));
-        assertListed(new Lamp.Provider(), new Lamp.Params(null, null, null), List.of("level"),
-                List.of("command", "level"));
+        assertListed(new Lamp.Provider(), new Lamp.Params(null, null, null, null), List.of("level", "state"),
+                List.of("command", "level", "reported"));
         assertListed(new LightSensor.Provider(), new LightSensor.Params(null, null), List.of("lux"), List.of("lux"));
         assertListed(new Presence.Provider(), new Presence.Params(null, null), List.of("motion", "door"),
                 List.of("present"));

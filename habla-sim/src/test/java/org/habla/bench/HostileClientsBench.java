@@ -20,13 +20,17 @@ import org.habla.net.FrameWriter;
  * hostile connections of every kind ({@link HostileCrowd}) arrive at once, a third of them on the action
  * socket, the rest over the other control sockets and the status endpoint. Prints the good client's answer
  * times and errors before, during and after; how long a good newcomer waited to be served in the middle of
- * the burst; how every hostile connection ended; the daemon's resident memory and threads before, at their
+ * the burst; how every hostile connection ended (those that read what they are sent — idle, and the holders once
+ * they look — are readers, which the daemon keeps: they end "open"); the daemon's resident memory and threads before, at their
  * highest, after, and after a full collection (what it could give back), and the most bytes it held for
  * blocks in flight (its own count).
  */
 final class HostileClientsBench {
 
-    /** The daemon runs with this idle deadline (instead of 5 min) so that silent connections end within the run. */
+    /**
+     * The daemon runs with this idle deadline (instead of 5 min) so that connections that stop taking what they are
+     * sent end within the run. Connections that read what they are sent are readers and stay.
+     */
     static final long IDLE_TIMEOUT_MS = 20_000;
 
     private final int hostile;

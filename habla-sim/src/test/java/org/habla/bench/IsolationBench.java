@@ -285,30 +285,10 @@ final class IsolationBench {
 
     /** Waits (bounded) until every link is up and every method ready, as the status endpoint says. */
     private static void awaitReady(int statusPort, long millis, Path dir) throws Exception {
-        long end = System.nanoTime() + millis * 1_000_000L;
-        String missing = "no status yet";
-        while (System.nanoTime() < end) {
-            try {
-                JsonNode st = status(statusPort);
-                missing = "";
-                for (JsonNode i : st.path("interfaces")) {
-                    if (!i.path("up").asBoolean()) {
-                        missing += "link " + i.path("id").asText() + " ";
-                    }
-                }
-                for (JsonNode m : st.path("methods")) {
-                    if (!m.path("ready").asBoolean(true)) {
-                        missing += "method " + m.path("id").asText() + " ";
-                    }
-                }
-                if (missing.isEmpty()) {
-                    return;
-                }
-            } catch (IOException e) {
-                missing = e.toString();
-            }
-            Thread.sleep(200);
+        try {
+            org.habla.sim.scenario.DaemonReadiness.await(statusPort, millis, () -> true);
+        } catch (IOException e) {
+            throw new IOException(e.getMessage() + "; see " + dir, e);
         }
-        throw new IOException("not ready after " + millis / 1000 + " s: " + missing + "; see " + dir);
     }
 }

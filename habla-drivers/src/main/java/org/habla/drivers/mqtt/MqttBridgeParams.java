@@ -27,6 +27,9 @@ public record MqttBridgeParams(
         @Param(value = "Home Assistant's discovery prefix", defaultValue = "\"homeassistant\"") String discoveryPrefix,
         @Param(value = "at most this many samples a second per socket output; 0: every sample", unit = "Hz",
                 defaultValue = "0") Double maxHz,
+        @Param(value = "how long the bridge keeps command of an actuating socket after its last action or take; "
+                + "then the next commander to write takes it (a shorter safety.watchdogMs lapses it sooner)",
+                unit = "ms", defaultValue = "5000") Integer holdMs,
         @Param(value = "the client identifier; empty: habla-bridge- and the system's name", defaultValue = "\"\"")
         String clientId,
         @Param(value = "the user name to log in with; empty: none", defaultValue = "\"\"") String username,
@@ -37,6 +40,8 @@ public record MqttBridgeParams(
         @Param(value = "a PEM file of the certificate authorities that sign the broker's certificate; empty: the "
                 + "JVM's trust store", defaultValue = "\"\"", file = true) String caFile) {
 
+    /** The longest hold a bridge may keep on a socket: an hour. */
+    static final int MAX_HOLD_MS = 3_600_000;
     private static final Pattern LEVEL = Pattern.compile("[A-Za-z0-9_-]{1,64}");
 
     public MqttBridgeParams {
@@ -58,6 +63,10 @@ public record MqttBridgeParams(
         maxHz = ParamDefaults.or(MqttBridgeParams.class, "maxHz", maxHz);
         if (!(maxHz >= 0) || maxHz > 100_000) {
             throw new IllegalArgumentException("maxHz must be within 0..100000, was " + maxHz);
+        }
+        holdMs = ParamDefaults.or(MqttBridgeParams.class, "holdMs", holdMs);
+        if (holdMs < 1 || holdMs > MAX_HOLD_MS) {
+            throw new IllegalArgumentException("holdMs must be within 1.." + MAX_HOLD_MS + ", was " + holdMs);
         }
         clientId = ParamDefaults.or(MqttBridgeParams.class, "clientId", clientId);
         username = ParamDefaults.or(MqttBridgeParams.class, "username", username);

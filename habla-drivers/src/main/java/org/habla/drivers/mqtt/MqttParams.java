@@ -89,6 +89,9 @@ public record MqttParams(
                 throw new IllegalArgumentException("devices: '" + d.name() + "' is listed twice");
             }
         }
+        for (DeviceSpec d : devices) {
+            through(devices, d);
+        }
         Set<String> channels = new HashSet<>();
         for (ReadingMap r : readings) {
             unique(channels, r.channel());
@@ -97,6 +100,23 @@ public record MqttParams(
         for (CommandMap c : commands) {
             unique(channels, c.channel());
             known(deviceNames, c.device(), c.channel());
+        }
+    }
+
+    /** A device's via names a listed device, and following via never comes back to it. */
+    private static void through(List<DeviceSpec> devices, DeviceSpec d) {
+        String name = d.via();
+        for (int hops = 0; !name.isEmpty(); hops++) {
+            String current = name;
+            DeviceSpec next = devices.stream().filter(x -> x.name().equals(current)).findFirst().orElse(null);
+            if (next == null) {
+                throw new IllegalArgumentException("devices: '" + d.name() + "' is reached via '" + current
+                        + "', which is not in \"devices\"");
+            }
+            if (next.name().equals(d.name()) || hops > devices.size()) {
+                throw new IllegalArgumentException("devices: the via chain of '" + d.name() + "' goes round in a circle");
+            }
+            name = next.via();
         }
     }
 

@@ -5,9 +5,8 @@ import java.io.InterruptedIOException;
 import java.nio.charset.StandardCharsets;
 import java.time.Duration;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.LinkedHashSet;
-import java.util.Map;
+import java.util.List;
 import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ArrayBlockingQueue;
@@ -43,7 +42,7 @@ final class MqttSession implements ClientSession {
     private final MqttDriver driver;
     private final BlockingQueue<Message> queue;
     private final AtomicLong overflow = new AtomicLong();
-    private final Map<String, String> offlineDevices = new HashMap<>();
+    private final DeviceAvailability devices;
     private volatile MqttWire wire;
     private volatile Throwable lost;
     private volatile boolean closed;
@@ -54,6 +53,7 @@ final class MqttSession implements ClientSession {
     MqttSession(MqttDriver driver) {
         this.driver = driver;
         this.queue = new ArrayBlockingQueue<>(driver.params().queueMessages());
+        this.devices = new DeviceAvailability(driver.devices());
     }
 
     @Override
@@ -118,6 +118,7 @@ final class MqttSession implements ClientSession {
                 availability(d, new String(m.payload(), StandardCharsets.UTF_8).strip(), sink);
             }
         }
+        List<String> unreadable = new ArrayList<>();
         for (ReadingDecoder d : driver.decoders()) {
             if (!d.map().filter().matches(m.topic())) {
                 continue;
@@ -125,8 +126,12 @@ final class MqttSession implements ClientSession {
             try {
                 d.decode(m.payload()).ifPresent(v -> sink.reading(d.map().channel(), v));
             } catch (IllegalArgumentException e) {
-                sink.malformed("message on " + m.topic() + " for channel " + d.map().channel() + ": " + e.getMessage());
+                unreadable.add("channel " + d.map().channel() + ": " + e.getMessage());
             }
+        }
+        if (!unreadable.isEmpty()) {
+            // One malformed message counts once, however many channels it feeds.
+            sink.malformed("message on " + m.topic() + " for " + String.join("; ", unreadable));
         }
     }
 
@@ -150,17 +155,13 @@ final class MqttSession implements ClientSession {
                     + ReadingDecoder.abbreviate(payload) + "', neither '" + d.online() + "' nor '" + d.offline() + "'");
             return;
         }
-        synchronized (offlineDevices) {
-            if (online) {
-                offlineDevices.remove(d.name());
-            } else {
-                offlineDevices.put(d.name(), d.availabilityTopic() + " says " + state);
-            }
-        }
-        String why = d.name() + (online ? " is online" : " is offline (" + d.availabilityTopic() + ")");
+        devices.said(d, online, d.name() + " is offline (" + d.availabilityTopic() + " says " + state + ")");
+        // A device's word changes what every device reached through it can do, so every channel is told again.
         for (ReadingDecoder r : driver.decoders()) {
-            if (r.map().device().equals(d.name())) {
-                sink.availability(r.map().channel(), online, why);
+            String device = r.map().device();
+            if (!device.isEmpty()) {
+                String why = devices.unreachable(device);
+                sink.availability(r.map().channel(), why == null, why == null ? device + " is online" : why);
             }
         }
     }
@@ -172,12 +173,9 @@ final class MqttSession implements ClientSession {
             throw new IOException("the broker connection carries no command channel '" + channel + "'");
         }
         if (!c.device().isEmpty()) {
-            String offline;
-            synchronized (offlineDevices) {
-                offline = offlineDevices.get(c.device());
-            }
+            String offline = devices.unreachable(c.device());
             if (offline != null) {
-                throw new IllegalArgumentException("device " + c.device() + " is offline: " + offline);
+                throw new IllegalArgumentException("device " + c.device() + " cannot be reached: " + offline);
             }
         }
         String text = new PayloadTemplate(c.template()).render(command);

@@ -23,6 +23,23 @@ class MqttMappingTest {
     }
 
     @Test
+    void aDeviceIsReachedThroughAListedDeviceAndNeverThroughItself() {
+        String devices = "{\"readings\": [{\"channel\": \"m\", \"topic\": \"z/m\", \"device\": \"m\"}], \"devices\": [%s]}";
+        String ok = devices.formatted("{\"name\": \"z\", \"availabilityTopic\": \"z/bridge/state\"},"
+                + "{\"name\": \"m\", \"availabilityTopic\": \"z/m/availability\", \"via\": \"z\"}");
+        var mapper = new com.fasterxml.jackson.databind.ObjectMapper();
+        org.assertj.core.api.Assertions.assertThatCode(() -> mapper.readValue(ok, MqttParams.class))
+                .doesNotThrowAnyException();
+        assertThatThrownBy(() -> mapper.readValue(devices.formatted(
+                "{\"name\": \"m\", \"availabilityTopic\": \"z/m/availability\", \"via\": \"hub\"}"),
+                MqttParams.class)).hasStackTraceContaining("'m' is reached via 'hub', which is not in \"devices\"");
+        assertThatThrownBy(() -> mapper.readValue(devices.formatted(
+                "{\"name\": \"a\", \"availabilityTopic\": \"a/s\", \"via\": \"m\"},"
+                + "{\"name\": \"m\", \"availabilityTopic\": \"m/s\", \"via\": \"a\"}"), MqttParams.class))
+                .hasStackTraceContaining("goes round in a circle");
+    }
+
+    @Test
     void wildcardsMatchOneLevelOrTheRest() {
         assertThat(new TopicFilter("zigbee2mqtt/+/availability").matches("zigbee2mqtt/desk_lamp/availability")).isTrue();
         assertThat(new TopicFilter("zigbee2mqtt/+/availability").matches("zigbee2mqtt/a/b/availability")).isFalse();

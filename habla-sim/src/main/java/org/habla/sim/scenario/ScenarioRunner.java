@@ -16,8 +16,9 @@ import java.util.Locale;
  * Runs a scenario as a user would deploy it: the simulated robot, the daemon with the robot's config
  * and the control program, each its own process, talking over loopback. The runner drives the episodes
  * through the simulator's ground truth — put the robot at its start, let the teacher teach, send the
- * teacher away, watch whether the robot still reaches the object — and measures them. It never talks to
- * the daemon or the control program: what it measures is what the robot did in the simulated world.
+ * teacher away, watch whether the robot still reaches the object — and measures them. Of the daemon it asks,
+ * as an operator would, only whether it is ready (the teacher starts when the robot can hear); it never talks
+ * to the control program: what it measures is what the robot did in the simulated world.
  */
 final class ScenarioRunner {
 
@@ -26,8 +27,13 @@ final class ScenarioRunner {
             Path home) {
     }
 
+    /** How long a daemon may take to load its models and reach its robot before a run gives up. */
+    private static final long READY_TIMEOUT_MS = 180_000;
+
     private final Options o;
     private final PrintWriter out;
+    private TeacherLog teacherLog;
+    private int episode;
 
     ScenarioRunner(Options options, PrintWriter out) {
         this.o = options;
@@ -74,6 +80,10 @@ final class ScenarioRunner {
                     }
                 }
                 awaitPort(ports[1], 120_000, daemon);
+                long readyFrom = System.nanoTime();
+                DaemonReadiness.await(statusPort(derived), READY_TIMEOUT_MS, daemon::alive);
+                say("daemon ready: every method ready and every link up (%.1f s after its sockets opened)",
+                        (System.nanoTime() - readyFrom) / 1e9);
                 say("control program: %s (SHA-256 %s), the same file for every robot", o.home().toAbsolutePath().relativize(mdb.toAbsolutePath()),
                         sha256(mdb));
                 say("daemon up: command %d, distance_angle %d, reward %d, action %d", ports[0], ports[1], ports[2], ports[3]);
@@ -85,8 +95,12 @@ final class ScenarioRunner {
                         o.home(), o.reportDir().resolve("control.log"));
                 List<Children.Child> watched = new ArrayList<>(world);
                 watched.addAll(List.of(daemon, control));
-                for (int e = 1; e <= o.episodes(); e++) {
-                    episodes.add(episode(e, truth, watched));
+                try (TeacherLog log = new TeacherLog(o.reportDir())) {
+                    this.teacherLog = log;
+                    for (int e = 1; e <= o.episodes(); e++) {
+                        this.episode = e;
+                        episodes.add(episode(e, truth, watched));
+                    }
                 }
             }
         }
@@ -205,6 +219,9 @@ final class ScenarioRunner {
             }
             JsonNode n = truth.awaitTime(Math.nextUp(after), 200);
             if (n != null) {
+                if (teacherLog != null) {
+                    teacherLog.observe(n, episode);
+                }
                 return n;
             }
             if (!truth.alive()) {
@@ -212,6 +229,12 @@ final class ScenarioRunner {
             }
         }
         throw new IOException("the simulated world did not advance for 20 s");
+    }
+
+    /** The status endpoint's port in a derived config. */
+    private static int statusPort(Path derivedConfig) throws IOException {
+        return new com.fasterxml.jackson.databind.ObjectMapper().readTree(Files.readString(derivedConfig))
+                .path("status").path("port").asInt();
     }
 
     static String sha256(Path file) throws IOException {

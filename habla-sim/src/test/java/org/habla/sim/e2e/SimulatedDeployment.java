@@ -19,6 +19,7 @@ import java.util.concurrent.ThreadLocalRandom;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 import org.habla.sim.scenario.DerivedConfig;
+import org.habla.sim.scenario.DaemonReadiness;
 import org.habla.sim.scenario.TruthLink;
 import org.habla.testing.DaemonProcess;
 
@@ -102,33 +103,7 @@ final class SimulatedDeployment implements AutoCloseable {
     /** Waits until every method of the daemon is ready (models loaded) and every link to the robot is up, as its status endpoint tells. */
     void awaitReady(long timeoutMs) throws Exception {
         int port = JSON.readTree(Files.readString(config)).path("status").path("port").asInt();
-        long end = System.nanoTime() + timeoutMs * 1_000_000L;
-        String notReady = "?";
-        while (System.nanoTime() < end) {
-            try (java.net.Socket s = new java.net.Socket("127.0.0.1", port)) {
-                s.setSoTimeout(5_000);
-                JsonNode status = JSON.readTree(new BufferedReader(new InputStreamReader(s.getInputStream(),
-                        StandardCharsets.UTF_8)).readLine());
-                notReady = "";
-                for (JsonNode m : status.path("methods")) {
-                    if (!m.path("ready").asBoolean()) {
-                        notReady += m.path("id").asText() + " ";
-                    }
-                }
-                for (JsonNode i : status.path("interfaces")) {
-                    if (!i.path("up").asBoolean()) {
-                        notReady += "link:" + i.path("id").asText() + " ";
-                    }
-                }
-                if (notReady.isEmpty()) {
-                    return;
-                }
-            } catch (IOException e) {
-                notReady = e.toString();
-            }
-            Thread.sleep(200);
-        }
-        throw new AssertionError("methods not ready after " + timeoutMs + " ms: " + notReady);
+        DaemonReadiness.await(port, timeoutMs, () -> daemon.alive());
     }
 
     /** Puts the robot at a pose (world frame) and returns the first ground truth after it. */
