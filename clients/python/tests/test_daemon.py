@@ -1,13 +1,14 @@
 """The client against a real daemon (config/pioneer.json, security on) and the simulated Pioneer."""
 
 import asyncio
+import os
 import time
 
 import pytest
 
 import habla
 import habla.aio
-from deployment import TOKENS
+from deployment import HOME, TOKENS
 
 
 def connect(rig, name, who="tester", **kw):
@@ -86,6 +87,22 @@ def test_the_asyncio_client_reads_and_acts(rig):
             await s.close()
             await a.close()
     asyncio.run(run())
+
+
+def test_the_example_control_program_drives_the_robot_to_the_object(rig, monkeypatch):
+    """examples/control-python/approach.py, on the packaged client, against the daemon."""
+    import importlib.util
+    spec = importlib.util.spec_from_file_location("approach", os.path.join(HOME, "examples", "control-python",
+                                                                            "approach.py"))
+    approach = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(approach)
+    before = rig.truth.place(5.0, 6.0, 0.0)
+    monkeypatch.setenv("HABLA_CLIENT", "tester")
+    monkeypatch.setenv("HABLA_TOKEN", TOKENS["tester"])
+    assert approach.main(["--distance-angle-port", str(rig.ports["distance_angle"]),
+                          "--action-port", str(rig.ports["action"]), "--seconds", "40"]) == 0
+    after = rig.truth.latest()
+    assert after["distanceM"] < 0.6 < before["distanceM"], (before["distanceM"], after["distanceM"])
 
 
 def test_a_lost_robot_makes_samples_stale_and_a_lost_daemon_is_reconnected(rig):

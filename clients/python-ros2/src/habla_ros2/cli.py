@@ -8,22 +8,15 @@
 import argparse
 import sys
 
+from . import body, face, sim_base
+
 
 def main(argv=None):
     p = argparse.ArgumentParser(prog="habla-ros2", description=__doc__.split("\n\n")[0])
     sub = p.add_subparsers(dest="command", required=True)
-    from . import face
     face.add_arguments(sub.add_parser("face", help="the daemon's sockets as ROS 2 topics"))
-    try:
-        from . import body
-        body.add_arguments(sub.add_parser("body", help="a ROS 2 base as a HABLA body"))
-    except ImportError:
-        body = None
-    try:
-        from . import sim_base
-        sim_base.add_arguments(sub.add_parser("sim-base", help="a simulated ROS 2 base with the teacher"))
-    except ImportError:
-        sim_base = None
+    body.add_arguments(sub.add_parser("body", help="a ROS 2 base as a HABLA body"))
+    sim_base.add_arguments(sub.add_parser("sim-base", help="a simulated ROS 2 base with the teacher"))
     args = p.parse_args(sys.argv[1:] if argv is None else argv)
     if args.command == "face":
         return face.run(args)

@@ -77,6 +77,9 @@ class AsyncControlSocket:
                                  "client= and token= (or HABLA_CLIENT and HABLA_TOKEN)" % self.hello.socket})
             await self.send({"op": "auth", "client": client, "token": token})
             answer = await asyncio.wait_for(self._read_frame(), timeout)
+            while answer.get("type") == "sample":   # a daemon may let a sample overtake the hello: keep it
+                self._samples.append(Sample(answer))
+                answer = await asyncio.wait_for(self._read_frame(), timeout)
             if answer.get("type") == "error":
                 raise AuthError(answer)
             self.hello = Hello(answer)

@@ -22,7 +22,8 @@ from .errors import AuthError, LinkLostError, RefusedError, TlsError
 from .framing import FrameReader, encode
 from .hello import Hello, Sample
 
-KEEP_ALIVE_S = 60.0      # keep_alive() pings at most this often (or a third of the hello's idleTimeoutMs)
+KEEP_ALIVE_S = 60.0      # keep_alive() pings at most this often (or a third of the hello's idleTimeoutMs);
+                         # the daemon lets a newcomer push out a client silent for evictableIdleMs (2 min)
 EVENTS_KEPT = 256        # non-sample lines remembered in .events
 SAMPLES_HELD = 256       # samples held while request() waits for its answer (the daemon's default queue)
 RECV_BYTES = 65536
@@ -87,7 +88,13 @@ class ControlSocket:
             raise AuthError({"code": "auth_required", "message": "socket %r requires authentication: give client= "
                              "and token= (or HABLA_CLIENT and HABLA_TOKEN)" % self.hello.socket})
         self.send({"op": "auth", "client": client, "token": token})
-        answer = self.read_frame(timeout)
+        deadline = time.monotonic() + timeout
+        while True:
+            answer = self.read_frame(max(0.0, deadline - time.monotonic()))
+            if answer.get("type") == "sample":   # a daemon may let a sample overtake the hello: keep it for later
+                self._held.append(Sample(answer))
+                continue
+            break
         if answer.get("type") == "error":
             raise AuthError(answer)
         self.hello = Hello(answer)
@@ -217,8 +224,9 @@ class ControlSocket:
         return self.request({"op": "rate", "maxHz": max_hz}, timeout)
 
     def keep_alive(self):
-        """Pings if nothing was sent for a while, so the daemon does not close a client of a quiet socket as
-        idle; sends at most one line per KEEP_ALIVE_S, or per a third of the hello's idle deadline."""
+        """Pings if nothing was sent for a while, so that a client of a quiet socket is not the idle one that gives
+        way to a newcomer on a full socket (limits.evictableIdleMs) nor closed as idle (limits.idleTimeoutMs);
+        sends at most one line per KEEP_ALIVE_S, or per a third of the hello's idle deadline."""
         idle = self.hello.idle_timeout_s
         every = KEEP_ALIVE_S if not idle else min(KEEP_ALIVE_S, idle / 3.0)
         if time.monotonic() - self._last_sent >= every:
