@@ -184,17 +184,20 @@ def test_non_finite_numbers_are_written_as_null(daemon_with):
     assert json.dumps(d.received[0])
 
 
-def test_a_sample_that_overtakes_the_hello_after_authenticating_is_kept_not_taken_for_the_hello(daemon_with):
+def test_lines_that_overtake_the_hello_after_authenticating_are_kept_not_taken_for_the_hello(daemon_with):
     full = dict(HELLO, auth="ok", client="mdb", role="command")
     required = line({"type": "hello", "protocol": "habla-control/1", "socket": "ranges", "auth": "required"})
+    control = line({"type": "control", "holder": None, "why": "x disconnected"})
 
     def answer(req):
-        return sample(5, [1.0]) + line(full) if req.get("op") == "auth" else None
+        return control + sample(5, [1.0]) + line(full) if req.get("op") == "auth" else None
     with connect(daemon_with(required, answer=answer), client="mdb", token="t" * 20) as s:
         assert s.hello.client == "mdb" and s.next_sample(timeout=5).seq == 5
+        assert [e["type"] for e in s.events] == ["control"]
 
     async def run():
         async with await habla.aio.connect("127.0.0.1", daemon_with(required, answer=answer).port, client="mdb",
                                            token="t" * 20) as a:
             assert a.hello.client == "mdb" and (await a.next_sample(5)).seq == 5
+            assert [e["type"] for e in a.events] == ["control"]
     asyncio.run(run())

@@ -77,8 +77,11 @@ class AsyncControlSocket:
                                  "client= and token= (or HABLA_CLIENT and HABLA_TOKEN)" % self.hello.socket})
             await self.send({"op": "auth", "client": client, "token": token})
             answer = await asyncio.wait_for(self._read_frame(), timeout)
-            while answer.get("type") == "sample":   # a daemon may let a sample overtake the hello: keep it
-                self._samples.append(Sample(answer))
+            while answer.get("type") not in ("hello", "error"):   # a sample or notice overtook the hello: keep it
+                if answer.get("type") == "sample":
+                    self._samples.append(Sample(answer))
+                else:
+                    self._take(answer)
                 answer = await asyncio.wait_for(self._read_frame(), timeout)
             if answer.get("type") == "error":
                 raise AuthError(answer)

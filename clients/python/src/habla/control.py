@@ -91,10 +91,13 @@ class ControlSocket:
         deadline = time.monotonic() + timeout
         while True:
             answer = self.read_frame(max(0.0, deadline - time.monotonic()))
-            if answer.get("type") == "sample":   # a daemon may let a sample overtake the hello: keep it for later
+            if answer.get("type") in ("hello", "error"):
+                break
+            # A daemon may let a sample or a notice (a control line) overtake the hello: keep it for later.
+            if answer.get("type") == "sample":
                 self._held.append(Sample(answer))
-                continue
-            break
+            else:
+                self.events.append(answer)
         if answer.get("type") == "error":
             raise AuthError(answer)
         self.hello = Hello(answer)
