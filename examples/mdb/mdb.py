@@ -275,11 +275,16 @@ class WorldModel:
             mine = [e for e in sighted if e.action == action]
             if mine:
                 errors["motion." + action] = population.run(lambda p: self.motion_error(p, mine), generations)
-        judged = self.recency_weighted(memory.judged())
-        if judged:
-            errors["relevance"] = self.relevance.run(lambda p: self.relevance_error(p, judged),
-                                                   generations * self.RELEVANCE_GENERATIONS)
+        errors.update(self.learn_relevance(memory, generations))
         return errors
+
+    def learn_relevance(self, memory, generations):
+        """Evolves the relevance table alone (a few milliseconds); returns its error by part."""
+        judged = self.recency_weighted(memory.judged())
+        if not judged:
+            return {}
+        return {"relevance": self.relevance.run(lambda p: self.relevance_error(p, judged),
+                                                generations * self.RELEVANCE_GENERATIONS)}
 
 
 class SatisfactionModel:
@@ -422,6 +427,13 @@ class Brain:
     def remember(self, experience):
         self.memory.add(experience)
 
+    def learn_judgement(self):
+        """What a judgement teaches at once: the relevance table, so that the next command is obeyed in its light
+        (the world and satisfaction models learn from it while the next action takes effect)."""
+        errors = self.world.learn_relevance(self.memory, self.generations)
+        self.errors.update(errors)
+        return errors
+
     def learn(self, generations=None):
         """One round of evolution of every model on the memory; returns the errors by model."""
         g = self.generations if generations is None else generations
@@ -518,6 +530,10 @@ class Runner:
             return
         after = self._perceive(da, None)
         brain.remember(Experience(before, action, after, reward))
+        if reward is not None:
+            # A judgement is learned from before the next decision, not a step late: learning only while the next
+            # action took effect, the robot told "left" and punished for going forward went forward again.
+            errors.update(brain.learn_judgement())
         self.steps += 1
         self.log({"t": round(self.clock() - start, 3), "wall": round(decided_wall, 3), "step": self.steps, "command": before.command,
                   "distanceM": round(before.distance_m, 4), "angleRad": round(before.angle_rad, 4),
