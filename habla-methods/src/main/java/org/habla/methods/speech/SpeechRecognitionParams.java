@@ -147,6 +147,13 @@ public record SpeechRecognitionParams(
                 hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
+    /** These params with another Moonshine model folder. */
+    public SpeechRecognitionParams withModel(String folder) {
+        return new SpeechRecognitionParams(engine, folder, moonshineMinConfidence, threads, grammar, adaptation, minConfidence,
+                outOfGrammarProbability, garbagePrior, denoise, maxPending, minVoicedMs, openAboveFloorDb, minLevelDb,
+                hangoverMs, endpointMs, endpointAboveFloorDb, queue);
+    }
+
     /** These params with another Moonshine confidence threshold. */
     public SpeechRecognitionParams withMoonshineMinConfidence(double threshold) {
         return new SpeechRecognitionParams(engine, model, threshold, threads, grammar, adaptation, minConfidence,
