@@ -55,6 +55,10 @@ final class MoonshineModel implements AutoCloseable {
             o.setIntraOpNumThreads(threads);
             o.setInterOpNumThreads(1);
             o.setOptimizationLevel(OrtSession.SessionOptions.OptLevel.ALL_OPT);
+            // The decoder turns its 8-bit weights into floats on every run (hundreds of MB): without the arena and
+            // the memory pattern those buffers go back to the system after each utterance instead of staying.
+            o.setCPUArenaAllocator(false);
+            o.setMemoryPatternOptimization(false);
             OrtSession enc = env.createSession(dir.resolve(ENCODER).toString(), o);
             OrtSession dec = env.createSession(dir.resolve(DECODER).toString(), o);
             return new MoonshineModel(enc, dec);
