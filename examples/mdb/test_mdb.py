@@ -375,6 +375,26 @@ class CameraViewTest(unittest.TestCase):
         self.assertLessEqual(flips, 300)
 
 
+class LostTargetTest(unittest.TestCase):
+
+    def test_a_robot_that_has_lost_its_target_tries_other_moves(self):
+        # The ball was last seen 0.74 m ahead; the robot, against a wall it cannot see, goes nowhere, and every
+        # perception is that last sighting, not seen. Deciding on it the robot walked forward for ever; lost, it
+        # tries other moves, turns among them.
+        for seed in range(1, 6):
+            rng = random.Random(seed)
+            brain = mdb.Brain(seed=seed, epsilon=0.0, epsilon_min=0.0)
+            for e in taught(rng, 120, obedience=0.9):
+                brain.remember(e)
+            for _ in range(30):
+                brain.learn()
+            seen = mdb.Perception(0.74, -0.08, True, None)
+            self.assertEqual("forward", brain.decide(seen)[0], "seed %d: the premise" % seed)
+            actions = [brain.decide(seen._replace(seen=False))[0] for _ in range(12)]
+            self.assertNotEqual(["forward"] * 12, actions, "seed %d" % seed)
+            self.assertTrue({"left", "right"} & set(actions), "seed %d: %s" % (seed, actions))
+
+
 class MemoryTest(unittest.TestCase):
 
     def test_a_full_memory_forgets_routine_before_rare_lessons(self):
