@@ -64,7 +64,7 @@ final class BridgeReader {
             if (p.isEmpty()) {
                 errors.add(path.field("type"), "unknown bridge type '" + name + "' (known: "
                         + (registry.bridges().isEmpty() ? "none registered" : String.join(", ", registry.bridges().keySet()))
-                        + ")");
+                        + ")" + EntryReader.pluginsNote(registry));
             }
             return p;
         }).orElse(null);
