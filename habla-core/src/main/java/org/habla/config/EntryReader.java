@@ -172,7 +172,8 @@ final class EntryReader {
         }).orElse(null);
     }
 
-    private Reconnect reconnect(CheckedObject o) {
+    /** An interface's or a bridge's {@code reconnect} object. */
+    Reconnect reconnect(CheckedObject o) {
         o.allowOnly(ConfigLoader.RECONNECT_KEYS);
         Reconnect d = Reconnect.DEFAULTS;
         long initial = o.integer("initialMs", d.initialMs(), 1, ConfigLoader.MAX_MS);
