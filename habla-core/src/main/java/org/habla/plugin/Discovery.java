@@ -19,6 +19,8 @@ final class Discovery {
     private final PluginJars jars;
     private final Map<PluginJar, List<String>> registered = new LinkedHashMap<>();
     private final List<String> failures = new ArrayList<>();
+    /** The jars a provider could not be loaded from: their failure already says why they registered nothing. */
+    private final java.util.Set<PluginJar> failedJars = new java.util.HashSet<>();
 
     /** @param jars the plugin jars of the loader, or null for a loader that is not a plugin loader */
     Discovery(PluginJars jars) {
@@ -82,7 +84,7 @@ final class Discovery {
                 problems.addAll(jar.problems());
                 if (!types.isEmpty()) {
                     loaded.add(jar.name() + ": " + String.join(", ", types));
-                } else if (jar.problems().isEmpty()) {
+                } else if (jar.problems().isEmpty() && !failedJars.contains(jar)) {
                     problems.add(jar.name() + " registers nothing: none of the providers it lists could be loaded");
                 }
             });
@@ -94,13 +96,17 @@ final class Discovery {
 
     private String failure(Class<?> service, Throwable e) {
         String message = e.getMessage() == null ? e.toString() : e.getMessage();
+        if (message.startsWith(service.getName() + ": ")) {
+            message = message.substring(service.getName().length() + 2); // ServiceLoader's prefix: the service
+        }
         String cause = e.getCause() == null ? "" : " (" + e.getCause() + ")";
         if (jars != null) {
             for (PluginJar j : jars.jars()) {
                 for (String cls : j.declared().getOrDefault(service, List.of())) {
                     if (message.contains(cls) || message.contains(cls.replace('.', '/'))) {
-                        return j.name() + ": " + service.getSimpleName() + " " + cls + " cannot be loaded: " + message
-                                + cause;
+                        failedJars.add(j);
+                        return j.name() + ": the provider " + cls + " its META-INF/services/" + service.getName()
+                                + " lists cannot be loaded: " + message + cause;
                     }
                 }
             }

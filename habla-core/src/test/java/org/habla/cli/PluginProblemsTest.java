@@ -85,8 +85,9 @@ class PluginProblemsTest {
     void aServicesFileNamingAClassTheJarLacksSaysWhichClassAndWhichJar() throws Exception {
         Path dir = Files.createDirectory(tmp.resolve("plugins"));
         ExamplePlugin.jarWithServices(tmp, dir.resolve("alarm.jar"), "org.example.habla.ThresholdProvder\n");
-        assertThat(typeError(dir)).contains("alarm.jar: MethodProvider org.example.habla.ThresholdProvder cannot be"
-                + " loaded", "not found");
+        assertThat(typeError(dir)).contains("plugins: alarm.jar: the provider org.example.habla.ThresholdProvder its "
+                + ExamplePlugin.SERVICES + " lists cannot be loaded: Provider org.example.habla.ThresholdProvder not found")
+                .doesNotContain("registers nothing");
     }
 
     @Test
