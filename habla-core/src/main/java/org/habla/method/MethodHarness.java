@@ -1,6 +1,5 @@
 package org.habla.method;
 
-import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -40,12 +39,11 @@ public final class MethodHarness {
     private final Map<String, List<Sample>> emitted = new HashMap<>();
     private final Map<String, ChannelDescriptor> channels = new HashMap<>();
     private final Map<String, ChannelDescriptor> commandChannels = new HashMap<>();
-    private final ArrayDeque<Runnable> pendingBackground = new ArrayDeque<>();
+    private final HarnessBackground background = new HarnessBackground();
     private final List<ControlNotice> notices = new ArrayList<>();
     private final Map<String, Long> sequences = new HashMap<>();
     private long nowMicros = 1_700_000_000_000_000L;
     private long nextTickMicros;
-    private boolean backgroundAtOnce;
     private boolean ready = true;
     private boolean stale;
     private boolean failureExpected;
@@ -105,20 +103,13 @@ public final class MethodHarness {
 
     /** Makes background work run as soon as it is asked for. */
     public MethodHarness runBackgroundAtOnce() {
-        backgroundAtOnce = true;
-        while (!pendingBackground.isEmpty()) {
-            pendingBackground.poll().run();
-        }
+        background.runAtOnceFromNowOn();
         return failedUnlessExpected();
     }
 
     /** Runs the background work asked for so far; returns how many tasks ran. */
     public int runBackground() {
-        int n = 0;
-        while (!pendingBackground.isEmpty()) {
-            pendingBackground.poll().run();
-            n++;
-        }
+        int n = background.runAll();
         failedUnlessExpected();
         return n;
     }
@@ -301,21 +292,7 @@ public final class MethodHarness {
 
         @Override
         public <T> void background(String what, Callable<T> task, Consumer<T> done) {
-            Runnable r = () -> {
-                T result;
-                try {
-                    result = task.call();
-                } catch (Exception e) {
-                    lifecycle.fail(what, e);
-                    return;
-                }
-                lifecycle.runTurn(what + " (done)", () -> done.accept(result));
-            };
-            if (backgroundAtOnce) {
-                r.run();
-            } else {
-                pendingBackground.add(r);
-            }
+            background.submit(lifecycle, what, task, done);
         }
     }
 }
