@@ -14,9 +14,10 @@ import java.time.Duration;
  *   stop:    goodbye() (if up) ──▶ close()
  * </pre>
  *
- * <p>Threading: {@link #open} and {@link #readNext} run on the link's thread, and so do the actions the session
- * hands on from what arrives (a library that calls back on threads of its own hands its messages to that thread
- * through a bounded queue); {@link #close} may come from any thread and must end a {@link #readNext} in progress.
+ * <p>Threading: {@link #open} and {@link #readNext} run on the link's thread; what arrives may be acted on there or
+ * on the client library's own threads (the {@code mqtt} bridge's actions go through the control points' checks,
+ * which any thread may call). {@link #close} may come from any thread and must end a {@link #readNext} in
+ * progress.
  */
 public interface BridgeSession {
 
@@ -28,8 +29,9 @@ public interface BridgeSession {
     void open(Duration timeout) throws IOException;
 
     /**
-     * Blocks for the next message from the other side, or a short while, and acts on it. An {@link IOException} says
-     * the connection is lost.
+     * Blocks while the connection is up (for the next message from the other side, acting on it, or until the
+     * connection is lost); returning is fine, the engine calls again. An {@link IOException} says the connection is
+     * lost.
      */
     void readNext() throws IOException;
 
