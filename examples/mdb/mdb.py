@@ -345,6 +345,7 @@ class Brain:
 
     TRUSTED_AFTER = 8  # experiences of an action after which its world model is fully trusted
     SECOND_STEP = 0.5  # what the second step of a plan counts for: it is predicted from a prediction
+    APPROVED = 0.5  # relevance above which a move counts as one the teacher has rewarded
     LOST_AFTER = 3  # decisions without seeing the target after which, uncommanded, the robot tries moves at random
 
     def __init__(self, seed=0, memory=80, population=16, generations=3, epsilon=0.2, epsilon_decay=0.97,
@@ -410,10 +411,19 @@ class Brain:
         if explored:
             action = self.rng.choice(ACTIONS)
         else:
-            top = max(scores.values())
-            action = self.rng.choice([a for a in ACTIONS if scores[a] >= top - 1e-9])
+            candidates = ACTIONS if perception.command in COMMANDS else self.approved()
+            top = max(scores[a] for a in candidates)
+            action = self.rng.choice([a for a in candidates if scores[a] >= top - 1e-9])
         self.decisions += 1
         return action, explored, scores
+
+    def approved(self):
+        """The moves the robot makes when no command is heard: those the teacher has rewarded after some command
+        (relevance above APPROVED), or every move while it has rewarded none. A move the teacher never asked for is
+        known to the satisfaction model only from the few times exploration or a mistake made it; alone, the Pioneer
+        trusted such a model of `back` and backed away from an object straight ahead."""
+        approved = [a for a in ACTIONS if max(self.world.relevance_of(a, c) for c in COMMANDS) > self.APPROVED]
+        return approved or list(ACTIONS)
 
     def _plan_scores(self, perception):
         trust = {a: self.confidence(a) for a in ACTIONS}

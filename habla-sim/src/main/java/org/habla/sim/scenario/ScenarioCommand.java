@@ -84,7 +84,8 @@ public final class ScenarioCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
         }
-        Path dir = report != null ? report : root.resolve("reports").resolve(robot);
+        // Absolute: the daemon and the control program run in the HABLA folder, not where the command was given.
+        Path dir = (report != null ? report : root.resolve("reports").resolve(robot)).toAbsolutePath();
         ScenarioRunner.Options opts = new ScenarioRunner.Options(sc, episodes != null ? episodes : sc.episodes(), s, seed,
                 dir, portOffset, root);
         List<EpisodeResult> logs;
@@ -120,7 +121,8 @@ public final class ScenarioCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
         }
-        Path dir = report != null ? report : root.resolve("reports").resolve(robot);
+        // Absolute: the daemon and the control program run in the HABLA folder, not where the command was given.
+        Path dir = (report != null ? report : root.resolve("reports").resolve(robot)).toAbsolutePath();
         RoomScenarioRunner runner = new RoomScenarioRunner(new RoomScenarioRunner.Options(sc,
                 episodes != null ? episodes : sc.episodes(), s, seed, dir, portOffset, root), out);
         List<RoomPhase> phases;
