@@ -4,7 +4,7 @@ import java.io.IOException;
 import java.io.PrintWriter;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
-import org.habla.cli.ExitCodes;
+import org.habla.command.ExitCodes;
 import org.habla.config.Limits;
 import org.habla.graph.EngineClock;
 import org.habla.net.WorkerProtocol;
