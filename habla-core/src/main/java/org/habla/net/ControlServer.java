@@ -259,9 +259,9 @@ public final class ControlServer implements AutoCloseable {
         ControlClient[] self = new ControlClient[1];
         ClientId id = new ClientId(point.name() + "#" + n,
                 socket.getInetAddress().getHostAddress() + ":" + socket.getPort());
-        ClientConnection connection = socket.getChannel() != null && !(socket instanceof javax.net.ssl.SSLSocket)
+        ControlConnection connection = socket.getChannel() != null && !(socket instanceof javax.net.ssl.SSLSocket)
                 ? new ChannelConnection(socket.getChannel(), ChannelReadiness.shared())
-                : ClientConnection.of(socket);
+                : ControlConnection.of(socket);
         self[0] = new ControlClient(connection, label, id, protocol, limits, budget, guard, counters, () -> {
             guard.left(self[0]);
             if (clients.remove(self[0])) {

@@ -12,7 +12,7 @@ import java.net.Socket;
  * {@link #tryWrite} when nothing else is queued for that client. A TLS connection is a {@link Socket}'s
  * streams ({@link #of(Socket)}), and {@link #tryWrite} writes nothing.
  */
-interface ClientConnection {
+interface ControlConnection {
 
     /** Reads block until bytes arrive, the peer ends, or the read timeout passes ({@link java.net.SocketTimeoutException}). */
     InputStream in() throws IOException;
@@ -40,8 +40,8 @@ interface ClientConnection {
     void close() throws IOException;
 
     /** A connection over a socket's own streams (TLS): every write may wait. */
-    static ClientConnection of(Socket socket) {
-        return new ClientConnection() {
+    static ControlConnection of(Socket socket) {
+        return new ControlConnection() {
             @Override
             public InputStream in() throws IOException {
                 return socket.getInputStream();
