@@ -34,11 +34,14 @@ import picocli.CommandLine.Option;
 public final class Habla implements Runnable {
 
     /**
-     * The built-in subcommands, in the order help lists them. They are made when a command line is, and only
-     * the one named when a known one is: picocli reads every command's annotations as it adds it, which was a
-     * fifth of a daemon's time to its first open port.
+     * The built-in subcommands. They are made when a command line is, and only the one named when a known one is:
+     * picocli reads every command's annotations as it adds it, which was a fifth of a daemon's time to its first
+     * open port.
      */
     private static final Map<String, Supplier<Object>> BUILT_IN = builtIn();
+    /** The order help lists these commands in, wherever they come from; the other modules' commands follow. */
+    private static final List<String> HELP_ORDER =
+            List.of("run", "replay", "check", "graph", "schema", "plugins", "status", "worker");
 
     private static Map<String, Supplier<Object>> builtIn() {
         Map<String, Supplier<Object>> m = new LinkedHashMap<>();
@@ -100,21 +103,21 @@ public final class Habla implements Runnable {
 
     /** The command line with only subcommand {@code only} when it is a known one, else with all of them. */
     private static CommandLine commandLine(ClassLoader loader, String only) {
-        List<CommandExtension> extensions = new ArrayList<>();
-        ServiceLoader.load(CommandExtension.class, loader).forEach(extensions::add);
-        boolean known = only != null && (BUILT_IN.containsKey(only)
-                || extensions.stream().anyMatch(e -> e.name().equals(only)));
+        Map<String, Supplier<Object>> commands = new LinkedHashMap<>();
+        HELP_ORDER.forEach(name -> commands.put(name, null));
+        commands.putAll(BUILT_IN);
+        for (CommandExtension ext : ServiceLoader.load(CommandExtension.class, loader)) {
+            if (commands.put(ext.name(), ext::command) != null) {
+                throw new IllegalStateException("two commands are named '" + ext.name() + "'");
+            }
+        }
+        boolean known = only != null && commands.get(only) != null;
         CommandLine cli = new CommandLine(new Habla());
-        BUILT_IN.forEach((name, command) -> {
-            if (!known || name.equals(only)) {
+        commands.forEach((name, command) -> {
+            if (command != null && (!known || name.equals(only))) {
                 cli.addSubcommand(name, command.get());
             }
         });
-        for (CommandExtension ext : extensions) {
-            if (!known || ext.name().equals(only)) {
-                cli.addSubcommand(ext.name(), ext.command());
-            }
-        }
         return cli;
     }
 

@@ -62,6 +62,29 @@ class LauncherClassCacheTest {
     }
 
     @Test
+    void aJarNewerThanTheCacheInAnyFolderOfTheClassPathDeletesTheCache(@TempDir Path tmp) throws Exception {
+        Path jdk = fakeJdk(tmp, "25.0.1");
+        Path cds = tmp.resolve("cds");
+        Path lib = Files.createDirectories(tmp.resolve("lib"));
+        Path edge = Files.createDirectories(lib.resolve("edge"));
+        long past = System.currentTimeMillis() - 60_000;
+        for (Path jar : List.of(lib.resolve("a.jar"), edge.resolve("b.jar"))) {
+            Files.writeString(jar, "");
+            Files.setLastModifiedTime(jar, FileTime.fromMillis(past));
+        }
+        String cp = lib + "/*:" + edge + "/*";
+        Path recording = Path.of(classPathOptions(jdk, cds, cp).get(1).substring("-XX:AOTConfiguration=".length()));
+        Files.writeString(recording, "recorded");
+        assertThat(classPathOptions(jdk, cds, cp)).isEmpty();
+        Path cache = awaitCache(cds);
+        assertThat(classPathOptions(jdk, cds, cp).get(0)).isEqualTo("-XX:AOTCache=" + cache);
+
+        Files.setLastModifiedTime(edge.resolve("b.jar"), FileTime.fromMillis(System.currentTimeMillis() + 60_000));
+        assertThat(classPathOptions(jdk, cds, cp).get(0)).isEqualTo("-XX:AOTMode=record");
+        assertThat(cache).doesNotExist();
+    }
+
+    @Test
     void otherJvmOptionsKeepACacheOfTheirOwn(@TempDir Path tmp) throws Exception {
         Path jdk = fakeJdk(tmp, "25.0.1");
         Path cds = tmp.resolve("cds");
@@ -105,16 +128,22 @@ class LauncherClassCacheTest {
         assertThat(launch(jdk, cds, lib)).isEqualTo("hello\n");
     }
 
-    /** The options the launcher's function gives a daemon {@code run}, one per line of its output. */
+    /** The options the launcher's function gives a daemon {@code run} whose jars are in {@code lib}. */
     private static List<String> options(Path jdk, Path cds, Path lib, String... jvmOptions) throws Exception {
-        String out = bash(jdk, "habla_class_cache '" + cds + "' run '" + lib + "' '" + String.join(" ", jvmOptions)
+        return classPathOptions(jdk, cds, lib + "/*", jvmOptions);
+    }
+
+    /** The options the launcher's function gives a daemon {@code run} of class path {@code cp}, one per line. */
+    private static List<String> classPathOptions(Path jdk, Path cds, String cp, String... jvmOptions)
+            throws Exception {
+        String out = bash(jdk, "habla_class_cache '" + cds + "' run '" + cp + "' '" + String.join(" ", jvmOptions)
                 + "'; printf '%s\\n' ${habla_cache_opts[@]+\"${habla_cache_opts[@]}\"}");
         return out.isEmpty() ? List.of() : List.of(out.split("\n"));
     }
 
     /** Runs the hello jar as the launcher runs a daemon; its standard output and error together. */
     private static String launch(Path jdk, Path cds, Path lib) throws Exception {
-        return bash(jdk, "habla_class_cache '" + cds + "' run '" + lib + "' ''; exec \"$JAVA_HOME/bin/java\" "
+        return bash(jdk, "habla_class_cache '" + cds + "' run '" + lib + "/*' ''; exec \"$JAVA_HOME/bin/java\" "
                 + "${habla_cache_opts[@]+\"${habla_cache_opts[@]}\"} -cp '" + lib + "/*' Hello");
     }
 
