@@ -88,7 +88,7 @@ final class ConfigReport {
     }
 
     /** How a socket is guarded, where the config says anything about it: " (authenticated, TLS)", " (open)". */
-    private static String guard(HablaConfig cfg, org.habla.config.Expose x) {
+    private static String guard(HablaConfig cfg, org.habla.net.Expose x) {
         if (cfg.security().credentials() == null && !x.tls()) {
             return "";
         }

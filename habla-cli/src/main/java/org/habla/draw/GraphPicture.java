@@ -6,7 +6,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import org.habla.config.ChannelRef;
-import org.habla.config.Expose;
+import org.habla.net.Expose;
 import org.habla.config.HablaConfig;
 import org.habla.config.InterfaceConfig;
 import org.habla.config.MethodConfig;

@@ -8,7 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import org.habla.command.ExitCodes;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.config.TestPlugins;
 import org.habla.graph.EngineClock;
 import org.habla.plugin.PluginRegistry;

@@ -15,7 +15,7 @@ class StatusCommandTest {
         var credentials = org.habla.security.Credentials.of(java.util.Map.of("monitor", java.util.Map.entry(
                 "monitor-token-0123456789", java.util.Map.of("@status", org.habla.security.Role.READ))), null);
         try (var server = new org.habla.status.StatusServer(new org.habla.config.StatusConfig("127.0.0.1", 7099),
-                org.habla.config.Limits.DEFAULTS, () -> new ObjectMapper().createObjectNode().put("system", "guarded"),
+                org.habla.net.Limits.DEFAULTS, () -> new ObjectMapper().createObjectNode().put("system", "guarded"),
                 org.habla.security.PortAccess.authenticated("@status", credentials))) {
             server.startOnAnyPort();
             String port = "" + server.port();
@@ -73,7 +73,7 @@ class StatusCommandTest {
                  "status": {"port": %d, "tls": true}}
                 """.formatted(port));
         try (var server = new org.habla.status.StatusServer(new org.habla.config.StatusConfig("127.0.0.1", port),
-                org.habla.config.Limits.DEFAULTS, () -> new ObjectMapper().createObjectNode().put("system", "lab"),
+                org.habla.net.Limits.DEFAULTS, () -> new ObjectMapper().createObjectNode().put("system", "lab"),
                 org.habla.security.PortAccess.open("@status"), org.habla.security.Tls.server(cert, key))) {
             server.start();
             CommandRun run = CommandRun.of(new StatusCommand(), config.toString(), "--json");
@@ -90,7 +90,7 @@ class StatusCommandTest {
         var credentials = org.habla.security.Credentials.of(java.util.Map.of("mdb", java.util.Map.entry(token,
                 java.util.Map.of("@status", org.habla.security.Role.READ))), null);
         try (var status = new org.habla.status.StatusServer(new org.habla.config.StatusConfig("127.0.0.1", 7099),
-                org.habla.config.Limits.DEFAULTS, () -> new ObjectMapper().createObjectNode().put("system", "over-tls"),
+                org.habla.net.Limits.DEFAULTS, () -> new ObjectMapper().createObjectNode().put("system", "over-tls"),
                 org.habla.security.PortAccess.authenticated("@status", credentials),
                 org.habla.security.Tls.server(lab.certificate(), lab.key()))) {
             status.startOnAnyPort();

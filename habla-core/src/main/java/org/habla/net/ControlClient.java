@@ -9,7 +9,6 @@ import java.net.SocketTimeoutException;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.atomic.AtomicBoolean;
-import org.habla.config.Limits;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 

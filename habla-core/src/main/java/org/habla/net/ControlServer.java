@@ -9,8 +9,6 @@ import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
-import org.habla.config.Expose;
-import org.habla.config.Limits;
 import org.habla.security.PortSecurity;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;

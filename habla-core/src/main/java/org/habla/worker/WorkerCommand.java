@@ -5,7 +5,7 @@ import java.io.PrintWriter;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
 import org.habla.command.ExitCodes;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.graph.EngineClock;
 import org.habla.net.WorkerProtocol;
 import org.habla.plugin.PluginRegistry;

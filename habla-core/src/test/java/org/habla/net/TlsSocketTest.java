@@ -11,8 +11,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
-import org.habla.config.Expose;
-import org.habla.config.Limits;
 import org.habla.security.AuditLog;
 import org.habla.security.Credentials;
 import org.habla.security.PortAccess;

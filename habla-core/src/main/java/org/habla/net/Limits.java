@@ -1,4 +1,4 @@
-package org.habla.config;
+package org.habla.net;
 
 /**
  * The limits every socket the daemon serves enforces; each is named in the error a client gets when it

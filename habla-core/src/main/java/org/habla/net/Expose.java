@@ -1,4 +1,4 @@
-package org.habla.config;
+package org.habla.net;
 
 /**
  * A method's control socket.
