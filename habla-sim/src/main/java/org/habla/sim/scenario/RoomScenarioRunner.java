@@ -1,3 +1,4 @@
+// Over 300 lines, on purpose: one scenario run, from the broker's start to the report, reads as a sequence.
 package org.habla.sim.scenario;
 
 import com.fasterxml.jackson.databind.JsonNode;
