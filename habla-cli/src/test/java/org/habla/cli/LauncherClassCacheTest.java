@@ -40,45 +40,27 @@ class LauncherClassCacheTest {
         Path jdk = fakeJdk(tmp, "25.0.1");
         Path cds = tmp.resolve("cds");
         Path lib = Files.createDirectories(tmp.resolve("lib"));
-        Files.writeString(lib.resolve("a.jar"), "");
-        Files.setLastModifiedTime(lib.resolve("a.jar"), FileTime.fromMillis(System.currentTimeMillis() - 60_000));
+        Path edge = Files.createDirectories(lib.resolve("edge"));
+        for (Path jar : List.of(lib.resolve("a.jar"), edge.resolve("b.jar"))) {
+            Files.writeString(jar, "");
+            Files.setLastModifiedTime(jar, FileTime.fromMillis(System.currentTimeMillis() - 60_000));
+        }
+        String cp = lib + "/*:" + edge + "/*";
 
-        List<String> first = options(jdk, cds, lib);
+        List<String> first = classPathOptions(jdk, cds, cp);
         assertThat(first.get(0)).isEqualTo("-XX:AOTMode=record");
         Path recording = Path.of(first.get(1).substring("-XX:AOTConfiguration=".length()));
         assertThat(recording.getFileName().toString()).matches("run-\\d+\\.\\d+\\.aotconf");
         // The recording daemon has stopped (its PID is that of the shell, gone): the next launch makes the cache.
         Files.writeString(recording, "recorded");
 
-        assertThat(options(jdk, cds, lib)).isEmpty();
-        Path cache = awaitCache(cds);
-        assertThat(Files.readString(cache)).isEqualTo("made from recorded");
-        assertThat(options(jdk, cds, lib)).containsExactly("-XX:AOTCache=" + cache, "-Xlog:aot*=off", "-Xlog:cds*=off");
-
-        // A jar newer than the cache: the cache is deleted and a daemon records again.
-        Files.setLastModifiedTime(lib.resolve("a.jar"), FileTime.fromMillis(System.currentTimeMillis() + 60_000));
-        assertThat(options(jdk, cds, lib).get(0)).isEqualTo("-XX:AOTMode=record");
-        assertThat(cache).doesNotExist();
-    }
-
-    @Test
-    void aJarNewerThanTheCacheInAnyFolderOfTheClassPathDeletesTheCache(@TempDir Path tmp) throws Exception {
-        Path jdk = fakeJdk(tmp, "25.0.1");
-        Path cds = tmp.resolve("cds");
-        Path lib = Files.createDirectories(tmp.resolve("lib"));
-        Path edge = Files.createDirectories(lib.resolve("edge"));
-        long past = System.currentTimeMillis() - 60_000;
-        for (Path jar : List.of(lib.resolve("a.jar"), edge.resolve("b.jar"))) {
-            Files.writeString(jar, "");
-            Files.setLastModifiedTime(jar, FileTime.fromMillis(past));
-        }
-        String cp = lib + "/*:" + edge + "/*";
-        Path recording = Path.of(classPathOptions(jdk, cds, cp).get(1).substring("-XX:AOTConfiguration=".length()));
-        Files.writeString(recording, "recorded");
         assertThat(classPathOptions(jdk, cds, cp)).isEmpty();
         Path cache = awaitCache(cds);
-        assertThat(classPathOptions(jdk, cds, cp).get(0)).isEqualTo("-XX:AOTCache=" + cache);
+        assertThat(Files.readString(cache)).isEqualTo("made from recorded");
+        assertThat(classPathOptions(jdk, cds, cp))
+                .containsExactly("-XX:AOTCache=" + cache, "-Xlog:aot*=off", "-Xlog:cds*=off");
 
+        // A jar newer than the cache, in any folder of the class path: the cache is deleted and a daemon records again.
         Files.setLastModifiedTime(edge.resolve("b.jar"), FileTime.fromMillis(System.currentTimeMillis() + 60_000));
         assertThat(classPathOptions(jdk, cds, cp).get(0)).isEqualTo("-XX:AOTMode=record");
         assertThat(cache).doesNotExist();
