@@ -292,7 +292,12 @@ class SatisfactionModel:
     what remains useful once the teacher has gone."""
 
     DIM = 4
-    DECAY = 0.001
+    # Fitted through a clip to [-1, 1], the model is free above +1 and below -1: without a real decay its weights
+    # drift to any size that keeps the rewarded steps above +1, and the unclipped values a plan is ranked by say
+    # more of that drift than of the rewards (the Pioneer, alone, backed away from the object because a bearing
+    # that grew as it closed in cost more than the distance gained). The decay keeps the smallest weights that
+    # explain the rewards.
+    DECAY = 0.05
 
     def __init__(self, rng, distance_scale_m=0.2, angle_scale_rad=0.5, population=16):
         self.ds, self.as_ = distance_scale_m, angle_scale_rad
@@ -334,6 +339,7 @@ class Brain:
     """Memory, models and action selection; the part of the architecture that knows no sockets."""
 
     TRUSTED_AFTER = 8  # experiences of an action after which its world model is fully trusted
+    SECOND_STEP = 0.5  # what the second step of a plan counts for: it is predicted from a prediction
 
     def __init__(self, seed=0, memory=80, population=16, generations=3, epsilon=0.2, epsilon_decay=0.97,
                  epsilon_min=0.02, distance_scale_m=0.2, angle_scale_rad=0.5, horizon=2):
@@ -370,18 +376,19 @@ class Brain:
         """Chooses an action; returns (action, explored, scores by action).
 
         With a command, an action's score is the relevance the world model predicts for it. Without one,
-        the induced satisfaction model scores where a short plan leads: for `horizon` 2, every action
-        followed by the best next action, the first action scored by its best plan. One step alone rewards
-        moves that only seem to gain — near the object, a turn that flips a sonar's bearing from one side
-        to the other looks like facing it better, and the turn back looks the same; over two steps a turn
-        and its undoing lead back to where they started, while closing in and then turning leads closer.
+        the induced satisfaction model scores a short plan step by step: for `horizon` 2, every action
+        followed by every action, a plan worth the satisfaction of its first step plus SECOND_STEP times
+        that of its second, each first action scored by its best plan. One step alone rewards moves that
+        only seem to gain — near the object, a turn that flips a sonar's bearing from one side to the other
+        looks like facing it better, and the turn back looks the same; over two steps a turn and its undoing
+        pay for the worse bearing they pass through, while closing in twice gains twice.
 
         A plan is only as good as the experience behind it: its satisfaction is pulled towards that of
         staying where the robot is — what an unknown move is worth, neither gain nor loss — in proportion
         to how little the world models of its actions have seen (the least `confidence` of them), so a
         rarely tried action is not taken on a badly trained model's word, yet is not ruled out either when
-        everything known makes matters worse. The
-        relevance table needs no such care: its untried entries sit at 0, below rewarded ones."""
+        everything known makes matters worse. The relevance table needs no such care: its untried entries
+        sit at 0, below rewarded ones."""
         self.predictions = {a: self.world.predict(perception, a) for a in ACTIONS}
         if perception.command in COMMANDS:
             scores = {a: self.score(perception, a) for a in ACTIONS}
@@ -406,9 +413,10 @@ class Brain:
                 plans[first] = [(now, trust[first])]
                 continue
             middle = Perception(p.distance_m, p.angle_rad, True, None)
-            plans[first] = [(now + induced(middle, e.distance_m, e.angle_rad), min(trust[first], trust[a]))
+            plans[first] = [(now + self.SECOND_STEP * induced(middle, e.distance_m, e.angle_rad), min(trust[first], trust[a]))
                             for a, e in ((a, self.world.predict(middle, a)) for a in ACTIONS)]
-        stay = min(self.horizon, 2) * self.satisfaction.induced_of(perception, perception.distance_m, perception.angle_rad)
+        stay = (1 + (self.SECOND_STEP if self.horizon >= 2 else 0)) * induced(perception, perception.distance_m,
+                                                                            perception.angle_rad)
         return {a: max(stay + c * (v - stay) for v, c in ends) for a, ends in plans.items()}
 
     def remember(self, experience):
