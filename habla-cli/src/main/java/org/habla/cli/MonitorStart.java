@@ -6,6 +6,7 @@ import java.util.Optional;
 import org.habla.config.ConfigError;
 import org.habla.config.HablaConfig;
 import org.habla.config.StatusConfig;
+import org.habla.daemon.Daemon;
 import org.habla.daemon.DaemonExtension;
 import org.habla.daemon.LiveGraph;
 import org.habla.daemon.PortsUnavailableException;
@@ -34,7 +35,7 @@ public final class MonitorStart implements DaemonExtension {
         } catch (IOException e) {
             throw new PortsUnavailableException(List.of(new ConfigError("$.status.monitorPort", e.getMessage())));
         }
-        return Optional.of(new Running("monitor", monitor.port(),
+        return Optional.of(new Running(Daemon.MONITOR, monitor.port(),
                 "monitor on http://" + status.monitorBind() + ":" + monitor.port() + "/", monitor));
     }
 }

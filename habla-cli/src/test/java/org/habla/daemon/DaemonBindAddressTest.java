@@ -39,7 +39,7 @@ public class DaemonBindAddressTest {
         Assumptions.assumeTrue(DaemonProcess.ipv6Loopback(), "this computer has no IPv6 loopback");
         int[] ports = DaemonProcess.freePorts(3);
         try (Daemon d = daemon("0.0.0.0", ports)) {
-            for (int port : new int[] {d.statusPort(), d.extensionPort("monitor"), d.port("cmd")}) {
+            for (int port : new int[] {d.statusPort(), d.extensionPort(Daemon.MONITOR), d.port("cmd")}) {
                 assertThat(connects("127.0.0.1", port)).as("127.0.0.1:%d", port).isTrue();
                 assertThat(connects("::1", port)).as("[::1]:%d", port).isFalse();
             }
@@ -56,7 +56,7 @@ public class DaemonBindAddressTest {
         Assumptions.assumeTrue(DaemonProcess.ipv6Loopback(), "this computer has no IPv6 loopback");
         int[] ports = DaemonProcess.freePorts(3);
         try (Daemon d = daemon("::", ports)) {
-            for (int port : new int[] {d.statusPort(), d.extensionPort("monitor"), d.port("cmd")}) {
+            for (int port : new int[] {d.statusPort(), d.extensionPort(Daemon.MONITOR), d.port("cmd")}) {
                 assertThat(connects("::1", port)).as("[::1]:%d", port).isTrue();
                 assertThat(connects("127.0.0.1", port)).as("127.0.0.1:%d", port).isTrue();
             }

@@ -40,6 +40,8 @@ public final class Daemon implements AutoCloseable {
     private static final Logger LOG = LoggerFactory.getLogger(Daemon.class);
     /** How long a worker may take to say what it runs when the daemon starts. */
     private static final int WORKER_CHECK_MILLIS = 2_000;
+    /** The name the live monitor runs under beside a daemon ({@link DaemonExtension.Running#name}). */
+    public static final String MONITOR = "monitor";
 
     private final HablaConfig config;
     private final MethodGraph graph;
@@ -150,6 +152,10 @@ public final class Daemon implements AutoCloseable {
             for (DaemonExtension extension : ServiceLoader.load(DaemonExtension.class,
                     Thread.currentThread().getContextClassLoader())) {
                 extension.start(config, registry, view).ifPresent(d.extensions::add);
+            }
+            if (config.status().monitorPort() > 0 && d.extensionPort(MONITOR) == 0) {
+                LOG.warn("status.monitorPort is {}, but no monitor is on this class path (habla-monitor): none runs",
+                        config.status().monitorPort());
             }
             for (ControlServer server : d.servers.values()) {
                 server.start();
