@@ -9,7 +9,7 @@ import org.habla.driver.Driver;
 import org.habla.driver.Liveness;
 
 /** A robot reached through HABLA's interface protocol: the configured channels over one connection. */
-final class InterfaceDriver implements Driver {
+final class InterfaceProtocolDriver implements Driver {
 
     /** The shortest silence that means an interface program is gone. */
     static final Duration MIN_SILENCE = Duration.ofSeconds(3);
@@ -18,7 +18,7 @@ final class InterfaceDriver implements Driver {
     private final List<ChannelDescriptor> channels;
     private final Duration keepAlive;
 
-    InterfaceDriver(int port, InterfaceParams params) {
+    InterfaceProtocolDriver(int port, InterfaceParams params) {
         this.port = port;
         this.channels = params.descriptors();
         this.keepAlive = Duration.ofMillis(params.keepAliveMs());

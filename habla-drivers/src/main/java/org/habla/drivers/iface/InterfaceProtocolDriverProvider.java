@@ -5,7 +5,7 @@ import org.habla.driver.InterfaceAddress;
 import org.habla.plugin.DriverProvider;
 
 /** Makes drivers of type {@code habla}: HABLA's own interface protocol. */
-public final class InterfaceDriverProvider implements DriverProvider<InterfaceParams> {
+public final class InterfaceProtocolDriverProvider implements DriverProvider<InterfaceParams> {
 
     /** The port an interface program listens on when the address names none. */
     public static final int DEFAULT_PORT = 7600;
@@ -28,6 +28,6 @@ public final class InterfaceDriverProvider implements DriverProvider<InterfacePa
 
     @Override
     public Driver create(InterfaceAddress address, InterfaceParams params) {
-        return new InterfaceDriver(address.portOr(DEFAULT_PORT), params);
+        return new InterfaceProtocolDriver(address.portOr(DEFAULT_PORT), params);
     }
 }
