@@ -11,6 +11,20 @@ import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code speech-recognition} method: grammar, speaker, rejection, backlog and endpointing. */
 public record SpeechRecognitionParams(
+        @Param(value = "The recogniser: sphinx4 (Sphinx-4's US English model, in the JAR) or moonshine (Moonshine base-en "
+                + "on ONNX Runtime, fetched by ./habla models fetch); both are held to the grammar",
+                defaultValue = "\"sphinx4\"")
+        String engine,
+        @Param(value = "Folder of the Moonshine model; empty: the cache folder ./habla models fetch fills "
+                + "($HABLA_MODELS/moonshine-base-en, default ~/.cache/habla/models/moonshine-base-en)",
+                defaultValue = "\"\"")
+        String model,
+        @Param(value = "Moonshine: the lowest confidence a phrase is said with (e^-mean shortfall of its tokens from "
+                + "the model's own choice at each step); below it the utterance gives nothing; 0.2 silenced 90 % of speech outside the grammar on the tune voices",
+                defaultValue = "0.2")
+        Double moonshineMinConfidence,
+        @Param(value = "Moonshine: threads ONNX Runtime uses for one utterance", defaultValue = "1")
+        Integer threads,
         @Param(value = "Path of a JSGF grammar file (.gram) of the phrases to recognise; empty: the bundled "
                 + "commands.gram (go forward, turn left, turn right, go back, stop, good dog, bad dog, well done, no)",
                 defaultValue = "\"\"", file = true)
@@ -57,7 +71,21 @@ public record SpeechRecognitionParams(
         @Param(value = "Queue length of the audio and segments inputs, in chunks", defaultValue = "256")
         Integer queue) {
 
+    /** The engines a config may name. */
+    static final java.util.List<String> ENGINES = java.util.List.of("sphinx4", "moonshine");
+
     public SpeechRecognitionParams {
+        engine = ParamDefaults.or(SpeechRecognitionParams.class, "engine", engine).trim();
+        if (!ENGINES.contains(engine)) {
+            throw new IllegalArgumentException("engine must be one of " + ENGINES + ", was '" + engine + "'");
+        }
+        model = ParamDefaults.or(SpeechRecognitionParams.class, "model", model).trim();
+        moonshineMinConfidence = ParamRules.within(SpeechRecognitionParams.class, "moonshineMinConfidence",
+                moonshineMinConfidence, 0, 1);
+        threads = ParamRules.within(SpeechRecognitionParams.class, "threads", threads, 1, 16);
+        if (engine.equals("moonshine") && !MoonshineFiles.missing(modelFolder(model)).isEmpty()) {
+            throw new IllegalArgumentException(MoonshineFiles.missing(modelFolder(model)));
+        }
         grammar = ParamDefaults.or(SpeechRecognitionParams.class, "grammar", grammar).trim();
         if (!grammar.isEmpty() && !grammar.endsWith(".gram")) {
             throw new IllegalArgumentException("grammar must name a JSGF file ending in .gram, was '" + grammar + "'");
@@ -79,37 +107,69 @@ public record SpeechRecognitionParams(
 
     /** Every parameter at its default. */
     public static SpeechRecognitionParams defaults() {
-        return new SpeechRecognitionParams(null, null, null, null, null, null, null, null, null, null, null, null, null, null);
+        return new SpeechRecognitionParams(null, null, null, null, null, null, null, null, null, null, null, null, null, null,
+                null, null, null, null);
     }
 
     /** These params with another grammar file. */
     public SpeechRecognitionParams withGrammar(String file) {
-        return new SpeechRecognitionParams(file, adaptation, minConfidence, outOfGrammarProbability, garbagePrior, denoise,
+        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, threads, file, adaptation, minConfidence, outOfGrammarProbability, garbagePrior, denoise,
                 maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with a speaker's adaptation file. */
     public SpeechRecognitionParams withAdaptation(String file) {
-        return new SpeechRecognitionParams(grammar, file, minConfidence, outOfGrammarProbability, garbagePrior, denoise,
+        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, threads, grammar, file, minConfidence, outOfGrammarProbability, garbagePrior, denoise,
                 maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with another confidence threshold. */
     public SpeechRecognitionParams withMinConfidence(double threshold) {
-        return new SpeechRecognitionParams(grammar, adaptation, threshold, outOfGrammarProbability, garbagePrior, denoise,
+        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, threads, grammar, adaptation, threshold, outOfGrammarProbability, garbagePrior, denoise,
                 maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with another backlog. */
     public SpeechRecognitionParams withMaxPending(int n) {
-        return new SpeechRecognitionParams(grammar, adaptation, minConfidence, outOfGrammarProbability, garbagePrior, denoise, n,
+        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, threads, grammar, adaptation, minConfidence, outOfGrammarProbability, garbagePrior, denoise, n,
                 minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with another early endpoint (at hangoverMs or above: none). */
     public SpeechRecognitionParams withEndpointMs(double ms) {
-        return new SpeechRecognitionParams(grammar, adaptation, minConfidence, outOfGrammarProbability, garbagePrior, denoise,
+        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, threads, grammar, adaptation, minConfidence, outOfGrammarProbability, garbagePrior, denoise,
                 maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, ms, endpointAboveFloorDb, queue);
+    }
+
+    /** These params with another engine. */
+    public SpeechRecognitionParams withEngine(String name) {
+        return new SpeechRecognitionParams(name, model, moonshineMinConfidence, threads, grammar, adaptation, minConfidence,
+                outOfGrammarProbability, garbagePrior, denoise, maxPending, minVoicedMs, openAboveFloorDb, minLevelDb,
+                hangoverMs, endpointMs, endpointAboveFloorDb, queue);
+    }
+
+    /** These params with another Moonshine model folder. */
+    public SpeechRecognitionParams withModel(String folder) {
+        return new SpeechRecognitionParams(engine, folder, moonshineMinConfidence, threads, grammar, adaptation, minConfidence,
+                outOfGrammarProbability, garbagePrior, denoise, maxPending, minVoicedMs, openAboveFloorDb, minLevelDb,
+                hangoverMs, endpointMs, endpointAboveFloorDb, queue);
+    }
+
+    /** These params with another Moonshine confidence threshold. */
+    public SpeechRecognitionParams withMoonshineMinConfidence(double threshold) {
+        return new SpeechRecognitionParams(engine, model, threshold, threads, grammar, adaptation, minConfidence,
+                outOfGrammarProbability, garbagePrior, denoise, maxPending, minVoicedMs, openAboveFloorDb, minLevelDb,
+                hangoverMs, endpointMs, endpointAboveFloorDb, queue);
+    }
+
+    /** The Moonshine model's folder: {@code model}, or the cache folder when it is empty. */
+    static Path modelFolder(String model) {
+        return model.isEmpty() ? MoonshineFiles.defaultFolder() : Path.of(model);
+    }
+
+    /** The threshold of this engine's confidence. */
+    double engineMinConfidence() {
+        return engine.equals("moonshine") ? moonshineMinConfidence : minConfidence;
     }
 
     /** The adaptation file, if one is named. */
