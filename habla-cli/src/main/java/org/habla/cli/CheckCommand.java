@@ -43,15 +43,21 @@ public final class CheckCommand implements Callable<Integer> {
     public Integer call() {
         PluginRegistry r = registry != null ? registry : PluginRegistry.discover(Thread.currentThread().getContextClassLoader());
         HablaConfig cfg;
+        PrintWriter err = spec.commandLine().getErr();
         try {
             cfg = new ConfigLoader(r).load(config);
         } catch (ConfigException e) {
-            ConfigReport.errors(spec.commandLine().getErr(), config, e.errors(), "");
+            ConfigReport.errors(err, config, e.errors(), "");
+            if (e.errors().stream().noneMatch(x -> x.message().contains("plugins: "))) {
+                ConfigReport.pluginProblems(err, r.report());
+            }
             return ExitCodes.USAGE_OR_CONFIG;
         }
         PrintWriter out = spec.commandLine().getOut();
         out.println(ConfigReport.summary(config, cfg));
+        r.report().loaded().forEach(line -> out.println("plugin " + line));
         out.flush();
+        ConfigReport.pluginProblems(err, r.report());
         return ExitCodes.OK;
     }
 }

@@ -39,6 +39,12 @@ final class ConfigReport {
         err.flush();
     }
 
+    /** One warning line per plugin that could not be loaded or registered nothing. */
+    static void pluginProblems(PrintWriter err, org.habla.plugin.PluginReport report) {
+        report.problems().forEach(p -> err.println("warning: plugin problem: " + p));
+        err.flush();
+    }
+
     /** One error as printed: its JSON path, a colon, the sentence. */
     static String line(ConfigError e) {
         return e.path() + ": " + e.message();

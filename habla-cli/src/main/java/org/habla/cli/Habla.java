@@ -3,22 +3,16 @@ package org.habla.cli;
 import ch.qos.logback.classic.Level;
 import ch.qos.logback.classic.Logger;
 import java.io.File;
-import java.io.IOException;
-import java.net.MalformedURLException;
-import java.net.URL;
-import java.net.URLClassLoader;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.ServiceLoader;
 import java.util.function.Supplier;
-import java.util.stream.Stream;
 import org.habla.command.CommandExtension;
 import org.habla.command.ExitCodes;
 import org.habla.config.ConfigLoader;
+import org.habla.plugin.PluginJars;
 import org.slf4j.LoggerFactory;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -65,7 +59,7 @@ public final class Habla implements Runnable {
     }
 
     @Option(names = "--plugins", scope = CommandLine.ScopeType.INHERIT, paramLabel = "DIR",
-            description = "A folder of plugin jars (method and driver types) to load; default ./plugins if present.")
+            description = "A folder of plugin jars (method, driver and bridge types), or one jar, to load; default ./plugins if present.")
     File plugins;
 
     @Override
@@ -133,34 +127,17 @@ public final class Habla implements Runnable {
         return null;
     }
 
-    /** A class loader over the plugin jars named by --plugins (or ./plugins), else the application's. */
+    /** A class loader over the plugin jars named by --plugins (a folder or one jar), else in ./plugins. */
     private static ClassLoader pluginLoader(String[] args) {
-        Path dir = null;
+        Path named = null;
         for (int i = 0; i < args.length; i++) {
             if (args[i].equals("--plugins") && i + 1 < args.length) {
-                dir = Path.of(args[i + 1]);
+                named = Path.of(args[i + 1]);
             } else if (args[i].startsWith("--plugins=")) {
-                dir = Path.of(args[i].substring("--plugins=".length()));
+                named = Path.of(args[i].substring("--plugins=".length()));
             }
         }
-        if (dir == null && Files.isDirectory(Path.of("plugins"))) {
-            dir = Path.of("plugins");
-        }
-        ClassLoader parent = Habla.class.getClassLoader();
-        if (dir == null || !Files.isDirectory(dir)) {
-            return parent;
-        }
-        List<URL> jars = new ArrayList<>();
-        try (Stream<Path> files = Files.list(dir)) {
-            for (Path p : files.filter(f -> f.toString().endsWith(".jar")).sorted().toList()) {
-                jars.add(p.toUri().toURL());
-            }
-        } catch (MalformedURLException e) {
-            throw new IllegalStateException(e);
-        } catch (IOException e) {
-            System.err.println("habla: cannot read the plugins folder " + dir + ": " + e.getMessage());
-        }
-        return new URLClassLoader(jars.toArray(URL[]::new), parent);
+        return PluginJars.open(named, Habla.class.getClassLoader()).loader();
     }
 
     /** The version from the jar's manifest, or "development". */

@@ -68,7 +68,13 @@ public final class PluginsCommand implements Callable<Integer> {
             out.println("  " + e.getKey() + "  " + e.getValue().description());
             printParams(out, e.getValue().paramsType());
         }
+        if (!r.report().source().isEmpty()) {
+            out.println();
+            out.println("Plugins: " + r.report().source());
+            r.report().loaded().forEach(line -> out.println("  " + line));
+        }
         out.flush();
+        ConfigReport.pluginProblems(spec.commandLine().getErr(), r.report());
         return ExitCodes.OK;
     }
 

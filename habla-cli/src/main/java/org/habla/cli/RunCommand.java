@@ -69,6 +69,7 @@ public final class RunCommand implements Callable<Integer> {
         PrintWriter err = spec.commandLine().getErr();
         PluginRegistry registry = plugins != null ? plugins
                 : PluginRegistry.discover(Thread.currentThread().getContextClassLoader());
+        registry.report().logTo(org.slf4j.LoggerFactory.getLogger(RunCommand.class));
         HablaConfig cfg;
         try {
             cfg = new ConfigLoader(registry).load(config);

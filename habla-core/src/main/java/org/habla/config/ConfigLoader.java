@@ -43,7 +43,7 @@ public final class ConfigLoader {
     static final Set<String> METHOD_KEYS =
             Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host", "fallback", "feedback");
     static final Set<String> EXPOSE_KEYS = Set.of("port", "name", "bind", "tls");
-    static final Set<String> BRIDGE_KEYS = Set.of("id", "type", "address", "params");
+    static final Set<String> BRIDGE_KEYS = Set.of("id", "type", "address", "params", "reconnect");
 
     /** The keys of each fixed object of the format, by where it sits ({@code []} stands for any element). */
     static final Map<String, Set<String>> KEYS_BY_OBJECT = Map.ofEntries(
@@ -56,6 +56,7 @@ public final class ConfigLoader {
             Map.entry("$.methods[]", METHOD_KEYS),
             Map.entry("$.methods[].expose", EXPOSE_KEYS),
             Map.entry("$.bridges[]", BRIDGE_KEYS),
+            Map.entry("$.bridges[].reconnect", RECONNECT_KEYS),
             Map.entry("$.security", SecurityReader.SECURITY_KEYS),
             Map.entry("$.security.tls", SecurityReader.TLS_KEYS));
 

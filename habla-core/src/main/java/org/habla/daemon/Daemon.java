@@ -11,6 +11,7 @@ import java.util.ServiceLoader;
 import java.util.function.Consumer;
 import java.util.stream.Collectors;
 import org.habla.bridge.Bridge;
+import org.habla.graph.BridgeLink;
 import org.habla.config.BridgeConfig;
 import org.habla.config.ConfigError;
 import org.habla.config.HablaConfig;
@@ -49,7 +50,7 @@ public final class Daemon implements AutoCloseable {
     private final Map<String, ControlServer> servers = new LinkedHashMap<>();
     /** Memory for blocks clients are sending, on every control socket together. */
     private final BlockBudget blockBudget;
-    private final Map<String, Bridge> bridges = new LinkedHashMap<>();
+    private final Map<String, BridgeLink> bridges = new LinkedHashMap<>();
     private StatusServer statusServer;
     private PortGuards guards;
     private final List<DaemonExtension.Running> extensions = new ArrayList<>();
@@ -166,9 +167,11 @@ public final class Daemon implements AutoCloseable {
             if (withBridges) {
                 for (BridgeConfig bc : config.bridges()) {
                     Bridge bridge = Bridges.create(registry, bc);
-                    d.bridges.put(bc.id(), bridge);
                     bridge.start(config.system(), d.graph.controlPoints(),
                             Bridges.role(registry, bc).auditedIn(d.guards.audit()));
+                    BridgeLink link = new BridgeLink(bc.id(), bridge, bc.reconnect());
+                    d.bridges.put(bc.id(), link);
+                    link.start();
                 }
             }
             d.graph.start();
@@ -275,7 +278,7 @@ public final class Daemon implements AutoCloseable {
         closed = true;
         LOG.info("HABLA daemon '{}' stopping: actuators first", config.system());
         graph.stopActuators("the daemon is shutting down");
-        bridges.values().forEach(Bridge::close);
+        bridges.values().forEach(BridgeLink::stop);
         servers.values().forEach(ControlServer::close);
         for (DaemonExtension.Running e : extensions) {
             try {

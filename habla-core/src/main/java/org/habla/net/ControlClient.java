@@ -208,8 +208,9 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
         if (!becomeClient(requestId)) {
             return false;
         }
-        reply(hello); // queued before the client is admitted: no sample or notice can overtake it
-        admitted = who;
+        // Admitted as the hello is queued, under the outbox's lock: no sample can overtake the hello, and none emitted
+        // once the client could have read the hello is passed over as meant for a client not yet admitted.
+        outbox.putReply(EncodedFrame.of(hello), () -> admitted = who);
         FrameReader f = frames;
         if (f != null) {
             f.acceptBlocks();

@@ -119,8 +119,9 @@ class RecordValueTest {
         assertThat(h.values("out")).hasSize(2);
         assertThat(h.state()).isEqualTo(MethodState.RUNNING);
 
-        h.push("in", RecordValue.of(new Tilt(0.1)));
+        h.expectFailure().push("in", RecordValue.of(new Tilt(0.1)));
         assertThat(h.values("out")).hasSize(2);
         assertThat(h.state()).isEqualTo(MethodState.FAILED);
+        assertThat(h.failure()).contains("carries Point records, not Tilt");
     }
 }

@@ -1,11 +1,6 @@
 package org.habla.recording;
 
-import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.BufferedInputStream;
-import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.InputStream;
 import java.nio.file.Files;
@@ -15,6 +10,8 @@ import java.util.List;
 import java.util.Optional;
 import java.util.OptionalLong;
 import org.habla.net.Frame;
+import org.habla.net.FrameException;
+import org.habla.net.FrameReader;
 
 /**
  * Reads a recording record by record (see {@link Recorder} for the layout). A record is whole when its
@@ -22,7 +19,8 @@ import org.habla.net.Frame;
  * first record that is not whole ends the reading: {@link #next} returns null and {@link #cut} says where
  * and why, and whether it is a torn end — a daemon killed mid-write leaves a last record the file ends inside,
  * and every record before it reads back — or damage: a complete record that cannot be read, or a bad record
- * with whole records after it ({@link Cut}). Not thread-safe.
+ * with whole records after it ({@link Cut}). Records are read by the {@link FrameReader} every HABLA socket reads
+ * its frames with, within {@link #MAX_LINE_BYTES} and {@link #MAX_BINARY_BYTES}. Not thread-safe.
  */
 public final class RecordingReader implements RecordingSource {
 
@@ -31,19 +29,21 @@ public final class RecordingReader implements RecordingSource {
     /** The largest binary block read (an image or a chunk of audio). */
     public static final int MAX_BINARY_BYTES = 64 << 20;
 
-    private static final ObjectMapper JSON = new ObjectMapper();
+    /** How much of the file each read asks for. */
+    private static final int READ_BYTES = 65_536;
 
     private final InputStream in;
+    private final FrameReader frames;
     private final Path file;
     private final long size;
     private final RecordingHeader header;
-    private long offset;
     private long unknown;
     private Cut cut;
     private boolean ended;
 
     private RecordingReader(InputStream in, Path file, long size) throws IOException, RecordingException {
         this.in = in;
+        this.frames = new FrameReader(in, MAX_LINE_BYTES, MAX_BINARY_BYTES);
         this.file = file;
         this.size = size;
         Frame first = readFrame();
@@ -62,7 +62,8 @@ public final class RecordingReader implements RecordingSource {
 
     /** Opens a recording and reads its header. */
     public static RecordingReader open(Path file) throws IOException, RecordingException {
-        return new RecordingReader(new BufferedInputStream(Files.newInputStream(file), 65_536), file, Files.size(file));
+        return new RecordingReader(new BufferedInputStream(Files.newInputStream(file), READ_BYTES), file,
+                Files.size(file));
     }
 
     /** Reads a whole recording into memory: its header, its events, and where it was cut, if it was. */
@@ -84,7 +85,7 @@ public final class RecordingReader implements RecordingSource {
     /** The next event, or null at the end of the whole records. */
     public RecordedEvent next() throws IOException {
         while (!ended) {
-            long at = offset;
+            long at = frames.position();
             Frame f = readFrame();
             if (f == null) {
                 ended = true;
@@ -115,48 +116,18 @@ public final class RecordingReader implements RecordingSource {
 
     /** The next whole frame, or null at the end of the file or at the first record that is not whole. */
     private Frame readFrame() throws IOException {
-        long start = offset;
-        ByteArrayOutputStream line = new ByteArrayOutputStream(256);
-        while (true) {
-            int c = in.read();
-            if (c < 0) {
-                if (line.size() > 0) {
-                    return stop(start, "the header line has no end (" + line.size() + " bytes)", true);
-                }
-                return null;
-            }
-            offset++;
-            if (c == '\n') {
-                break;
-            }
-            if (line.size() >= MAX_LINE_BYTES) {
-                return stop(start, "a header line is over " + MAX_LINE_BYTES + " bytes");
-            }
-            line.write(c);
-        }
-        ObjectNode header;
+        long start = frames.position();
+        Frame f;
         try {
-            JsonNode n = JSON.readTree(line.toByteArray());
-            if (!(n instanceof ObjectNode o) || !o.path("type").isTextual()) {
-                return stop(start, "a header line is not a JSON object with a \"type\"");
-            }
-            header = o;
-        } catch (JsonProcessingException e) {
-            return stop(start, "a header line is not JSON: " + e.getOriginalMessage());
+            f = frames.read();
+        } catch (FrameException e) {
+            // "truncated": the file ends inside the record's line or block (a torn end, if nothing whole follows).
+            return stop(start, "record at byte " + start + ": " + e.getMessage(), e.code().equals("truncated"));
         }
-        JsonNode count = header.get("bytes");
-        if (count == null) {
-            return Frame.of(header);
+        if (f != null && !f.header().path("type").isTextual()) {
+            return stop(start, "record at byte " + start + ": a header line is not a JSON object with a \"type\"");
         }
-        if (!count.canConvertToInt() || count.intValue() < 0 || count.intValue() > MAX_BINARY_BYTES) {
-            return stop(start, "a record declares \"bytes\": " + count + " (at most " + MAX_BINARY_BYTES + ")");
-        }
-        byte[] body = in.readNBytes(count.intValue());
-        offset += body.length;
-        if (body.length < count.intValue()) {
-            return stop(start, "the binary block is short: " + body.length + " of " + count.intValue() + " bytes", true);
-        }
-        return new Frame(header, body);
+        return f;
     }
 
     private Frame stop(long start, String reason) throws IOException {

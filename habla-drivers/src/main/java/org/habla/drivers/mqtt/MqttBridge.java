@@ -4,15 +4,10 @@ package org.habla.drivers.mqtt;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import com.hivemq.client.mqtt.MqttClient;
-import com.hivemq.client.mqtt.MqttClientSslConfigBuilder;
-import com.hivemq.client.mqtt.MqttGlobalPublishFilter;
-import com.hivemq.client.mqtt.datatypes.MqttQos;
-import com.hivemq.client.mqtt.mqtt5.Mqtt5AsyncClient;
-import com.hivemq.client.mqtt.mqtt5.Mqtt5ClientBuilder;
-import com.hivemq.client.mqtt.mqtt5.message.publish.Mqtt5Publish;
 import java.io.IOException;
+import java.io.InterruptedIOException;
 import java.nio.charset.StandardCharsets;
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -20,10 +15,12 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.UUID;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.LongAdder;
 import org.habla.bridge.Bridge;
+import org.habla.bridge.BridgeSession;
 import org.habla.bridge.CommandRole;
 import org.habla.driver.InterfaceAddress;
 import org.habla.method.Output;
@@ -57,19 +54,20 @@ import org.slf4j.LoggerFactory;
  * are taken only for the sockets of the bridge's command role ({@link BridgeActions}), never from a retained
  * message, through the same checks as a socket's client and under the same rule of one commander at a time.
  * Samples never wait: while the broker is away, or when more than {@link #MAX_IN_FLIGHT} messages are on their
- * way, they are dropped and counted. The connection is kept by the client library, reconnecting with a doubling
- * wait; on every (re)connection the bridge says it is online, publishes its discovery configs and each socket's
- * staleness and subscribes again. Losing the broker is the bridge's leaving: where it commanded, the robot stops.
+ * way, they are dropped and counted. The connection is the engine's to keep, as every link's is: each attempt is a
+ * fresh {@link BridgeSession} over an {@link MqttWire} (whose last will says offline), retried with the bridge's
+ * {@code reconnect} back-off; on every (re)connection the bridge says it is online, publishes its discovery configs
+ * and each socket's staleness and subscribes again. Losing the broker is the bridge's leaving: where it commanded,
+ * the robot stops.
  */
 final class MqttBridge implements Bridge {
 
     /** Messages handed to the client library and not yet sent; more are dropped. */
     static final int MAX_IN_FLIGHT = 4096;
-    /** The shortest and longest waits before connecting to the broker again. */
-    private static final long RECONNECT_MIN_MILLIS = 200;
-    private static final long RECONNECT_MAX_MILLIS = 5_000;
     /** How often client and broker check each other when nothing flows. */
     private static final int KEEP_ALIVE_S = 5;
+    private static final int QOS_AT_MOST_ONCE = 0;
+    private static final int QOS_AT_LEAST_ONCE = 1;
     /** How long a stop waits for the goodbye to reach the broker. */
     private static final long CLOSE_WAIT_MILLIS = 2_000;
     private static final Logger LOG = LoggerFactory.getLogger(MqttBridge.class);
@@ -85,13 +83,14 @@ final class MqttBridge implements Bridge {
     private final AtomicInteger inFlight = new AtomicInteger();
     private final LongAdder published = new LongAdder();
     private final LongAdder dropped = new LongAdder();
-    private final LongAdder connects = new LongAdder();
     private final String version = version();
-    private volatile Mqtt5AsyncClient client;
+    /** The session that is connected and announced, or null while the broker is away. */
+    private volatile Session live;
     private volatile BridgeActions actions;
     private HomeAssistantDiscovery discovery;
+    private CommandRole role;
+    private BrokerEndpoint endpoint;
     private String root;
-    private String system;
 
     MqttBridge(InterfaceAddress address, MqttBridgeParams params) {
         this.address = address;
@@ -101,7 +100,6 @@ final class MqttBridge implements Bridge {
 
     @Override
     public void start(String systemName, List<ControlPoint> exposed, CommandRole commandRole) throws IOException {
-        this.system = systemName;
         this.root = params.baseTopic() + "/" + topicLevel(systemName);
         this.discovery = new HomeAssistantDiscovery(params.discoveryPrefix(), root, systemName);
         for (ControlPoint p : exposed) {
@@ -111,27 +109,15 @@ final class MqttBridge implements Bridge {
         }
         this.actions = new BridgeActions(root, points, commandRole, commanderId, params.holdMs(),
                 (topic, payload) -> send(topic, payload, false, true));
-        String password = BrokerLogin.password(params.password(), params.passwordFile());
-        Optional<BrokerEndpoint.Tls> tls = BrokerLogin.tls(params.tls(), params.caFile());
+        this.role = commandRole;
         String id = params.clientId().isEmpty()
                 ? "habla-bridge-" + topicLevel(systemName) + "-" + UUID.randomUUID().toString().substring(0, 6)
                 : params.clientId();
-        Mqtt5ClientBuilder b = MqttClient.builder().useMqttVersion5().identifier(id).serverHost(address.host())
-                .serverPort(address.portOr(params.tls() ? MqttDriver.DEFAULT_TLS_PORT : MqttDriver.DEFAULT_PORT))
-                .automaticReconnect().initialDelay(RECONNECT_MIN_MILLIS, TimeUnit.MILLISECONDS)
-                .maxDelay(RECONNECT_MAX_MILLIS, TimeUnit.MILLISECONDS).applyAutomaticReconnect()
-                .addConnectedListener(c -> announce(commandRole))
-                .addDisconnectedListener(c -> lost(c.getCause()));
-        if (tls.isPresent()) {
-            MqttClientSslConfigBuilder.Nested<? extends Mqtt5ClientBuilder> ssl = b.sslConfig();
-            if (tls.get().trust() != null) {
-                ssl = ssl.trustManagerFactory(tls.get().trust());
-            }
-            b = ssl.applySslConfig();
-        }
-        Mqtt5AsyncClient c = b.buildAsync();
-        client = c;
-        c.publishes(MqttGlobalPublishFilter.SUBSCRIBED, this::arrived);
+        this.endpoint = new BrokerEndpoint(address.host(),
+                address.portOr(params.tls() ? MqttDriver.DEFAULT_TLS_PORT : MqttDriver.DEFAULT_PORT),
+                BrokerEndpoint.MqttVersion.V5, id, params.username(),
+                BrokerLogin.password(params.password(), params.passwordFile()), BrokerLogin.tls(params.tls(), params.caFile()),
+                KEEP_ALIVE_S, Optional.of(new BrokerEndpoint.Will(root + "/availability", bytes("offline"), true)));
         for (ControlPoint p : points.values()) {
             String socket = p.name();
             boolean published = params.publish().contains(socket);
@@ -159,40 +145,28 @@ final class MqttBridge implements Bridge {
                 }
             }));
         }
-        var connect = c.connectWith().cleanStart(true).keepAlive(KEEP_ALIVE_S);
-        if (!params.username().isEmpty()) {
-            connect = connect.simpleAuth().username(params.username()).password(password.getBytes(StandardCharsets.UTF_8))
-                    .applySimpleAuth();
-        }
-        connect.willPublish().topic(root + "/availability").payload(bytes("offline")).qos(MqttQos.AT_LEAST_ONCE)
-                .retain(true).applyWillPublish().send().whenComplete((ack, e) -> {
-                    if (e != null) {
-                        LOG.warn("bridge {}: the broker at {} is not there yet ({}); trying again", system, address,
-                                e.getMessage());
-                    }
-                });
         LOG.info("bridge to MQTT broker {}: publishing {} on {}/…, actions from {}", address, params.publish(), root,
                 params.actions());
     }
 
-    /** On every (re)connection: online, discovery, staleness, subscriptions. Runs on the client library's thread. */
-    private void announce(CommandRole role) {
-        connects.increment();
-        Mqtt5AsyncClient c = client;
-        send(root + "/availability", "online", true, true);
-        sayAgain();
+    @Override
+    public BridgeSession session() {
+        return new Session();
+    }
+
+    /** The topic filters the bridge listens to: actions for its command role, and Home Assistant's birth. */
+    private List<String> subscriptions() {
+        List<String> filters = new ArrayList<>();
         for (String socket : params.actions()) {
             if (role.mayCommand(socket)) {
                 String level = root + "/" + topicLevel(socket);
-                for (String filter : List.of(level + "/set", level + "/+/set", level + "/take", level + "/release")) {
-                    c.subscribeWith().topicFilter(filter).qos(MqttQos.AT_LEAST_ONCE).send();
-                }
+                filters.addAll(List.of(level + "/set", level + "/+/set", level + "/take", level + "/release"));
             }
         }
         if (params.discovery()) {
-            c.subscribeWith().topicFilter(params.discoveryPrefix() + "/status").qos(MqttQos.AT_LEAST_ONCE).send();
+            filters.add(params.discoveryPrefix() + "/status");
         }
-        LOG.info("bridge to {} connected", address);
+        return filters;
     }
 
     /** Discovery, each socket's staleness, newest values and commander: at connection and when Home Assistant starts. */
@@ -237,17 +211,16 @@ final class MqttBridge implements Bridge {
     }
 
     /** The broker is lost: the bridge has left, and gives up any control it held (the robot stops). */
-    private void lost(Throwable cause) {
-        LOG.debug("bridge to {} disconnected: {}", address, cause.toString());
+    private void left() {
         BridgeActions a = actions;
         if (a != null) {
             points.values().forEach(p -> p.lease().ifPresent(l -> l.left(a.commander())));
         }
     }
 
-    private void arrived(Mqtt5Publish message) {
-        String topic = message.getTopic().toString();
-        String text = new String(message.getPayloadAsBytes(), StandardCharsets.UTF_8);
+    /** A message on a subscribed topic. Runs on the client library's thread. */
+    private void arrived(String topic, byte[] payload, boolean retained) {
+        String text = new String(payload, StandardCharsets.UTF_8);
         if (topic.equals(params.discoveryPrefix() + "/status")) {
             if (text.strip().equals("online")) {
                 LOG.info("bridge: Home Assistant is online; discovery, states and staleness said again");
@@ -255,7 +228,7 @@ final class MqttBridge implements Bridge {
             }
             return;
         }
-        actions.onMessage(topic, text, message.isRetain());
+        actions.onMessage(topic, text, retained);
     }
 
     private void publishStale(String socket, boolean stale, String why) {
@@ -285,16 +258,15 @@ final class MqttBridge implements Bridge {
 
     /** Hands a message to the client library, or drops and counts it; never waits. */
     private void send(String topic, String payload, boolean retain, boolean always) {
-        Mqtt5AsyncClient c = client;
-        if (c == null || !c.getState().isConnected() || !always && inFlight.get() >= MAX_IN_FLIGHT) {
+        Session s = live;
+        if (s == null || !always && inFlight.get() >= MAX_IN_FLIGHT) {
             if (!always) {
                 dropped.increment();
             }
             return;
         }
         inFlight.incrementAndGet();
-        c.publishWith().topic(topic).payload(bytes(payload)).retain(retain)
-                .qos(retain ? MqttQos.AT_LEAST_ONCE : MqttQos.AT_MOST_ONCE).send().whenComplete((r, e) -> {
+        s.wire.publish(topic, bytes(payload), retain ? QOS_AT_LEAST_ONCE : QOS_AT_MOST_ONCE, retain).whenComplete((r, e) -> {
                     inFlight.decrementAndGet();
                     if (e == null) {
                         published.increment();
@@ -306,10 +278,8 @@ final class MqttBridge implements Bridge {
 
     @Override
     public ObjectNode status() {
-        Mqtt5AsyncClient c = client;
         BridgeActions a = actions;
         ObjectNode n = JsonNodeFactory.instance.objectNode().put("type", "mqtt").put("broker", address.toString())
-                .put("connected", c != null && c.getState().isConnected()).put("connects", connects.sum())
                 .put("published", published.sum()).put("dropped", dropped.sum())
                 .put("actions", a == null ? 0 : a.taken.sum()).put("refused", a == null ? 0 : a.refused.sum())
                 .put("retainedIgnored", a == null ? 0 : a.retainedIgnored.sum());
@@ -326,25 +296,81 @@ final class MqttBridge implements Bridge {
         return n;
     }
 
+    /** Called by the engine once its link is stopped (its session said offline and disconnected). */
     @Override
     public void close() {
-        BridgeActions a = actions;
-        if (a != null) {
-            points.values().forEach(p -> p.lease().ifPresent(l -> l.left(a.commander())));
-        }
+        left();
         subscriptions.forEach(ControlPoint.Subscription::close);
         subscriptions.clear();
-        Mqtt5AsyncClient c = client;
-        client = null;
-        if (c != null) {
+    }
+
+    /**
+     * One connection to the broker: a fresh {@link MqttWire} whose last will says offline, announced on opening.
+     * Actions arrive on the client library's threads; {@link #readNext} waits until the connection is lost.
+     */
+    private final class Session implements BridgeSession {
+
+        private final CountDownLatch ended = new CountDownLatch(1);
+        private volatile MqttWire wire;
+        private volatile Throwable lost;
+
+        @Override
+        public void open(Duration timeout) throws IOException {
+            MqttWire w = MqttWire.to(endpoint, cause -> {
+                lost = cause == null ? new IOException("connection lost") : cause;
+                ended.countDown();
+            });
+            wire = w;
+            if (ended.getCount() == 0) {
+                w.disconnect();
+                throw new IOException("closed");
+            }
+            w.connect(timeout);
+            live = this;
+            send(root + "/availability", "online", true, true);
+            sayAgain();
+            List<String> filters = subscriptions();
+            if (!filters.isEmpty()) {
+                w.subscribe(filters, QOS_AT_LEAST_ONCE, MqttBridge.this::arrived, timeout);
+            }
+            LOG.debug("bridge to {} connected and announced", address);
+        }
+
+        @Override
+        public void readNext() throws IOException {
             try {
-                if (c.getState().isConnected()) {
-                    c.publishWith().topic(root + "/availability").payload(bytes("offline")).retain(true)
-                            .qos(MqttQos.AT_LEAST_ONCE).send().get(CLOSE_WAIT_MILLIS, TimeUnit.MILLISECONDS);
-                }
-                c.disconnect().get(CLOSE_WAIT_MILLIS, TimeUnit.MILLISECONDS);
+                ended.await();
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new InterruptedIOException("interrupted");
+            }
+            Throwable t = lost;
+            throw new IOException("the broker connection was lost: "
+                    + (t == null ? "closed" : t.getMessage() == null ? t.toString() : t.getMessage()));
+        }
+
+        @Override
+        public void goodbye() {
+            MqttWire w = wire;
+            try {
+                w.publish(root + "/availability", bytes("offline"), QOS_AT_LEAST_ONCE, true)
+                        .get(CLOSE_WAIT_MILLIS, TimeUnit.MILLISECONDS);
             } catch (Exception e) {
-                LOG.debug("bridge disconnect: {}", e.toString());
+                LOG.debug("bridge goodbye: {}", e.toString());
+            }
+        }
+
+        @Override
+        public void close() {
+            boolean wasLive = live == this;
+            if (wasLive) {
+                live = null;
+                left();
+            }
+            ended.countDown();
+            MqttWire w = wire;
+            if (w != null) {
+                w.disconnect();
             }
         }
     }

@@ -81,7 +81,7 @@ final class MqttSession implements ClientSession {
     }
 
     /** Called on the client library's threads: hand the message to the reader, or count it if the queue is full. */
-    private void arrived(String topic, byte[] payload) {
+    private void arrived(String topic, byte[] payload, boolean retained) {
         if (!queue.offer(new Message(topic, payload))) {
             overflow.incrementAndGet();
         }

@@ -26,6 +26,11 @@ final class BridgeRoom {
 
     /** The config, with {@code top} spliced in at the top level and {@code bridge} in the bridge's params. */
     static String config(Mosquitto broker, int[] ports, String top, String bridge) {
+        return config(broker, ports, top, bridge, "");
+    }
+
+    /** The same, with {@code entry} spliced in after the bridge's params ({@code , "reconnect": {..}}). */
+    static String config(Mosquitto broker, int[] ports, String top, String bridge, String entry) {
         return """
             {"system": "bridge-test", "status": {"port": 0}, %6$s
              "interfaces": [{"id": "dev", "driver": "mqtt", "address": "%1$s",
@@ -49,8 +54,8 @@ final class BridgeRoom {
                {"id": "secret", "type": "pass-through", "layer": "virtual", "inputs": {"in": "control"}, "params": {"kind": "text"},
                 "expose": {"port": %4$d, "name": "secret"}}],
              "bridges": [{"id": "home", "type": "mqtt", "address": "%1$s",
-               "params": {"publish": ["level", "state", "say", "secret"], "actions": ["say"] %7$s}}]}
-            """.formatted(broker.address(), ports[0], ports[1], ports[2], ports[3], top, bridge);
+               "params": {"publish": ["level", "state", "say", "secret"], "actions": ["say"] %7$s}%8$s}]}
+            """.formatted(broker.address(), ports[0], ports[1], ports[2], ports[3], top, bridge, entry);
     }
 
     static Daemon start(String config) throws Exception {

@@ -277,7 +277,7 @@ class SpeechRecognitionTest {
     void aMissingGrammarFileFailsTheMethodWithItsPath() {
         MethodHarness h = MethodHarness.started("speech",
                 new SpeechRecognition(SpeechRecognitionParams.defaults().withGrammar("/nonexistent/words.gram")));
-        h.runBackground();
+        h.expectFailure().runBackground();
         assertThat(h.state()).isEqualTo(MethodState.FAILED);
         assertThatThrownBy(() -> SpeechRecognitionParams.defaults().withGrammar("words.txt"))
                 .hasMessageContaining(".gram");
