@@ -84,7 +84,8 @@ public final class ScenarioCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
         }
-        Path dir = report != null ? report : root.resolve("reports").resolve(robot);
+        // The processes run in the HABLA folder: a report folder given relative to here is made absolute first.
+        Path dir = report != null ? report.toAbsolutePath() : root.resolve("reports").resolve(robot);
         ScenarioRunner.Options opts = new ScenarioRunner.Options(sc, episodes != null ? episodes : sc.episodes(), s, seed,
                 dir, portOffset, root);
         List<EpisodeResult> logs;
@@ -120,7 +121,8 @@ public final class ScenarioCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
         }
-        Path dir = report != null ? report : root.resolve("reports").resolve(robot);
+        // The processes run in the HABLA folder: a report folder given relative to here is made absolute first.
+        Path dir = report != null ? report.toAbsolutePath() : root.resolve("reports").resolve(robot);
         RoomScenarioRunner runner = new RoomScenarioRunner(new RoomScenarioRunner.Options(sc,
                 episodes != null ? episodes : sc.episodes(), s, seed, dir, portOffset, root), out);
         List<RoomPhase> phases;
