@@ -145,7 +145,10 @@ public final class ReplayCommand implements Callable<Integer> {
         return code;
     }
 
-    /** Adds {@code habla replay} to the command line. */
+    /**
+     * Adds {@code habla replay} to the command line. ReplayCommand's class is loaded only when it is named: it needs the
+     * recording, which a worker's class path does not have.
+     */
     public static final class Extension implements CommandExtension {
 
         @Override

@@ -146,7 +146,10 @@ public final class RunCommand implements Callable<Integer> {
                 MethodGraph.channels(cfg, registry));
     }
 
-    /** Adds {@code habla run} to the command line. */
+    /**
+     * Adds {@code habla run} to the command line. RunCommand's class is loaded only when it is named: it needs the
+     * recording, which a worker's class path does not have.
+     */
     public static final class Extension implements CommandExtension {
 
         @Override
