@@ -19,6 +19,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.Set;
+import org.habla.net.Limits;
 import org.habla.plugin.PluginRegistry;
 
 /**

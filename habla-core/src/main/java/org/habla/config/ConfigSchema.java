@@ -18,6 +18,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.habla.method.Layer;
+import org.habla.net.Limits;
 import org.habla.plugin.DriverProvider;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.PluginRegistry;

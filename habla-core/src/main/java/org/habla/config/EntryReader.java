@@ -12,6 +12,7 @@ import org.habla.driver.Driver;
 import org.habla.driver.InterfaceAddress;
 import org.habla.method.Layer;
 import org.habla.method.Ports;
+import org.habla.net.Expose;
 import org.habla.plugin.DriverProvider;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.PluginRegistry;

@@ -5,7 +5,7 @@ import java.net.UnknownHostException;
 import java.util.ArrayList;
 import java.util.List;
 import org.habla.config.ConfigError;
-import org.habla.config.Expose;
+import org.habla.net.Expose;
 import org.habla.config.HablaConfig;
 import org.habla.config.MethodConfig;
 import org.habla.net.BindAddress;

@@ -1,7 +1,7 @@
 package org.habla.daemon;
 
 import java.io.IOException;
-import org.habla.config.Expose;
+import org.habla.net.Expose;
 import org.habla.config.HablaConfig;
 import org.habla.config.SecurityConfig;
 import org.habla.security.AuditLog;

@@ -7,7 +7,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLongArray;
-import org.habla.config.Expose;
+import org.habla.net.Expose;
 import org.habla.method.ControlNotice;
 import org.habla.method.Input;
 import org.habla.method.Layer;

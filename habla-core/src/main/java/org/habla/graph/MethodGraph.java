@@ -216,7 +216,7 @@ public final class MethodGraph implements AutoCloseable {
     }
 
     /** The socket settings of an exposed method's control point. */
-    public org.habla.config.Expose exposeOf(ControlPoint point) {
+    public org.habla.net.Expose exposeOf(ControlPoint point) {
         return ((ExposedMethod) point).expose();
     }
 

@@ -9,7 +9,6 @@ import java.net.SocketTimeoutException;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.atomic.AtomicBoolean;
-import org.habla.config.Limits;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -34,7 +33,7 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     /** How long a connection that broke the protocol may take to receive its error line before it is closed. */
     private static final long LINGER_MS = 2_000;
 
-    private final ClientConnection socket;
+    private final ControlConnection socket;
     private final String label;
     private final ControlProtocol protocol;
     private final Limits limits;
@@ -54,10 +53,10 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     private volatile FrameReader frames;
     /** Whether the port has made it a client ({@link ConnectionGuard#promote}); read and written by the reader. */
     private boolean promoted;
-    /** Whether samples may be written by the engine thread that hands them out ({@link ClientConnection#tryWrite}). */
+    /** Whether samples may be written by the engine thread that hands them out ({@link ControlConnection#tryWrite}). */
     private final boolean direct;
 
-    ControlClient(ClientConnection socket, String label, ClientId id, ControlProtocol protocol, Limits limits,
+    ControlClient(ControlConnection socket, String label, ClientId id, ControlProtocol protocol, Limits limits,
             BlockBudget budget, ConnectionGuard guard, ControlServer.Counters counters, Runnable onClosed) {
         this.socket = socket;
         this.direct = socket.writesWithoutWaiting();

@@ -3,7 +3,6 @@ package org.habla.net;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import org.habla.config.Limits;
 import org.habla.method.Input;
 import org.habla.method.Output;
 import org.habla.security.PortAccess;

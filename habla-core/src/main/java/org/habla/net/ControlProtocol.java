@@ -8,7 +8,6 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.time.Instant;
 import java.util.List;
 import java.util.Map;
-import org.habla.config.Limits;
 import org.habla.method.Input;
 import org.habla.method.Output;
 import org.habla.sample.Payload;

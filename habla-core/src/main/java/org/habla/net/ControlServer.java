@@ -9,8 +9,6 @@ import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
-import org.habla.config.Expose;
-import org.habla.config.Limits;
 import org.habla.security.PortSecurity;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -259,9 +257,9 @@ public final class ControlServer implements AutoCloseable {
         ControlClient[] self = new ControlClient[1];
         ClientId id = new ClientId(point.name() + "#" + n,
                 socket.getInetAddress().getHostAddress() + ":" + socket.getPort());
-        ClientConnection connection = socket.getChannel() != null && !(socket instanceof javax.net.ssl.SSLSocket)
+        ControlConnection connection = socket.getChannel() != null && !(socket instanceof javax.net.ssl.SSLSocket)
                 ? new ChannelConnection(socket.getChannel(), ChannelReadiness.shared())
-                : ClientConnection.of(socket);
+                : ControlConnection.of(socket);
         self[0] = new ControlClient(connection, label, id, protocol, limits, budget, guard, counters, () -> {
             guard.left(self[0]);
             if (clients.remove(self[0])) {

@@ -7,7 +7,7 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.Objects;
 import java.util.function.Supplier;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.config.StatusConfig;
 import org.habla.net.BindAddress;
 import org.habla.net.ConnectionGuard;

@@ -6,7 +6,7 @@ import java.net.Socket;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.graph.EngineClock;
 import org.habla.net.BlockBudget;
 import org.habla.net.ConnectionGuard;

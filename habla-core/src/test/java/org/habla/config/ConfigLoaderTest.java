@@ -13,6 +13,8 @@ import java.util.Optional;
 import java.util.OptionalInt;
 import org.habla.driver.InterfaceAddress;
 import org.habla.method.Layer;
+import org.habla.net.Expose;
+import org.habla.net.Limits;
 import org.habla.plugin.NoParams;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;

@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
+import org.habla.net.Limits;
 import org.habla.plugin.PluginRegistry;
 import org.junit.jupiter.api.Test;
 

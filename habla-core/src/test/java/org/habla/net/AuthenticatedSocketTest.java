@@ -12,8 +12,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
-import org.habla.config.Expose;
-import org.habla.config.Limits;
 import org.habla.sample.NumberValue;
 import org.habla.security.AuditLog;
 import org.habla.security.Credentials;

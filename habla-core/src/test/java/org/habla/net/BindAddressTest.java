@@ -28,7 +28,7 @@ class BindAddressTest {
 
     @Test
     void theIpv4WildcardIsReachedOnIpv4LoopbackOnly() throws Exception {
-        Assumptions.assumeTrue(ipv6Loopback(), "this computer has no IPv6 loopback");
+        Assumptions.assumeTrue(org.habla.testing.DaemonProcess.ipv6Loopback(), "this computer has no IPv6 loopback");
         BindAddress any = BindAddress.of("0.0.0.0");
         try (ServerSocketChannel server = any.listen(0, 1)) {
             int port = server.socket().getLocalPort();
@@ -40,7 +40,7 @@ class BindAddressTest {
 
     @Test
     void theIpv6WildcardIsReachedOnBothLoopbacks() throws Exception {
-        Assumptions.assumeTrue(ipv6Loopback(), "this computer has no IPv6 loopback");
+        Assumptions.assumeTrue(org.habla.testing.DaemonProcess.ipv6Loopback(), "this computer has no IPv6 loopback");
         BindAddress any = BindAddress.of("::");
         try (ServerSocketChannel server = any.listen(0, 1)) {
             int port = server.socket().getLocalPort();
@@ -70,15 +70,6 @@ class BindAddressTest {
     private static boolean connects(String host, int port) {
         try (Socket s = new Socket()) {
             s.connect(new InetSocketAddress(InetAddress.getByName(host), port), 2_000);
-            return true;
-        } catch (IOException e) {
-            return false;
-        }
-    }
-
-    private static boolean ipv6Loopback() {
-        try (var s = new java.net.ServerSocket()) {
-            s.bind(new InetSocketAddress(InetAddress.getByName("::1"), 0));
             return true;
         } catch (IOException e) {
             return false;

@@ -8,8 +8,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
-import org.habla.config.Expose;
-import org.habla.config.Limits;
 import org.habla.sample.TextValue;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;

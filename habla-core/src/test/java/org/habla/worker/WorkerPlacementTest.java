@@ -20,10 +20,10 @@ import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import java.util.zip.CRC32;
-import org.habla.config.Expose;
+import org.habla.net.Expose;
 import org.habla.config.Fallback;
 import org.habla.config.HablaConfig;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.config.MethodConfig;
 import org.habla.config.Safety;
 import org.habla.config.Source;
@@ -418,13 +418,13 @@ class WorkerPlacementTest {
         java.io.StringWriter err = new java.io.StringWriter();
         int code = new picocli.CommandLine(new WorkerCommand()).setErr(new java.io.PrintWriter(err))
                 .execute("--bind", "0.0.0.0", "--port", "0");
-        assertThat(code).isEqualTo(org.habla.cli.ExitCodes.USAGE_OR_CONFIG);
+        assertThat(code).isEqualTo(org.habla.command.ExitCodes.USAGE_OR_CONFIG);
         assertThat(err.toString()).contains("--bind 0.0.0.0 is beyond loopback", "--secret-file");
     }
 
     @Test
     void aWorkerAskedForEveryIpv4AddressDoesNotListenOnIpv6() throws Exception {
-        org.junit.jupiter.api.Assumptions.assumeTrue(org.habla.daemon.DaemonBindAddressTest.ipv6Loopback(),
+        org.junit.jupiter.api.Assumptions.assumeTrue(org.habla.testing.DaemonProcess.ipv6Loopback(),
                 "this computer has no IPv6 loopback");
         EngineClock clock = EngineClock.system();
         toClose.add(clock::close);

@@ -65,8 +65,8 @@ class InterfaceSessionTest {
     void connect() throws IOException {
         program = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
         InterfaceParams params = new ObjectMapper().readValue(PARAMS, InterfaceParams.class);
-        Driver driver = new InterfaceDriverProvider().create(InterfaceAddress.parse("127.0.0.1:" + program.getLocalPort()),
-                params);
+        Driver driver = new InterfaceProtocolDriverProvider().create(
+                InterfaceAddress.parse("127.0.0.1:" + program.getLocalPort()), params);
         Connection connection = driver.connections().get(0);
         assertThat(connection.port()).isEqualTo(program.getLocalPort());
         assertThat(connection.commandChannels()).containsExactlyInAnyOrder("wheels", "lamp");
@@ -122,7 +122,7 @@ class InterfaceSessionTest {
         robotSends("{\"type\":\"hello\",\"protocol\":\"habla-interface/9\",\"channels\":[]}\n");
         assertThatThrownBy(() -> session.handshake(hablaIn, hablaOut, sink))
                 .hasMessageContaining("speaks protocol \"habla-interface/9\"");
-        LinkSession fresh = new InterfaceDriverProvider().create(InterfaceAddress.parse("localhost"),
+        LinkSession fresh = new InterfaceProtocolDriverProvider().create(InterfaceAddress.parse("localhost"),
                 new ObjectMapper().readValue(PARAMS, InterfaceParams.class)).connections().get(0).sessions().get();
         robotSends("{\"type\":\"reading\",\"channel\":\"ir\",\"value\":[1]}\n");
         assertThatThrownBy(() -> fresh.handshake(hablaIn, hablaOut, sink)).hasMessageContaining("must be a hello");
@@ -203,7 +203,7 @@ class InterfaceSessionTest {
     @Test
     void theDriverIsFoundByItsNameThroughServiceDiscovery() {
         PluginRegistry registry = PluginRegistry.discover();
-        assertThat(registry.driver("habla")).get().isInstanceOf(InterfaceDriverProvider.class);
+        assertThat(registry.driver("habla")).get().isInstanceOf(InterfaceProtocolDriverProvider.class);
         assertThat(registry.driver("habla").get().paramsType()).isEqualTo(InterfaceParams.class);
     }
 

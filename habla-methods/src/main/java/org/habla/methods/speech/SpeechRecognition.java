@@ -1,3 +1,4 @@
+// Over 300 lines, on purpose: the method's inputs, its model loading, queue and decoding are one life cycle.
 package org.habla.methods.speech;
 
 import java.nio.file.Path;

@@ -1,3 +1,4 @@
+// Over 300 lines, on purpose: Sphinx-4 set up once, and both searches of an utterance over the same features.
 package org.habla.methods.speech;
 
 import edu.cmu.sphinx.decoder.search.Token;

@@ -1,3 +1,4 @@
+// Over 300 lines, on purpose: the Controller's whole menu protocol, one command per case, over one menu state.
 package org.habla.sim.aibo;
 
 import java.io.IOException;

@@ -1,3 +1,4 @@
+// Over 300 lines, on purpose: the devices, their messages and the teacher share one world under one lock.
 package org.habla.sim.room;
 
 import com.fasterxml.jackson.databind.JsonNode;

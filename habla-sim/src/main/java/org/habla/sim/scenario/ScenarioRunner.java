@@ -4,8 +4,6 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.net.InetSocketAddress;
-import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -79,7 +77,7 @@ final class ScenarioRunner {
                         throw new IOException(robotConfig + " does not expose the control contract's '" + names[i] + "' socket");
                     }
                 }
-                awaitPort(ports[1], 120_000, daemon);
+                daemon.awaitPort(ports[1], 120_000);
                 long readyFrom = System.nanoTime();
                 DaemonReadiness.await(statusPort(derived), READY_TIMEOUT_MS, daemon::alive);
                 say("daemon ready: every method ready and every link up (%.1f s after its sockets opened)",
@@ -258,22 +256,6 @@ final class ScenarioRunner {
         } catch (IOException e) {
             return "(unreadable)";
         }
-    }
-
-    private static void awaitPort(int port, long timeoutMs, Children.Child owner) throws IOException, InterruptedException {
-        long end = System.nanoTime() + timeoutMs * 1_000_000L;
-        while (System.nanoTime() < end) {
-            if (!owner.alive()) {
-                throw new IOException("the " + owner.name() + " stopped (exit " + owner.process().exitValue() + "); see " + owner.log());
-            }
-            try (Socket s = new Socket()) {
-                s.connect(new InetSocketAddress("127.0.0.1", port), 500);
-                return;
-            } catch (IOException e) {
-                Thread.sleep(200);
-            }
-        }
-        throw new IOException("port " + port + " did not open within " + timeoutMs + " ms; see " + owner.log());
     }
 
     private void summary(List<EpisodeResult> eps) {

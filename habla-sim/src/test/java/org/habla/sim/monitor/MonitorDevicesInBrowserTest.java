@@ -54,7 +54,7 @@ class MonitorDevicesInBrowserTest {
                         EngineClock.system());
                 Browser browser = new Browser(tmp.resolve("profile"))) {
             broker.publish(AVAILABILITY, "online", true);
-            browser.open("http://127.0.0.1:" + daemon.monitorPort() + "/");
+            browser.open("http://127.0.0.1:" + daemon.extensionPort(Daemon.MONITOR) + "/");
             Browser.await("the sensor is listed online", 30_000, () -> browser.js(DEVICE_ROW).toString()
                     .startsWith("device up"));
 
