@@ -49,6 +49,11 @@ final class MoonshineModel implements AutoCloseable {
 
     /** Loads both models from {@code dir}, each running on {@code threads} threads. */
     static MoonshineModel load(Path dir, int threads) throws IOException {
+        return load(dir.resolve(ENCODER), dir.resolve(DECODER), threads);
+    }
+
+    /** Loads the encoder and decoder from their files (ONNX Runtime's format or ONNX), on {@code threads} threads. */
+    static MoonshineModel load(Path encoderFile, Path decoderFile, int threads) throws IOException {
         OrtEnvironment env = OrtEnvironment.getEnvironment();
         try {
             OrtSession.SessionOptions o = new OrtSession.SessionOptions();
@@ -59,11 +64,12 @@ final class MoonshineModel implements AutoCloseable {
             // the memory pattern those buffers go back to the system after each utterance instead of staying.
             o.setCPUArenaAllocator(false);
             o.setMemoryPatternOptimization(false);
-            OrtSession enc = env.createSession(dir.resolve(ENCODER).toString(), o);
-            OrtSession dec = env.createSession(dir.resolve(DECODER).toString(), o);
+            OrtSession enc = env.createSession(encoderFile.toString(), o);
+            OrtSession dec = env.createSession(decoderFile.toString(), o);
             return new MoonshineModel(enc, dec);
         } catch (OrtException e) {
-            throw new IOException("ONNX Runtime could not load the Moonshine model in " + dir + ": " + e.getMessage(), e);
+            throw new IOException("ONNX Runtime could not load the Moonshine model " + decoderFile.getParent() + ": "
+                    + e.getMessage(), e);
         }
     }
 
