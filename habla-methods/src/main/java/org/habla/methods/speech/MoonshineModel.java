@@ -34,8 +34,11 @@ final class MoonshineModel implements AutoCloseable {
     /** Logits this far below a step's best add less than e^-20 each to its normaliser: left out. */
     private static final float LOG_SUM_RANGE = 20f;
 
-    /** Each scored row: the summed log-probability of its tokens, and the summed shortfall from each step's best. */
-    record RowScore(double logProb, double shortfall, int tokens) {
+    /**
+     * Each scored row: the summed log-probability of its steps (its tokens and its end), the summed shortfall from each
+     * step's best, the number of steps, and the lowest log-probability of one step.
+     */
+    record RowScore(double logProb, double shortfall, int tokens, double worstStep) {
     }
 
     private final OrtEnvironment env = OrtEnvironment.getEnvironment();
@@ -138,6 +141,7 @@ final class MoonshineModel implements AutoCloseable {
                 for (int i = 0; i < b; i++) {
                     double lp = 0;
                     double shortfall = 0;
+                    double worst = 0;
                     for (int t = 0; t <= rows[i].length; t++) {
                         f.get((i * steps + t) * vocab, step);
                         float max = Float.NEGATIVE_INFINITY;
@@ -162,9 +166,10 @@ final class MoonshineModel implements AutoCloseable {
                             token = max + Math.log(end);
                         }
                         lp += token - logZ;
+                        worst = Math.min(worst, token - logZ);
                         shortfall += Math.max(0, max - token);
                     }
-                    out[i] = new RowScore(lp, shortfall, rows[i].length + 1);
+                    out[i] = new RowScore(lp, shortfall, rows[i].length + 1, worst);
                 }
                 return out;
             }

@@ -92,7 +92,7 @@ public final class MoonshineScores {
                             MoonshineModel.RowScore[] scores = model.score(model.encode(x), rows, enders);
                             ArrayNode a = u.putArray("scores");
                             for (MoonshineModel.RowScore r : scores) {
-                                a.addArray().add(r.logProb()).add(r.shortfall()).add(r.tokens());
+                                a.addArray().add(r.logProb()).add(r.shortfall()).add(r.tokens()).add(r.worstStep());
                             }
                         }
                         w.write(u + "\n");
