@@ -53,6 +53,7 @@ def features(u, phrases):
         "grammarPosterior": math.exp(lp[best] - logsumexp(lp[:phrases])),
         "perToken": lp[best] / s[best][2],
         "logProb": lp[best],
+        "worst": s[best][3] if len(s[best]) > 3 else 0.0,
     }
 
 
@@ -124,6 +125,11 @@ RULES = {
     "filler&perToken": [(lambda t: (lambda f: f["filler"] > 0 and f["perToken"] >= t), (t,)) for t in grid(-6, 0, 60)],
     "perToken|margin": [(lambda a, b: (lambda f: f["perToken"] >= a or f["margin"] >= b), (a, b))
                         for a in grid(-4, -1, 30) for b in grid(4, 20, 32)],
+    "worst": [(lambda t: (lambda f: f["worst"] >= t), (t,)) for t in grid(-12, 0, 96)],
+    "perToken&worst": [(lambda a, b: (lambda f: f["perToken"] >= a and f["worst"] >= b), (a, b))
+                       for a in grid(-5, -0.5, 45) for b in grid(-12, -1, 44)],
+    "perToken+w*worst": [(lambda w, t: (lambda f: (f["perToken"] + w * f["worst"]) / (1 + w) >= t), (w, t))
+                         for w in grid(0, 1, 10) for t in grid(-6, 0, 120)],
     "posterior&margin": [(lambda a, b: (lambda f: f["posterior"] >= a and f["margin"] >= b), (a, b))
                          for a in grid(0, 1, 20) for b in grid(0, 10, 40)],
 }

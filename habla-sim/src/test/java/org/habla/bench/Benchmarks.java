@@ -12,7 +12,7 @@ import java.util.List;
  * {@code --soak-minutes M}); the daemon's start-up time and resident memory with {@code bench/run footprint}
  * (only when named: minutes; {@code aibo} or {@code pioneer} for one robot, {@code --runs N}, {@code --until S});
  * end of speech to phrase in the Aibo's daemon beside its vision with {@code bench/run aibo-speech} (only when named;
- * {@code --voices N}, {@code --config FILE}, {@code --port-offset N}).
+ * {@code --voices N}, {@code --config FILE}, {@code --port-offset N}, {@code --nice N}).
  * {@code fanout --clients N --hz N} runs only the fan-out crowd round, with N readers at N Hz
  * ({@code --reader-threads}: a thread per reader instead of one selector).
  */
@@ -72,7 +72,7 @@ public final class Benchmarks {
         if (list.contains("aibo-speech")) {
             int at2 = list.indexOf("--config");
             new AiboSpeechBench(Path.of(at2 >= 0 ? list.get(at2 + 1) : "config/aibo.json"), option(list, "--voices", 2),
-                    option(list, "--port-offset", org.habla.sim.PortBlock.freeOffset())).run();
+                    option(list, "--port-offset", org.habla.sim.PortBlock.freeOffset()), option(list, "--nice", 0)).run();
         }
         if (list.contains("footprint")) {
             List<String> robots = list.stream().filter(a -> a.equals("aibo") || a.equals("pioneer")).toList();
