@@ -2,6 +2,7 @@
 """Compares accept/reject rules for Moonshine's best grammar phrase on the scores MoonshineScores wrote.
 
   moonshine-rules.py TUNE.jsonl [HELD.jsonl]
+  moonshine-rules.py --ceiling FILE.jsonl     what each choice of the best phrase gets with every phrase said
 
 Each rule is scored as bench/run speech scores the chain (StreamScore): an in-grammar item is right when exactly
 its phrase was said once between its start and the next item's start; an item outside the grammar is right when
@@ -38,11 +39,11 @@ def logsumexp(xs):
     return m + math.log(sum(math.exp(x - m) for x in xs))
 
 
-def features(u, phrases):
-    """The best phrase's index and the measures a rule may threshold."""
+def features(u, phrases, bonus):
+    """The best phrase's index (by log-probability plus {@code bonus} per step) and the measures a rule may threshold."""
     s = u["scores"]
     lp = [r[0] for r in s]
-    best = max(range(phrases), key=lambda i: lp[i])
+    best = max(range(phrases), key=lambda i: lp[i] + bonus * s[i][2])
     others = sorted(lp[:phrases], reverse=True)
     fillers = lp[phrases:]
     return best, {
@@ -57,14 +58,15 @@ def features(u, phrases):
     }
 
 
-def prepare(path):
+def prepare(path, bonus=0.0, voice_check=True):
+    """The streams of a file, each utterance with its best phrase and features; unvoiced ones left out if checked."""
     rows, streams = load(path)
     phrases = rows["phrases"]
     names = rows["rows"]
     for st in streams:
         for u in st["utterances"]:
-            if "scores" in u:
-                b, f = features(u, phrases)
+            if "scores" in u and (u.get("voiced", True) or not voice_check):
+                b, f = features(u, phrases, bonus)
                 u["phrase"] = names[b]
                 u["f"] = f
     return streams
@@ -135,26 +137,45 @@ RULES = {
 }
 
 
+BONUSES = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0]
+
+
+def ceiling(path):
+    for bonus in BONUSES:
+        for check in (True, False):
+            o = score(prepare(path, bonus, check), lambda f: True)
+            print("bonus %.1f voice check %-5s every phrase said: %.1f   %s" % (bonus, check, summary(o)[0], table(o)))
+
+
 def main():
-    tune = prepare(sys.argv[1])
-    held = prepare(sys.argv[2]) if len(sys.argv) > 2 else None
-    print("rule family: chosen on the tune voices (accuracy mean of conditions / out-of-grammar silent)")
+    if sys.argv[1] == "--ceiling":
+        ceiling(sys.argv[2])
+        return
+    files = sys.argv[1:]
+    print("rule family: chosen on the tune voices (accuracy mean of conditions / out-of-grammar silent); bonus per step "
+          "in the choice of the best phrase; voice check")
+    prepared = {}
+    for bonus in BONUSES:
+        for check in (True, False):
+            prepared[(bonus, check)] = [prepare(f, bonus, check) for f in files]
     for name, family in RULES.items():
         best = None
-        for make, args in family:
-            acc, rej = summary(score(tune, make(*args)))
-            if rej >= MIN_REJECTION and (best is None or acc > best[0]):
-                best = (acc, rej, make, args)
+        for key, (tune, *_) in prepared.items():
+            for make, args in family:
+                acc, rej = summary(score(tune, make(*args)))
+                if rej >= MIN_REJECTION and (best is None or acc > best[0]):
+                    best = (acc, rej, make, args, key)
         if best is None:
             print("%-24s no setting silences %.0f %% outside the grammar" % (name, MIN_REJECTION))
             continue
-        acc, rej, make, args = best
-        print("%-24s %-22s tune %.1f / %.1f   %s" % (name, ",".join("%.3g" % a for a in args), acc, rej,
-                                                   table(score(tune, make(*args)))))
-        if held:
-            o = score(held, make(*args))
+        acc, rej, make, args, key = best
+        tune = prepared[key][0]
+        print("%-24s %-14s bonus %.1f voice %-5s tune %.1f / %.1f   %s" % (name, ",".join("%.3g" % a for a in args),
+              key[0], key[1], acc, rej, table(score(tune, make(*args)))))
+        if len(files) > 1:
+            o = score(prepared[key][1], make(*args))
             h_acc, h_rej = summary(o)
-            print("%-24s %-22s held %.1f / %.1f   %s" % ("", "", h_acc, h_rej, table(o)))
+            print("%-24s %-14s %-21s held %.1f / %.1f   %s" % ("", "", "", h_acc, h_rej, table(o)))
 
 
 if __name__ == "__main__":

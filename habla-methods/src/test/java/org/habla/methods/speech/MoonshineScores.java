@@ -25,7 +25,8 @@ import org.habla.sample.Sample;
  * A tool for choosing Moonshine's accept/reject rule: cuts every stream of one split of the evaluation set with the
  * config's {@code audio-processing}, trims and checks each utterance as {@code speech-recognition} does, and writes
  * one JSON line per utterance with the score of every grammar phrase and of each of the grammar's words said alone
- * (log-probability, shortfall from the model's own choice, tokens), and one line per stream with its items. Rules
+ * (log-probability, shortfall from the model's own choice, steps, the worst step's log-probability) and whether it
+ * passed the voice check (utterances that fail it are scored too), and one line per stream with its items. Rules
  * are then compared offline on the tune voices ({@code bench/speech/moonshine-rules.py}).
  * {@code MoonshineScores SETDIR SPLIT OUT.jsonl [encoder decoder]}: the model files default to the cache's.
  */
@@ -85,9 +86,10 @@ public final class MoonshineScores {
                         ObjectNode u = json.createObjectNode().put("kind", "utterance").put("voice", v.name())
                                 .put("condition", condition).put("at", (s.sourceMicros() - BASE_MICROS) / 1e6)
                                 .put("ms", trimmed.length * 1000 / RATE_HZ);
-                        if (trimmed.length < RATE_HZ / 20 || !voice.hasVoice(trimmed, RATE_HZ)) {
+                        if (trimmed.length < RATE_HZ / 20) {
                             u.put("skipped", true);
                         } else {
+                            u.put("voiced", voice.hasVoice(trimmed, RATE_HZ));
                             float[] x = MoonshineDecoder.normalised(MonoAudio.chunk(trimmed, RATE_HZ));
                             MoonshineModel.RowScore[] scores = model.score(model.encode(x), rows, enders);
                             ArrayNode a = u.putArray("scores");
