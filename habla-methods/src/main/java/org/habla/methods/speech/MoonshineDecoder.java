@@ -106,7 +106,8 @@ public final class MoonshineDecoder implements SpeechEngine {
                 utterance.frameCount() * 1000L / RATE_HZ));
     }
 
-    private static float[] normalised(AudioChunk utterance) {
+    /** The utterance as the encoder takes it: floats scaled to {@link #PEAK}, padded to a quarter second. */
+    static float[] normalised(AudioChunk utterance) {
         double[] samples = utterance.channel(0);
         int n = samples.length;
         float[] audio = new float[Math.max(n, MIN_SAMPLES)];

@@ -34,8 +34,11 @@ final class MoonshineModel implements AutoCloseable {
     /** Logits this far below a step's best add less than e^-20 each to its normaliser: left out. */
     private static final float LOG_SUM_RANGE = 20f;
 
-    /** Each scored row: the summed log-probability of its tokens, and the summed shortfall from each step's best. */
-    record RowScore(double logProb, double shortfall, int tokens) {
+    /**
+     * Each scored row: the summed log-probability of its steps (its tokens and its end), the summed shortfall from each
+     * step's best, the number of steps, and the lowest log-probability of one step.
+     */
+    record RowScore(double logProb, double shortfall, int tokens, double worstStep) {
     }
 
     private final OrtEnvironment env = OrtEnvironment.getEnvironment();
@@ -49,6 +52,11 @@ final class MoonshineModel implements AutoCloseable {
 
     /** Loads both models from {@code dir}, each running on {@code threads} threads. */
     static MoonshineModel load(Path dir, int threads) throws IOException {
+        return load(dir.resolve(ENCODER), dir.resolve(DECODER), threads);
+    }
+
+    /** Loads the encoder and decoder from their files (ONNX Runtime's format or ONNX), on {@code threads} threads. */
+    static MoonshineModel load(Path encoderFile, Path decoderFile, int threads) throws IOException {
         OrtEnvironment env = OrtEnvironment.getEnvironment();
         try {
             OrtSession.SessionOptions o = new OrtSession.SessionOptions();
@@ -59,11 +67,12 @@ final class MoonshineModel implements AutoCloseable {
             // the memory pattern those buffers go back to the system after each utterance instead of staying.
             o.setCPUArenaAllocator(false);
             o.setMemoryPatternOptimization(false);
-            OrtSession enc = env.createSession(dir.resolve(ENCODER).toString(), o);
-            OrtSession dec = env.createSession(dir.resolve(DECODER).toString(), o);
+            OrtSession enc = env.createSession(encoderFile.toString(), o);
+            OrtSession dec = env.createSession(decoderFile.toString(), o);
             return new MoonshineModel(enc, dec);
         } catch (OrtException e) {
-            throw new IOException("ONNX Runtime could not load the Moonshine model in " + dir + ": " + e.getMessage(), e);
+            throw new IOException("ONNX Runtime could not load the Moonshine model " + decoderFile.getParent() + ": "
+                    + e.getMessage(), e);
         }
     }
 
@@ -132,6 +141,7 @@ final class MoonshineModel implements AutoCloseable {
                 for (int i = 0; i < b; i++) {
                     double lp = 0;
                     double shortfall = 0;
+                    double worst = 0;
                     for (int t = 0; t <= rows[i].length; t++) {
                         f.get((i * steps + t) * vocab, step);
                         float max = Float.NEGATIVE_INFINITY;
@@ -156,9 +166,10 @@ final class MoonshineModel implements AutoCloseable {
                             token = max + Math.log(end);
                         }
                         lp += token - logZ;
+                        worst = Math.min(worst, token - logZ);
                         shortfall += Math.max(0, max - token);
                     }
-                    out[i] = new RowScore(lp, shortfall, rows[i].length + 1);
+                    out[i] = new RowScore(lp, shortfall, rows[i].length + 1, worst);
                 }
                 return out;
             }

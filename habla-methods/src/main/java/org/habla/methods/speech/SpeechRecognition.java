@@ -47,7 +47,8 @@ import org.habla.sample.TextValue;
  * <p>The model loads in the background when the method starts (a few seconds; readiness is
  * "loading model" until then) and each utterance is decoded in the background, one at a time, so the
  * engine never waits for the recogniser. The status line ({@link SpeechStatus}) says what the chain has heard. Utterances that arrive meanwhile wait, up to {@code maxPending};
- * beyond that the oldest is dropped and counted.
+ * beyond that the oldest is dropped and counted, and so is one that waited longer than {@link #MAX_WAIT_MS} (a
+ * command said while the model loaded is not said once it is ready).
  */
 public final class SpeechRecognition extends ProcessingMethod {
 
@@ -56,6 +57,12 @@ public final class SpeechRecognition extends ProcessingMethod {
     private static final int MIN_UTTERANCE_MS = 50;
     /** Prior of each phone of the free phone loop (Sphinx's out-of-grammar branch and the confidence search). */
     static final double PHONE_INSERTION = 0.05;
+
+    /**
+     * An utterance that waited longer than this for the decoder (while the model loaded, or behind a slow decoder)
+     * is dropped, not decoded: a command said this late no longer fits what the robot is doing.
+     */
+    static final long MAX_WAIT_MS = 5_000;
 
     /** The pause after speech at which the utterance so far is decoded, in case it is over (audio input). */
     static final double SPECULATE_AFTER_MS = 30;
@@ -67,10 +74,11 @@ public final class SpeechRecognition extends ProcessingMethod {
                     "timeMs", "audioMs", "score", "engine"));
 
     /**
-     * An utterance waiting for the decoder, with the source time of its last audio; a speculative one
-     * (the audio input's utterance so far, taken at a pause) carries its {@link Speculation}.
+     * An utterance waiting for the decoder, with the source time of its last audio and the engine time it was
+     * queued at; a speculative one (the audio input's utterance so far, taken at a pause) carries its
+     * {@link Speculation}.
      */
-    private record Pending(AudioChunk audio, long sourceMicros, Speculation speculation) {
+    private record Pending(AudioChunk audio, long sourceMicros, Speculation speculation, long arrivedMicros) {
     }
 
     /**
@@ -192,7 +200,7 @@ public final class SpeechRecognition extends ProcessingMethod {
                         continue;
                     }
                     if (!s.decoded) {
-                        s.ended = new Pending(null, sample.sourceMicros(), null);
+                        s.ended = new Pending(null, sample.sourceMicros(), null, nowMicros());
                         s.whole = whole;
                         continue;
                     }
@@ -272,7 +280,7 @@ public final class SpeechRecognition extends ProcessingMethod {
             return false;
         }
         AudioChunk utterance = MonoAudio.chunk(mono16k, SPHINX_RATE_HZ);
-        pending.addLast(new Pending(utterance, sourceMicros, speculation));
+        pending.addLast(new Pending(utterance, sourceMicros, speculation, nowMicros()));
         while (pending.size() > params.maxPending()) {
             pending.removeFirst();
             status.dropped++;
@@ -287,10 +295,25 @@ public final class SpeechRecognition extends ProcessingMethod {
         if (decoder == null || busy) {
             return;
         }
-        // a speculation overtaken by the speaker is not worth the decoder's time
-        while (!pending.isEmpty() && pending.peekFirst().speculation() != null
-                && (pending.peekFirst().speculation().resumed || pending.peekFirst().speculation().decided)) {
-            pending.removeFirst();
+        while (!pending.isEmpty()) {
+            Pending first = pending.peekFirst();
+            Speculation s = first.speculation();
+            if (s != null && (s.resumed || s.decided)) {
+                // a speculation overtaken by the speaker is not worth the decoder's time
+                pending.removeFirst();
+            } else if (nowMicros() - first.arrivedMicros() > MAX_WAIT_MS * 1000) {
+                pending.removeFirst();
+                status.late++;
+                if (s != null) {
+                    // the utterance it belongs to is as late: it is not decoded whole either
+                    s.decoded = true;
+                    s.decided = true;
+                }
+                log().warn("{}: {} utterances dropped so far: waited over {} ms for {} (the model loading, or a slow "
+                        + "decoder)", id(), status.late, MAX_WAIT_MS, params.engine());
+            } else {
+                break;
+            }
         }
         if (pending.isEmpty()) {
             return;
@@ -377,6 +400,11 @@ public final class SpeechRecognition extends ProcessingMethod {
     /** Utterances dropped because too many waited. */
     public long droppedUtterances() {
         return status.dropped;
+    }
+
+    /** Utterances dropped because they waited longer than {@link #MAX_WAIT_MS} for the decoder. */
+    public long lateUtterances() {
+        return status.late;
     }
 
     /** Utterances not decoded because they held no voice. */

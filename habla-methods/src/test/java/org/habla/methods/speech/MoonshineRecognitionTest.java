@@ -39,7 +39,8 @@ class MoonshineRecognitionTest {
         h.clear().push("segments", MonoAudio.chunk(hiss, 16_000));
         assertThat(h.values("words")).isEqualTo(List.of());
         assertThat(h.readinessDetail()).startsWith("moonshine: 2 utterances cut, 1 decoded, 1 said; rejected: 1 without "
-                + "voice, 0 no phrase, 0 low confidence; no utterance open; 0 queued, 0 dropped; decoding p50 ");
+                + "voice, 0 no phrase, 0 low confidence; no utterance open; 0 queued; dropped: 0 over maxPending, 0 waited over 5 s; "
+                + "decoding p50 ");
         h.stop();
     }
 }

@@ -31,7 +31,8 @@ import org.habla.sample.AudioChunk;
 /**
  * {@code bench/run speech}: the speech chain of config/aibo.json on the held-out voices of the
  * evaluation set ({@code bench/speech/make-eval-set.sh}): accuracy per condition, rejection of speech
- * outside the grammar, the gain of enrolling each teacher, the real-time factor, and — through a
+ * outside the grammar, the gain of enrolling each teacher, the real-time factor (in wall time, and in the chain
+ * thread's CPU time, which other load on the machine does not change), and — through a
  * daemon with real sockets, the stream played in real time — the latency from the end of speech to the
  * phrase on the socket. Each figure for each engine ({@code --engines sphinx4,moonshine}, the default), the
  * config's chain with only its engine changed. Options: {@code --set DIR} (default target/speech-eval),
@@ -41,6 +42,11 @@ import org.habla.sample.AudioChunk;
 public final class SpeechBench {
 
     private static final int CHUNK_MS = 32;
+    /**
+     * The in-memory chain decodes on the calling thread (ONNX Runtime on one thread runs there too): its CPU time is
+     * the chain's cost whatever else holds the cores.
+     */
+    private static final java.lang.management.ThreadMXBean THREADS = java.lang.management.ManagementFactory.getThreadMXBean();
 
     public static void main(String[] args) throws Exception {
         List<String> a = Arrays.asList(args);
@@ -85,13 +91,14 @@ public final class SpeechBench {
         SpeechChain chain = SpeechChain.of(c.method("audio").orElseThrow().params(),
                 ((SpeechRecognitionParams) speech.params()).withEngine(engine), SpeechChain.direct(speech));
         System.out.printf("%nEngine %s (%s)%n", engine, config);
-        System.out.printf("%-9s %-22s %-22s %-12s %-10s %s%n", "condition", "in-grammar right", "out-of-grammar silent",
-                "not grammar", "x realtime", "worst voice");
+        System.out.printf("%-9s %-22s %-22s %-12s %-10s %-10s %s%n", "condition", "in-grammar right",
+                "out-of-grammar silent", "not grammar", "x realtime", "x on CPU", "worst voice");
         StreamScore total = new StreamScore();
         for (String condition : EvalSet.CONDITIONS) {
             StreamScore score = new StreamScore();
             double audioS = 0;
             long busyNs = 0;
+            long cpuNs = 0;
             String worst = "";
             double worstAcc = 101;
             for (EvalSet.Voice v : heldOut) {
@@ -100,7 +107,9 @@ public final class SpeechBench {
                 }
                 AudioChunk stream = Utterances.readWav(v.stream(condition));
                 long t0 = System.nanoTime();
+                long c0 = THREADS.getCurrentThreadCpuTime();
                 List<SpeechChain.Heard> heard = chain.run(stream, CHUNK_MS);
+                cpuNs += THREADS.getCurrentThreadCpuTime() - c0;
                 busyNs += System.nanoTime() - t0;
                 audioS += stream.frameCount() / (double) stream.format().sampleRateHz();
                 StreamScore s = new StreamScore();
@@ -112,9 +121,10 @@ public final class SpeechBench {
                 score.add(s);
             }
             total.add(score);
-            System.out.printf("%-9s %4d/%-4d %6.1f %%   %4d/%-4d %6.1f %%   %-12d %-10.1f %s%n", condition,
+            System.out.printf("%-9s %4d/%-4d %6.1f %%   %4d/%-4d %6.1f %%   %-12d %-10.1f %-10.1f %s%n", condition,
                     score.inGrammarRight, score.inGrammar, score.accuracy(), score.outOfGrammarRejected,
-                    score.outOfGrammar, score.rejection(), score.notInGrammar, audioS / (busyNs / 1e9), worst);
+                    score.outOfGrammar, score.rejection(), score.notInGrammar, audioS / (busyNs / 1e9),
+                    audioS / (cpuNs / 1e9), worst);
         }
         System.out.printf("%-9s %4d/%-4d %6.1f %%   %4d/%-4d %6.1f %%   %-12d%n", "all", total.inGrammarRight,
                 total.inGrammar, total.accuracy(), total.outOfGrammarRejected, total.outOfGrammar, total.rejection(),

@@ -274,6 +274,20 @@ class SpeechRecognitionTest {
     }
 
     @Test
+    void utterancesThatWaitedTooLongWhileTheModelLoadedAreDroppedNotSaidLate() throws Exception {
+        MethodHarness h = MethodHarness.started("speech", new SpeechRecognition(SpeechRecognitionParams.defaults()));
+        List<Utterances.Utterance> all = Utterances.all();
+        for (String phrase : List.of("go forward", "go back")) {
+            h.push("segments", all.stream().filter(u -> u.phrase().equals(phrase)).findFirst().orElseThrow().audio());
+        }
+        h.advanceMillis(SpeechRecognition.MAX_WAIT_MS + 1);
+        h.push("segments", all.stream().filter(u -> u.phrase().equals("well done")).findFirst().orElseThrow().audio());
+        h.runBackgroundAtOnce();
+        assertThat(h.values("words")).containsExactly(new TextValue("well done"));
+        assertThat(h.readinessDetail()).contains("dropped: 0 over maxPending, 2 waited over 5 s");
+    }
+
+    @Test
     void aMissingGrammarFileFailsTheMethodWithItsPath() {
         MethodHarness h = MethodHarness.started("speech",
                 new SpeechRecognition(SpeechRecognitionParams.defaults().withGrammar("/nonexistent/words.gram")));
