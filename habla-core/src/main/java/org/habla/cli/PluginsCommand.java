@@ -1,12 +1,11 @@
 package org.habla.cli;
 
-import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.PrintWriter;
 import java.lang.reflect.RecordComponent;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
+import org.habla.config.ParamsJson;
 import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.OutputPort;
@@ -14,7 +13,7 @@ import org.habla.method.Ports;
 import org.habla.plugin.DriverProvider;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
+import org.habla.plugin.ParamRange;
 import org.habla.plugin.PluginRegistry;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
@@ -27,8 +26,6 @@ import picocli.CommandLine.Spec;
 @Command(name = "plugins", mixinStandardHelpOptions = true,
         description = "List every method type and driver type, with its layers, parameters and ports.")
 public final class PluginsCommand implements Callable<Integer> {
-
-    private static final ObjectMapper JSON = new ObjectMapper();
 
     @Spec
     private CommandSpec spec;
@@ -75,10 +72,9 @@ public final class PluginsCommand implements Callable<Integer> {
     private static <P extends Record> void printPorts(PrintWriter out, MethodProvider<P> provider) {
         Ports ports;
         try {
-            P defaults = JSON.treeToValue(ParamDefaults.filled(JSON.createObjectNode(), provider.paramsType()),
-                    provider.paramsType());
+            P defaults = ParamsJson.defaults(provider.paramsType());
             ports = provider.ports(provider.layers().stream().sorted().findFirst().orElseThrow(), defaults);
-        } catch (JsonProcessingException | RuntimeException e) {
+        } catch (RuntimeException e) {
             out.println("      ports: as its parameters say (the defaults alone do not make a method of it)");
             return;
         }
@@ -108,6 +104,7 @@ public final class PluginsCommand implements Callable<Integer> {
                 } else {
                     line.append(" (required)");
                 }
+                ParamRange.of(doc).ifPresent(r -> line.append(", ").append(r));
                 line.append("  ").append(doc.value());
             }
             out.println(line);

@@ -1,6 +1,5 @@
 package org.habla.methods;
 
-import org.habla.plugin.ParamDefaults;
 
 /**
  * The checks params records apply in their compact constructors: each throws an
@@ -15,22 +14,22 @@ public final class ParamRules {
 
     /** A finite number greater than zero; null takes the declared default. */
     public static double positive(Class<? extends Record> params, String name, Double value) {
-        return positive(name, ParamDefaults.or(params, name, value));
+        return positive(name, or(params, name, value));
     }
 
     /** A finite number of at least zero; null takes the declared default. */
     public static double nonNegative(Class<? extends Record> params, String name, Double value) {
-        return nonNegative(name, ParamDefaults.or(params, name, value));
+        return nonNegative(name, or(params, name, value));
     }
 
     /** A finite number within [min, max]; null takes the declared default. */
     public static double within(Class<? extends Record> params, String name, Double value, double min, double max) {
-        return within(name, ParamDefaults.or(params, name, value), min, max);
+        return within(name, or(params, name, value), min, max);
     }
 
     /** A whole number within [min, max]; null takes the declared default. */
     public static int within(Class<? extends Record> params, String name, Integer value, int min, int max) {
-        return within(name, ParamDefaults.or(params, name, value), min, max);
+        return within(name, or(params, name, value), min, max);
     }
 
     /**
@@ -55,6 +54,24 @@ public final class ParamRules {
     public static Double withinOrNull(String name, Double value, double min, double max) {
         return value == null ? null : within(name, value, min, max);
     }
+
+    /** {@code value}, or when null the default {@code params} declares for {@code name}. */
+    @SuppressWarnings("unchecked")
+    public static <T> T or(Class<? extends Record> params, String name, T value) {
+        if (value != null) {
+            return value;
+        }
+        for (java.lang.reflect.RecordComponent c : params.getRecordComponents()) {
+            if (c.getName().equals(name)) {
+                com.fasterxml.jackson.databind.JsonNode d = org.habla.plugin.ParamDefaults.json(params, c)
+                        .orElseThrow(() -> new IllegalArgumentException(name + " is required"));
+                return (T) JSON.convertValue(d, JSON.constructType(c.getGenericType()));
+            }
+        }
+        throw new IllegalArgumentException(params.getName() + " has no parameter " + name);
+    }
+
+    private static final com.fasterxml.jackson.databind.ObjectMapper JSON = new com.fasterxml.jackson.databind.ObjectMapper();
 
     private static double positive(String name, double v) {
         if (!(v > 0) || !Double.isFinite(v)) {

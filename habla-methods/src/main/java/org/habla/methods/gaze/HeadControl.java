@@ -54,7 +54,7 @@ public final class HeadControl extends ProcessingMethod {
 
     HeadControl(HeadControlParams params) {
         this.params = params;
-        this.limits = HeadLimits.resolve(params, null);
+        this.limits = params.limits();
         this.commanded = limits.clamp(new HeadPose(params.scanTiltRad(), 0, params.nodRad()));
         input(BLOBS, this::onBlobs);
         input(CAMERA, this::onCamera);

@@ -10,7 +10,6 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
-import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
@@ -46,22 +45,38 @@ public final class Comfort extends VirtualMethod {
 
     /** The params of a {@code comfort} method: the comfortable ranges. */
     public record Params(
-            @Param(value = "coldest comfortable air", unit = "degC", defaultValue = "20") Double minTemperatureC,
-            @Param(value = "warmest comfortable air", unit = "degC", defaultValue = "25") Double maxTemperatureC,
-            @Param(value = "driest comfortable air", unit = "%", defaultValue = "30") Double minHumidityPct,
-            @Param(value = "most humid comfortable air", unit = "%", defaultValue = "60") Double maxHumidityPct,
-            @Param(value = "least light to read or work by", unit = "lx", defaultValue = "200") Double minLux,
-            @Param(value = "most light before it glares", unit = "lx", defaultValue = "2000") Double maxLux,
-            @Param(value = "loudest comfortable sound", unit = "dB", defaultValue = "-20") Double maxSoundDb) {
+            @Param(value = "coldest comfortable air", unit = "degC", defaultValue = "20",
+                    min = -40, max = 85)
+            double minTemperatureC,
+            @Param(value = "warmest comfortable air", unit = "degC", defaultValue = "25",
+                    min = -40, max = 85)
+            double maxTemperatureC,
+            @Param(value = "driest comfortable air", unit = "%", defaultValue = "30",
+                    min = 0, max = 100)
+            double minHumidityPct,
+            @Param(value = "most humid comfortable air", unit = "%", defaultValue = "60",
+                    min = 0, max = 100)
+            double maxHumidityPct,
+            @Param(value = "least light to read or work by", unit = "lx", defaultValue = "200",
+                    min = 0, max = 1e6)
+            double minLux,
+            @Param(value = "most light before it glares", unit = "lx", defaultValue = "2000",
+                    min = 0, max = 1e6)
+            double maxLux,
+            @Param(value = "loudest comfortable sound", unit = "dB", defaultValue = "-20",
+                    min = -200, max = 200)
+            double maxSoundDb) {
 
         public Params {
-            minTemperatureC = ParamRules.within(Params.class, "minTemperatureC", minTemperatureC, -40, 85);
-            maxTemperatureC = ParamRules.within(Params.class, "maxTemperatureC", maxTemperatureC, minTemperatureC, 85);
-            minHumidityPct = ParamRules.within(Params.class, "minHumidityPct", minHumidityPct, 0, 100);
-            maxHumidityPct = ParamRules.within(Params.class, "maxHumidityPct", maxHumidityPct, minHumidityPct, 100);
-            minLux = ParamRules.within(Params.class, "minLux", minLux, 0, 1e6);
-            maxLux = ParamRules.within(Params.class, "maxLux", maxLux, minLux, 1e6);
-            maxSoundDb = ParamRules.within(Params.class, "maxSoundDb", maxSoundDb, -200, 200);
+            atLeast("maxTemperatureC", maxTemperatureC, "minTemperatureC", minTemperatureC);
+            atLeast("maxHumidityPct", maxHumidityPct, "minHumidityPct", minHumidityPct);
+            atLeast("maxLux", maxLux, "minLux", minLux);
+        }
+
+        private static void atLeast(String name, double value, String lowName, double low) {
+            if (value < low) {
+                throw new IllegalArgumentException(name + " must be at least " + lowName + " (" + low + "), was " + value);
+            }
         }
     }
 

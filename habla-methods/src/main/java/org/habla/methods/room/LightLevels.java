@@ -14,7 +14,6 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
-import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
@@ -39,11 +38,12 @@ public final class LightLevels extends VirtualMethod {
     /** The params of a {@code light-levels} method. */
     public record Params(
             @Param("the zones, each an input of the method (letters, digits, '_', '-')") List<String> zones,
-            @Param(value = "a zone is dark below this", unit = "lx", defaultValue = "200") Double darkLux) {
+            @Param(value = "a zone is dark below this", unit = "lx", defaultValue = "200",
+                    min = 0, max = 1e6)
+            double darkLux) {
 
         public Params {
             zones = new Occupancy.Params(zones, 0).zones();
-            darkLux = ParamRules.within(Params.class, "darkLux", darkLux, 0, 1e6);
         }
     }
 

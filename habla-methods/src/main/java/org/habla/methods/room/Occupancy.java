@@ -15,7 +15,6 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
-import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
@@ -44,15 +43,9 @@ public final class Occupancy extends VirtualMethod {
     public record Params(
             @Param("the zones, each an input of the method (letters, digits, '_', '-')") List<String> zones,
             @Param(value = "the state is sent again this often; 0: only when a presence comes", unit = "ms",
-                    defaultValue = "1000") Integer periodMs) {
-
-        /** The zones, sent again every second. */
-        public Params(List<String> zones) {
-            this(zones, null);
-        }
+                    defaultValue = "1000", min = 0, max = 3_600_000) int periodMs) {
 
         public Params {
-            periodMs = ParamRules.within(Params.class, "periodMs", periodMs, 0, 3_600_000);
             if (zones == null || zones.isEmpty()) {
                 throw new IllegalArgumentException("zones: name at least one zone");
             }

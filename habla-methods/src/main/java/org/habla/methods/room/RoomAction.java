@@ -17,7 +17,6 @@ import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
@@ -69,12 +68,11 @@ public final class RoomAction extends VirtualMethod {
             @Param(value = "the blinds, each an output of its name with how far they are open, 0..1",
                     defaultValue = "[]") List<String> blinds,
             @Param(value = "whether the room has a speaker ('say ...' on output say)", defaultValue = "false")
-            Boolean speaker) {
+            boolean speaker) {
 
         public Params {
-            lamps = List.copyOf(ParamDefaults.or(Params.class, "lamps", lamps));
-            blinds = List.copyOf(ParamDefaults.or(Params.class, "blinds", blinds));
-            speaker = ParamDefaults.or(Params.class, "speaker", speaker);
+            lamps = List.copyOf(lamps);
+            blinds = List.copyOf(blinds);
             if (lamps.isEmpty() && blinds.isEmpty() && !speaker) {
                 throw new IllegalArgumentException("lamps, blinds, speaker: the room needs something to act on");
             }

@@ -7,7 +7,6 @@ import org.habla.methods.audio.AudioProcessingParams;
 import org.habla.methods.audio.UtteranceGate;
 import org.habla.methods.audio.VoiceActivityDetector;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code speech-recognition} method: grammar, speaker, rejection, backlog and endpointing. */
 public record SpeechRecognitionParams(
@@ -58,15 +57,15 @@ public record SpeechRecognitionParams(
         Integer queue) {
 
     public SpeechRecognitionParams {
-        grammar = ParamDefaults.or(SpeechRecognitionParams.class, "grammar", grammar).trim();
+        grammar = ParamRules.or(SpeechRecognitionParams.class, "grammar", grammar).trim();
         if (!grammar.isEmpty() && !grammar.endsWith(".gram")) {
             throw new IllegalArgumentException("grammar must name a JSGF file ending in .gram, was '" + grammar + "'");
         }
-        adaptation = ParamDefaults.or(SpeechRecognitionParams.class, "adaptation", adaptation).trim();
+        adaptation = ParamRules.or(SpeechRecognitionParams.class, "adaptation", adaptation).trim();
         minConfidence = ParamRules.within(SpeechRecognitionParams.class, "minConfidence", minConfidence, 0, 1);
         outOfGrammarProbability = ParamRules.within(SpeechRecognitionParams.class, "outOfGrammarProbability", outOfGrammarProbability, 0, 1);
         garbagePrior = ParamRules.within(SpeechRecognitionParams.class, "garbagePrior", garbagePrior, 0, 1);
-        denoise = ParamDefaults.or(SpeechRecognitionParams.class, "denoise", denoise);
+        denoise = ParamRules.or(SpeechRecognitionParams.class, "denoise", denoise);
         maxPending = ParamRules.within(SpeechRecognitionParams.class, "maxPending", maxPending, 1, 1000);
         minVoicedMs = ParamRules.within(SpeechRecognitionParams.class, "minVoicedMs", minVoicedMs, 0, 5000);
         openAboveFloorDb = ParamRules.within(SpeechRecognitionParams.class, "openAboveFloorDb", openAboveFloorDb, 0, 80);
