@@ -69,6 +69,9 @@ final class ConfigReport {
         }
         parts.add(cfg.status().port() == 0 ? "no status endpoint"
                 : "status on " + cfg.status().bind() + ":" + cfg.status().port());
+        if (cfg.status().monitorPort() > 0) {
+            parts.add("monitor on " + cfg.status().monitorBind() + ":" + cfg.status().monitorPort());
+        }
         var sec = cfg.security();
         if (sec.credentials() != null) {
             parts.add(count(sec.credentials().clientNames().size(), "client") + " in "

@@ -35,7 +35,7 @@ public final class ConfigLoader {
             Set.of("maxLineBytes", "maxBinaryBytes", "maxClientsPerPort", "clientQueueSamples", "maxPendingPerPort", "idleTimeoutMs",
                     "frameTimeoutMs", "evictableIdleMs", "socketBlockBudgetBytes", "processBlockBudgetBytes");
     static final Set<String> SAFETY_KEYS = Set.of("watchdogMs");
-    static final Set<String> STATUS_KEYS = Set.of("bind", "port", "monitorPort", "tls");
+    static final Set<String> STATUS_KEYS = Set.of("bind", "port", "monitorPort", "monitorBind", "tls");
     static final Set<String> INTERFACE_KEYS = Set.of("id", "driver", "address", "params", "reconnect");
     static final Set<String> RECONNECT_KEYS = Set.of("initialMs", "maxMs", "connectTimeoutMs", "readTimeoutMs",
             "tcpKeepAliveIdleS", "tcpKeepAliveIntervalS", "tcpKeepAliveCount");
@@ -262,6 +262,6 @@ public final class ConfigLoader {
         StatusConfig d = StatusConfig.DEFAULTS;
         return new StatusConfig(o.optionalString("bind").orElse(d.bind()),
                 (int) o.integer("port", d.port(), 0, 65_535), (int) o.integer("monitorPort", d.monitorPort(), 0, 65_535),
-                o.bool("tls", false));
+                o.bool("tls", false), o.optionalString("monitorBind").orElse(d.monitorBind()));
     }
 }

@@ -58,10 +58,13 @@ public final class ConfigSchema {
                 .set("properties", props("watchdogMs", integer(0, ConfigLoader.MAX_MS, Safety.DEFAULTS.watchdogMs(),
                         "Stop the robot when no control client has written for this long; 0 turns the silence check off [ms]"))));
         p.set("status", object("The status endpoint read by `habla status`.").set("properties", props(
-                "bind", string("The address to listen on.").put("default", StatusConfig.DEFAULTS.bind()),
+                "bind", string("The address the status endpoint listens on (0.0.0.0: every IPv4 address; ::, both "
+                        + "families).").put("default", StatusConfig.DEFAULTS.bind()),
                 "port", integer(0, 65_535, StatusConfig.DEFAULTS.port(), "The TCP port; 0 turns the endpoint off."),
                 "monitorPort", integer(0, 65_535, StatusConfig.DEFAULTS.monitorPort(),
                         "The live monitor's port: a web page and the Foxglove WebSocket protocol; 0: no monitor."),
+                "monitorBind", string("The address the monitor listens on; it has no authentication, so beyond "
+                        + "loopback it needs security.insecure.").put("default", StatusConfig.DEFAULTS.monitorBind()),
                 "tls", bool(false, "The status endpoint speaks TLS with the certificate of security.tls."))));
         p.set("interfaces", NODES.objectNode().put("description", "The robot's interface servers.")
                 .put("type", "array").set("items", ref("interface")));

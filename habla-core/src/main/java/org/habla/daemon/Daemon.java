@@ -148,7 +148,7 @@ public final class Daemon implements AutoCloseable {
                 // The monitor binds and serves in one step: it starts last of the ports, before any control
                 // socket serves, so a monitor port taken meanwhile still leaves the control sockets unused.
                 try {
-                    d.monitor = Monitor.start(config.status().bind(), config.status().monitorPort(), d.liveView(),
+                    d.monitor = Monitor.start(config.status().monitorBind(), config.status().monitorPort(), d.liveView(),
                             () -> SvgWriter.write(GraphPicture.of(config, registry)));
                 } catch (IOException e) {
                     throw new PortsUnavailableException(List.of(new ConfigError("$.status.monitorPort", e.getMessage())));
@@ -175,7 +175,7 @@ public final class Daemon implements AutoCloseable {
         }
         LOG.info("HABLA daemon '{}' running: {} control sockets{}{}", config.system(), d.servers.size(),
                 d.statusServer == null ? "" : ", status on port " + d.statusServer.port(),
-                d.monitor == null ? "" : ", monitor on http://" + config.status().bind() + ":" + d.monitor.port() + "/");
+                d.monitor == null ? "" : ", monitor on http://" + config.status().monitorBind() + ":" + d.monitor.port() + "/");
         return d;
     }
 

@@ -28,4 +28,17 @@ public interface ReadingSink {
      */
     default void availability(String channel, boolean available, String why) {
     }
+
+    /**
+     * The state of a device behind the link — a sensor, a lamp, the radio bridge they hang on — as the driver
+     * learns it, for the status and the log: {@code habla status} lists each device with its state, so an offline
+     * one is named. Telling a device's state changes nothing else: which channels go stale is
+     * {@link #availability}'s to say, which commands are refused the session's. A fresh session tells its devices
+     * again; until it does, none is listed. A sink that does not track devices ignores this.
+     *
+     * @param device the device's name, as the driver's params give it
+     * @param detail what said so (e.g. {@code "zigbee2mqtt/hall_motion/availability says offline"})
+     */
+    default void device(String device, boolean online, String detail) {
+    }
 }

@@ -27,6 +27,8 @@ final class InterfaceReadings {
     private final Map<String, ChannelDescriptor> channels;
     private final Map<String, Producer> ports = new HashMap<>();
     private final Map<String, String> unavailable = new ConcurrentHashMap<>();
+    /** The devices the driver told of, by name, sorted for the status. */
+    private final Map<String, DeviceState> devices = new java.util.concurrent.ConcurrentSkipListMap<>();
     /** Whether the engine tells the {@code link} record, or the driver's connections deliver it (a recording). */
     private final boolean engineTellsLink;
     private final EngineClock clock;
@@ -73,6 +75,11 @@ final class InterfaceReadings {
     /** A fresh session tells its devices' availability again: until it does, every device is available. */
     void forgetAvailability() {
         unavailable.clear();
+        devices.clear();
+    }
+
+    /** What a driver last said of one device, and since when (engine clock, µs). */
+    private record DeviceState(boolean online, String detail, long sinceMicros) {
     }
 
     ObjectNode robotInfo() {
@@ -85,8 +92,16 @@ final class InterfaceReadings {
         status.put("unknownChannel", unknownChannel.sum());
     }
 
-    /** Adds the unavailable devices, if any, and how many readings each channel published to the status. */
+    /**
+     * Adds the devices the driver told of and the unavailable channels, if any, and how many readings each channel
+     * published to the status.
+     */
     void publishedTo(ObjectNode status) {
+        if (!devices.isEmpty()) {
+            ObjectNode ds = status.putObject("devices");
+            devices.forEach((name, d) -> ds.putObject(name).put("online", d.online()).put("detail", d.detail())
+                    .put("sinceMicros", d.sinceMicros()));
+        }
         if (!unavailable.isEmpty()) {
             ObjectNode un = status.putObject("unavailable");
             unavailable.forEach(un::put);
@@ -143,6 +158,20 @@ final class InterfaceReadings {
                     states.refreshStaleness();
                 }
             });
+        }
+
+        @Override
+        public void device(String device, boolean online, String detail) {
+            DeviceState before = devices.get(device);
+            if (before != null && before.online() == online && before.detail().equals(detail)) {
+                return;
+            }
+            long since = before != null && before.online() == online ? before.sinceMicros() : clock.nowMicros();
+            devices.put(device, new DeviceState(online, detail, since));
+            if (before == null ? !online : before.online() != online) {
+                LOG.info("interface {}: device {} is {} ({})", interfaceId, device, online ? "online" : "offline",
+                        detail);
+            }
         }
 
         @Override

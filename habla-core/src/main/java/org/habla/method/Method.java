@@ -198,10 +198,7 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
         return context().nowMicros();
     }
 
-    /**
-     * Whether a link, device or worker the method's inputs come from is down now: a command sent meanwhile may
-     * never arrive, so a method that skips repeated commands should not count it as delivered.
-     */
+    /** Whether a link, device or worker its inputs come from is down now (a command sent meanwhile may not arrive). */
     protected final boolean stale() {
         return context().stale();
     }

@@ -101,6 +101,13 @@ public final class Monitor implements AutoCloseable {
         ServerConnector connector = new ServerConnector(server, 1, 1);
         connector.setHost(bind);
         connector.setPort(port);
+        try {
+            // Exactly the address asked for (0.0.0.0 is IPv4 only; see BindAddress); 0: the system's backlog.
+            connector.open(org.habla.net.BindAddress.of(bind).listen(port, 0));
+        } catch (IOException e) {
+            hub.close();
+            throw new IOException("the monitor cannot listen on " + bind + ":" + port + ": " + e.getMessage(), e);
+        }
         server.addConnector(connector);
         WebSocketUpgradeHandler ws = WebSocketUpgradeHandler.from(server, container -> {
             container.setMaxTextMessageSize(MAX_PAGE_MESSAGE_BYTES);

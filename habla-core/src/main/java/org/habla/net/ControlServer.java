@@ -3,8 +3,6 @@ package org.habla.net;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
-import java.net.InetAddress;
-import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.List;
@@ -111,12 +109,11 @@ public final class ControlServer implements AutoCloseable {
         }
         String bind = bindAddress();
         // A channel's socket: what it accepts are channels, so a plain connection can be written without waiting.
-        ServerSocket server = java.nio.channels.ServerSocketChannel.open().socket();
+        // It listens on exactly the address asked for (0.0.0.0 is IPv4 only; see BindAddress).
+        ServerSocket server;
         try {
-            server.setReuseAddress(true);
-            server.bind(new InetSocketAddress(InetAddress.getByName(bind), expose.port()), ConnectionGuard.ACCEPT_BACKLOG);
+            server = BindAddress.of(bind).listen(expose.port(), ConnectionGuard.ACCEPT_BACKLOG).socket();
         } catch (IOException e) {
-            server.close();
             throw new IOException("control socket '" + point.name() + "' of method " + point.methodId()
                     + " cannot listen on " + bind + ":" + expose.port() + ": " + e.getMessage(), e);
         }

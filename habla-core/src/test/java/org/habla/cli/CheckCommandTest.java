@@ -36,7 +36,7 @@ class CheckCommandTest {
                 .contains("1 interface (robot: robot-sim at 127.0.0.1:8101)")
                 .contains("6 methods (2 sensors_actuators, 2 processing, 2 virtual)")
                 .contains("2 control sockets (distance_angle on 127.0.0.1:7002, action on 127.0.0.1:7004)")
-                .contains("1 method on a worker (action on 10.0.0.5:7600)")
+                .contains("1 method on a worker (action on 127.0.0.1:7600)")
                 .contains("status on 127.0.0.1:7199")
                 .contains("motion watchdog 500 ms");
         assertThat(run.out().lines()).allSatisfy(l -> assertThat(l.length()).isLessThanOrEqualTo(100));

@@ -28,7 +28,7 @@ class RunPlacementTest {
             worker.start();
             ObjectMapper json = new ObjectMapper();
             ObjectNode config = (ObjectNode) json.readTree(getClass().getResource("/configs/valid/pioneer-like.json"));
-            // Only loopback: the file places 'action' on a lab computer, which this test must not try to reach.
+            // The file places 'action' on a worker at 7600, which may not be there: this test starts its own.
             config.withArray("methods").forEach(m -> ((ObjectNode) m).remove("host"));
             ((ObjectNode) config.withArray("methods").get(1)).put("host", "127.0.0.1:" + worker.port());
             // Free ports instead of the file's 7002, 7004, 7199: a daemon running on this machine may hold those.

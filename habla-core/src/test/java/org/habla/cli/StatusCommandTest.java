@@ -2,38 +2,10 @@ package org.habla.cli;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
-import java.io.PrintWriter;
-import java.io.StringWriter;
 import org.junit.jupiter.api.Test;
 
 class StatusCommandTest {
-
-    @Test
-    void theSocketTableNamesWhoCommandsEachActuatingSocket() throws Exception {
-        JsonNode st = new ObjectMapper().readTree("""
-                {"system": "s", "watchdog": {}, "sockets": [
-                  {"socket": "action", "port": 7004, "clients": 2, "control": {"holder":
-                    {"connection": "action#3", "address": "127.0.0.1:53422"}, "since": "2025-01-01T10:00:00Z",
-                    "silentMs": 120}},
-                  {"socket": "say", "port": 7013, "clients": 0, "control": {"holder": null}},
-                  {"socket": "drive", "port": 7014, "clients": 1, "auth": "required", "authFailures": 2, "control":
-                    {"holder": {"client": "mdb", "connection": "drive#1", "address": "10.0.0.9:5000"},
-                    "since": "2025-01-01T10:00:00Z", "silentMs": 5}},
-                  {"socket": "distance_angle", "port": 7002, "clients": 1}],
-                 "statusEndpoint": {"auth": "required", "authenticated": 4, "authFailures": 3}}
-                """);
-        StringWriter text = new StringWriter();
-        StatusCommand.print(st, new PrintWriter(text));
-        String[] lines = text.toString().split("\n");
-        assertThat(text.toString()).contains("COMMANDED BY");
-        assertThat(line(lines, "action")).endsWith("action#3 127.0.0.1:53422 since 2025-01-01T10:00:00Z (silent 120 ms)");
-        assertThat(line(lines, "say")).endsWith("nobody");
-        assertThat(line(lines, "drive")).endsWith("mdb drive#1 10.0.0.9:5000 since 2025-01-01T10:00:00Z (silent 5 ms)");
-        assertThat(text.toString()).contains("authentication required on drive, the status endpoint; 5 failed attempts");
-        assertThat(line(lines, "distance_angle")).endsWith("-");
-    }
 
     @Test
     void theCommandAuthenticatesWhereTheEndpointRequiresIt(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
@@ -64,12 +36,65 @@ class StatusCommandTest {
         }
     }
 
-    private static String line(String[] lines, String socket) {
-        for (String l : lines) {
-            if (l.startsWith(socket + " ")) {
-                return l.stripTrailing();
-            }
+    @Test
+    void theCommandFindsTheStatusEndpointFromTheDaemonsConfig(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        int port = org.habla.testing.DaemonProcess.freePorts(1)[0];
+        java.nio.file.Path config = java.nio.file.Files.writeString(dir.resolve("room.json"), """
+                {"system": "room", "security": {"insecure": true}, "status": {"bind": "0.0.0.0", "port": %d}}
+                """.formatted(port));
+        try (var server = new org.habla.status.StatusServer(new org.habla.config.StatusConfig("0.0.0.0", port),
+                () -> new ObjectMapper().createObjectNode().put("system", "room"))) {
+            server.start();
+            CommandRun positional = CommandRun.of(new StatusCommand(), config.toString(), "--json");
+            assertThat(positional.exitCode()).as(positional.err()).isEqualTo(ExitCodes.OK);
+            assertThat(positional.out()).contains("\"system\" : \"room\"");
+
+            CommandRun option = CommandRun.of(new StatusCommand(), "--config", config.toString(), "--json");
+            assertThat(option.exitCode()).as(option.err()).isEqualTo(ExitCodes.OK);
+            assertThat(option.out()).contains("\"system\" : \"room\"");
         }
-        throw new AssertionError("no line for socket " + socket);
+        CommandRun gone = CommandRun.of(new StatusCommand(), config.toString());
+        assertThat(gone.exitCode()).isEqualTo(ExitCodes.RUNTIME_FAILURE);
+        assertThat(gone.err()).contains("no daemon status at 127.0.0.1:" + port, "status.port of " + config);
+    }
+
+    @Test
+    void aConfigWhoseStatusSpeaksTlsIsReadTrustingItsOwnCertificate(@org.junit.jupiter.api.io.TempDir
+            java.nio.file.Path dir) throws Exception {
+        java.nio.file.Path cert = dir.resolve("lab.crt");
+        java.nio.file.Path key = dir.resolve("lab.key");
+        Process p = new ProcessBuilder("openssl", "req", "-x509", "-newkey", "ec", "-pkeyopt",
+                "ec_paramgen_curve:prime256v1", "-nodes", "-keyout", key.toString(), "-out", cert.toString(), "-days",
+                "2", "-subj", "/CN=localhost", "-addext", "subjectAltName=IP:127.0.0.1").redirectErrorStream(true)
+                .start();
+        String made = new String(p.getInputStream().readAllBytes(), java.nio.charset.StandardCharsets.UTF_8);
+        assertThat(p.waitFor(60, java.util.concurrent.TimeUnit.SECONDS) && p.exitValue() == 0).as(made).isTrue();
+        int port = org.habla.testing.DaemonProcess.freePorts(1)[0];
+        java.nio.file.Path config = java.nio.file.Files.writeString(dir.resolve("lab.json"), """
+                {"system": "lab", "security": {"tls": {"certificate": "lab.crt", "key": "lab.key"}},
+                 "status": {"port": %d, "tls": true}}
+                """.formatted(port));
+        try (var server = new org.habla.status.StatusServer(new org.habla.config.StatusConfig("127.0.0.1", port),
+                org.habla.config.Limits.DEFAULTS, () -> new ObjectMapper().createObjectNode().put("system", "lab"),
+                org.habla.security.PortAccess.open("@status"), org.habla.security.Tls.server(cert, key))) {
+            server.start();
+            CommandRun run = CommandRun.of(new StatusCommand(), config.toString(), "--json");
+            assertThat(run.exitCode()).as(run.err()).isEqualTo(ExitCodes.OK);
+            assertThat(run.out()).contains("\"system\" : \"lab\"");
+        }
+    }
+
+    @Test
+    void aConfigWithoutAStatusEndpointIsSaidSo(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        java.nio.file.Path config = java.nio.file.Files.writeString(dir.resolve("quiet.json"),
+                "{\"system\": \"quiet\", \"status\": {\"port\": 0}}");
+        CommandRun run = CommandRun.of(new StatusCommand(), config.toString());
+        assertThat(run.exitCode()).isEqualTo(ExitCodes.USAGE_OR_CONFIG);
+        assertThat(run.err()).contains("turns the status endpoint off (status.port 0)");
+
+        CommandRun broken = CommandRun.of(new StatusCommand(), dir.resolve("missing.json").toString());
+        assertThat(broken.exitCode()).isEqualTo(ExitCodes.USAGE_OR_CONFIG);
     }
 }

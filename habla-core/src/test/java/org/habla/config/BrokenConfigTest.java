@@ -25,7 +25,7 @@ class BrokenConfigTest {
         unknown-root-key                  | $.methds                        | unknown key 'methds' (allowed: $schema, bridges, description, interfaces, limits, methods, safety, security, status, system)
         socket-beyond-loopback-without-auth | $.methods[0].expose.bind      | socket 'action' binds 0.0.0.0, beyond loopback, without authentication
         status-beyond-loopback-without-auth | $.status.bind                 | the status endpoint binds 0.0.0.0, beyond loopback, without authentication
-        monitor-beyond-loopback           | $.status.monitorPort            | the monitor has no authentication, so it may not listen on 0.0.0.0
+        monitor-beyond-loopback           | $.status.monitorBind            | the monitor has no authentication, so it may not listen on 0.0.0.0
         tls-socket-without-certificate    | $.methods[0].expose.tls         | a TLS socket needs security.tls with a certificate and its key
         credentials-file-missing          | $.security.credentials          | no-such.credentials.json $: no such file
         security-loopback-unknown         | $.security.loopback             | must be "open" or "authenticated", was "closed"
@@ -90,6 +90,7 @@ class BrokenConfigTest {
         layer-rule-sensors-to-virtual     | $.methods[1].inputs.in          | 'sonar.ranges' breaks the layer rule: a method exchanges data only with methods of its own layer or a neighbouring layer
         exposed-without-output-or-control | $.methods[3].expose             | an exposed method needs an output or a 'control' input, and 'sink' has neither
         host-without-port                 | $.methods[1].host               | 'worker1' names no port: write host:port
+        worker-beyond-loopback-without-secret | $.methods[0].host           | worker 10.0.0.21:7600 is beyond loopback, where a worker requires the shared secret
         fallback-without-host             | $.methods[1].fallback           | a fallback needs a "host": it says what to do while that worker is lost
         fallback-unknown                  | $.methods[1].fallback           | 'remote' is not a fallback (write none or local)
         expose-port-missing               | $.methods[0].expose.port        | required key 'port' is missing

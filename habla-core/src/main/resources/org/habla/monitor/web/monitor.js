@@ -73,14 +73,33 @@ function paintGraph(st) {
     const lat = m.latency || {};
     title.textContent = `${m.id} (${m.type}): ${m.state}${m.stale ? ", stale" : ""}${m.ready ? "" : ", not ready"}` +
       `\n${(m.handledPerS || 0).toFixed(1)} handled/s, p50 ${ms(lat.p50Us)} ms, p99 ${ms(lat.p99Us)} ms` +
-      (m.failure ? `\nfailed: ${m.failure}` : "");
+      (m.failure ? `\nfailed: ${m.failure}` : "") + (m.staleBecause ? `\nstale: ${m.staleBecause.why}` : "");
   }
   for (const i of st.interfaces || []) {
+    const unavailable = i.unavailable || {};
     for (const g of svg.querySelectorAll(`g.node[id^="@${CSS.escape(i.id)}."]`)) {
-      g.classList.toggle("link-up", i.up);
-      g.classList.toggle("link-down", !i.up);
+      // A channel is down with its link, or alone while the device behind it is unavailable.
+      const why = i.up ? unavailable[g.id.substring(i.id.length + 2)] : "link down";
+      g.classList.toggle("link-up", why === undefined);
+      g.classList.toggle("link-down", why !== undefined);
+      let title = g.querySelector("title");
+      if (!title) title = g.appendChild(svgEl("title", {}));
+      title.textContent = g.id + (why === undefined ? "" : ": " + why);
     }
   }
+}
+
+// One row per device a driver reports, under its interface's row.
+function deviceRows(i, nowMicros) {
+  return Object.entries(i.devices || {}).map(([name, d]) => {
+    const tr = el("tr", {id: "device-" + i.id + "-" + name, class: "device " + (d.online ? "up" : "down")});
+    tr.appendChild(el("td", {}, "\u21b3 " + name));
+    tr.appendChild(el("td", {class: d.online ? "up" : "down"}, d.online ? "online" : "OFFLINE"));
+    tr.appendChild(el("td", {}, d.sinceMicros ? new Date(d.sinceMicros / 1000).toLocaleTimeString() + ", " +
+      ago(d.sinceMicros, nowMicros) : ""));
+    tr.appendChild(el("td", {}, d.detail || ""));
+    return tr;
+  });
 }
 
 // ---------------------------------------------------------------- status tables
@@ -98,15 +117,16 @@ function renderStatus(msg) {
   wd.className = "badge " + (w.tripped ? "tripped" : "up");
 
   const links = document.querySelector("#links tbody");
-  links.replaceChildren(...(st.interfaces || []).map(i => {
+  links.replaceChildren(...(st.interfaces || []).flatMap(i => {
     const tr = el("tr", {id: "link-" + i.id, class: i.up ? "up" : "down"});
     tr.appendChild(el("td", {}, i.id + " (" + i.driver + ")"));
     tr.appendChild(el("td", {class: i.up ? "up" : "down"}, i.up ? "up" : "DOWN"));
     tr.appendChild(el("td", {}, i.sinceMicros ? new Date(i.sinceMicros / 1000).toLocaleTimeString() + ", " +
       ago(i.sinceMicros, msg.atMicros) : ""));
     const errs = (i.connections || []).filter(c => !c.up).map(c => c.name + (c.lastError ? ": " + c.lastError : ""));
+    if (i.lastDrop) errs.push("last command dropped, on " + i.lastDrop.channel + ": " + i.lastDrop.why);
     tr.appendChild(el("td", {}, errs.join("; ")));
-    return tr;
+    return [tr, ...deviceRows(i, msg.atMicros)];
   }));
 
   const sockets = document.querySelector("#sockets tbody");
@@ -132,8 +152,11 @@ function renderStatus(msg) {
     tr.appendChild(el("td", {}, m.id));
     tr.appendChild(el("td", {}, m.type));
     tr.appendChild(el("td", {}, m.layer));
-    tr.appendChild(el("td", {class: cls === "running" ? "up" : cls === "failed" ? "down" : cls},
-      m.state.toLowerCase() + (m.stale ? ", stale" : "") + (m.ready ? "" : ", not ready")));
+    const stateCell = el("td", {class: cls === "running" ? "up" : cls === "failed" ? "down" : cls},
+      m.state.toLowerCase() + (m.stale ? ", stale" + (m.staleBecause ? " (" + m.staleBecause.source + ")" : "") : "") +
+      (m.ready ? "" : ", not ready"));
+    if (m.staleBecause) stateCell.title = m.staleBecause.why;
+    tr.appendChild(stateCell);
     tr.appendChild(el("td", {class: "num"}, (m.handledPerS || 0).toFixed(1)));
     tr.appendChild(el("td", {class: "num"}, ms(lat.p50Us)));
     tr.appendChild(el("td", {class: "num"}, ms(lat.p99Us)));

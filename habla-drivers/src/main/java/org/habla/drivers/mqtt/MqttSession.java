@@ -155,6 +155,7 @@ final class MqttSession implements ClientSession {
                     + ReadingDecoder.abbreviate(payload) + "', neither '" + d.online() + "' nor '" + d.offline() + "'");
             return;
         }
+        sink.device(d.name(), online, d.availabilityTopic() + " says " + state);
         devices.said(d, online, d.name() + " is offline (" + d.availabilityTopic() + " says " + state + ")");
         // A device's word changes what every device reached through it can do, so every channel is told again.
         for (ReadingDecoder r : driver.decoders()) {
