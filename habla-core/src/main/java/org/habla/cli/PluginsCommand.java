@@ -15,13 +15,15 @@ import org.habla.plugin.MethodProvider;
 import org.habla.plugin.Param;
 import org.habla.plugin.ParamRange;
 import org.habla.plugin.PluginRegistry;
+import org.habla.sample.RecordField;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;
 
 /**
  * {@code habla plugins}: every method and driver type on the class path, with layers and parameters, and each
- * method type's ports as its provider lists them for the default parameters (no method is made).
+ * method type's ports as its provider lists them for the default parameters (no method is made), a record output
+ * with its declared fields.
  */
 @Command(name = "plugins", mixinStandardHelpOptions = true,
         description = "List every method type and driver type, with its layers, parameters and ports.")
@@ -85,6 +87,9 @@ public final class PluginsCommand implements Callable<Integer> {
             String unit = o.shape().unit().isEmpty() ? "" : " [" + o.shape().unit() + "]";
             String doc = o.shape().doc().isEmpty() ? "" : "  " + o.shape().doc();
             out.println("      " + o + unit + doc);
+            for (RecordField f : o.shape().recordFields()) {
+                out.println("          " + f);
+            }
         }
     }
 

@@ -62,8 +62,7 @@ public final class EmotionRecognition extends VirtualMethod {
     private static final InputPort<NumberValue> REWARD = InputPort.optional("reward", NumberValue.class,
             Delivery.queue(16));
     private static final OutputPort<RecordValue> EMOTION = OutputPort.of("emotion", RecordValue.class,
-            Shape.record("the teacher's attitude at each word, touch or reward",
-                    "emotion", "valence", "arousal", "words", "intensity", "source"));
+            Shape.record("the teacher's attitude at each word, touch or reward", TeacherEmotion.LAYOUT));
     static final Ports PORTS = Ports.of(WORDS, FEATURES, TOUCH, REWARD, EMOTION);
 
     private record Frame(long micros, double db, double pitchHz, boolean voiced) {
@@ -222,8 +221,8 @@ public final class EmotionRecognition extends VirtualMethod {
     }
 
     private void report(double valence, double arousal, String words, double intensityDb, String source) {
-        emit(emotion, RecordValue.builder().put("emotion", classify(valence, arousal)).put("valence", valence)
-                .put("arousal", arousal).put("words", words).put("intensity", intensityDb).put("source", source).build());
+        emit(emotion, RecordValue.of(new TeacherEmotion(classify(valence, arousal), valence, arousal, words, intensityDb,
+                source)));
     }
 
     /** The rule that names the emotion of a valence and an arousal. */

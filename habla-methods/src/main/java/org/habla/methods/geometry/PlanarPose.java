@@ -1,10 +1,9 @@
 package org.habla.methods.geometry;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Optional;
 import org.habla.sample.RecordForm;
+import org.habla.sample.RecordLayout;
 import org.habla.sample.RecordValue;
 
 /**
@@ -15,8 +14,15 @@ import org.habla.sample.RecordValue;
  * @param yM       to the left, in metres
  * @param thetaRad heading, in radians, within (-π, π]
  */
-@RecordForm.Fields({"xM", "yM", "thetaRad"})
 public record PlanarPose(double xM, double yM, double thetaRad) implements RecordForm {
+
+    /** The fields of a pose record. */
+    public static final RecordLayout<PlanarPose> LAYOUT = RecordLayout.of(PlanarPose.class)
+            .number("xM", PlanarPose::xM).unit("m").frame("the pose's frame: x forward, y to the left").doc("forward")
+            .number("yM", PlanarPose::yM).unit("m").frame("the pose's frame: x forward, y to the left").doc("to the left")
+            .number("thetaRad", PlanarPose::thetaRad).unit("rad").frame("counter-clockwise from x, within (-π, π]")
+            .doc("heading")
+            .build();
 
     public static final PlanarPose ORIGIN = new PlanarPose(0, 0, 0);
 
@@ -75,7 +81,7 @@ public record PlanarPose(double xM, double yM, double thetaRad) implements Recor
     }
 
     @Override
-    public ObjectNode toJson() {
-        return JsonNodeFactory.instance.objectNode().put("xM", xM).put("yM", yM).put("thetaRad", thetaRad);
+    public RecordLayout<PlanarPose> layout() {
+        return LAYOUT;
     }
 }

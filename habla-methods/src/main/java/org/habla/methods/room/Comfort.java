@@ -1,7 +1,7 @@
 package org.habla.methods.room;
 
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import java.util.ArrayList;
+import java.util.List;
 import org.habla.method.Delivery;
 import org.habla.method.InputPort;
 import org.habla.method.Layer;
@@ -32,8 +32,7 @@ public final class Comfort extends VirtualMethod {
     private static final InputPort<NumberValue> SOUND = InputPort.optional("sound", NumberValue.class,
             Delivery.latest());
     private static final OutputPort<RecordValue> COMFORT = OutputPort.of("comfort", RecordValue.class,
-            Shape.record("the readings, a score 0..1 and what is wrong", "temperatureC", "humidityPct", "lux",
-                    "soundDb", "score", "complaints"));
+            Shape.record("the readings, a score 0..1 and what is wrong", ComfortReport.LAYOUT));
     static final Ports PORTS = Ports.of(CLIMATE, LUX, SOUND, COMFORT);
 
     private final Params params;
@@ -94,32 +93,28 @@ public final class Comfort extends VirtualMethod {
     }
 
     private void onClimate(RecordValue value, Sample sample) {
-        if (value.has("temperatureC") && value.get("temperatureC").isNumber()) {
-            temperatureC = value.number("temperatureC");
+        Climate climate = Climate.fromRecord(value);
+        if (climate.temperatureC() != null) {
+            temperatureC = climate.temperatureC();
         }
-        if (value.has("humidityPct") && value.get("humidityPct").isNumber()) {
-            humidityPct = value.number("humidityPct");
+        if (climate.humidityPct() != null) {
+            humidityPct = climate.humidityPct();
         }
         publish();
     }
 
     private void publish() {
-        ArrayNode complaints = JsonNodeFactory.instance.arrayNode();
+        List<String> complaints = new ArrayList<>();
         int heard = 0;
         heard += check(temperatureC, params.minTemperatureC(), params.maxTemperatureC(), "cold", "warm", complaints);
         heard += check(humidityPct, params.minHumidityPct(), params.maxHumidityPct(), "dry", "humid", complaints);
         heard += check(lux, params.minLux(), params.maxLux(), "dark", "glaring", complaints);
         heard += check(soundDb, Double.NEGATIVE_INFINITY, params.maxSoundDb(), "", "noisy", complaints);
-        RecordValue.Builder b = RecordValue.builder();
-        put(b, "temperatureC", temperatureC);
-        put(b, "humidityPct", humidityPct);
-        put(b, "lux", lux);
-        put(b, "soundDb", soundDb);
-        b.put("score", heard == 0 ? 1 : 1 - complaints.size() / (double) heard);
-        emit(comfort, b.set("complaints", complaints).build());
+        emit(comfort, RecordValue.of(new ComfortReport(temperatureC, humidityPct, lux, soundDb,
+                heard == 0 ? 1 : 1 - complaints.size() / (double) heard, complaints)));
     }
 
-    private static int check(Double v, double min, double max, String low, String high, ArrayNode complaints) {
+    private static int check(Double v, double min, double max, String low, String high, List<String> complaints) {
         if (v == null) {
             return 0;
         }
@@ -129,12 +124,6 @@ public final class Comfort extends VirtualMethod {
             complaints.add(high);
         }
         return 1;
-    }
-
-    private static void put(RecordValue.Builder b, String name, Double v) {
-        if (v != null) {
-            b.put(name, v);
-        }
     }
 
     /** Makes {@code comfort} methods. */

@@ -1,8 +1,6 @@
 package org.habla.methods.room;
 
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
-import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -29,7 +27,8 @@ import org.habla.sample.Sample;
 public final class LightLevels extends VirtualMethod {
 
     private static final OutputPort<RecordValue> LIGHT = OutputPort.of("light", RecordValue.class,
-            Shape.record("every zone's illuminance (lx) and the zones darker than darkLux", "lux", "dark"));
+            Shape.record("every zone's illuminance (lx) and the zones darker than darkLux",
+                    ZoneStates.Light.LAYOUT));
 
     private final Params params;
     private final Output<RecordValue> light = output(LIGHT);
@@ -68,8 +67,8 @@ public final class LightLevels extends VirtualMethod {
             return;
         }
         lux.put(zone, value.value());
-        ObjectNode levels = JsonNodeFactory.instance.objectNode();
-        ArrayNode dark = JsonNodeFactory.instance.arrayNode();
+        Map<String, Double> levels = new LinkedHashMap<>();
+        List<String> dark = new ArrayList<>();
         for (String z : params.zones()) {
             Double v = lux.get(z);
             if (v != null) {
@@ -79,7 +78,7 @@ public final class LightLevels extends VirtualMethod {
                 }
             }
         }
-        emit(light, RecordValue.builder().set("lux", levels).set("dark", dark).build());
+        emit(light, RecordValue.of(new ZoneStates.Light(levels, dark)));
     }
 
     /** Makes {@code light-levels} methods. */

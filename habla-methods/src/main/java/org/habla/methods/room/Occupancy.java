@@ -1,8 +1,6 @@
 package org.habla.methods.room;
 
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
-import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -32,8 +30,7 @@ public final class Occupancy extends VirtualMethod {
 
     private static final Pattern ZONE = Pattern.compile("[A-Za-z][A-Za-z0-9_-]{0,31}");
     private static final OutputPort<RecordValue> OCCUPANCY = OutputPort.of("occupancy", RecordValue.class,
-            Shape.record("the presence of every zone, the occupied zones and their count", "zones", "occupied",
-                    "count"));
+            Shape.record("the presence of every zone, the occupied zones and their count", ZoneStates.Occupied.LAYOUT));
 
     private final Output<RecordValue> occupancy = output(OCCUPANCY);
     private final Map<String, Boolean> present = new LinkedHashMap<>();
@@ -98,16 +95,15 @@ public final class Occupancy extends VirtualMethod {
     }
 
     private void publish() {
-        ObjectNode zones = JsonNodeFactory.instance.objectNode();
-        ArrayNode occupied = JsonNodeFactory.instance.arrayNode();
+        Map<String, Integer> zones = new LinkedHashMap<>();
+        List<String> occupied = new ArrayList<>();
         present.forEach((z, p) -> {
             zones.put(z, p ? 1 : 0);
             if (p) {
                 occupied.add(z);
             }
         });
-        emit(occupancy, RecordValue.builder().set("zones", zones).set("occupied", occupied)
-                .put("count", occupied.size()).build());
+        emit(occupancy, RecordValue.of(new ZoneStates.Occupied(zones, occupied)));
     }
 
     /** Makes {@code occupancy} methods. */

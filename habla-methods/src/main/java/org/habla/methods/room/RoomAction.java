@@ -52,7 +52,7 @@ public final class RoomAction extends VirtualMethod {
     private static final OutputPort<TextValue> ECHO = OutputPort.of("action", TextValue.class,
             Shape.text("every accepted action"));
     private static final OutputPort<RecordValue> LAMPS = OutputPort.of("lamps", RecordValue.class,
-            Shape.record("every lamp's level 0..1 after the last action"));
+            Shape.record("every lamp's level 0..1 after the last action", LampLevels.LAYOUT));
     private static final OutputPort<TextValue> SAY = OutputPort.of("say", TextValue.class,
             Shape.text("what the room says"));
 
@@ -155,9 +155,7 @@ public final class RoomAction extends VirtualMethod {
             emit(say, new TextValue(p.say()));
         }
         if (!p.lamps().isEmpty()) {
-            RecordValue.Builder b = RecordValue.builder();
-            levels.forEach(b::put);
-            emit(lamps, b.build());
+            emit(lamps, RecordValue.of(new LampLevels(levels)));
         }
     }
 
