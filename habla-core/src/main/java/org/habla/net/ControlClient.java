@@ -202,13 +202,14 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     }
 
     @Override
-    public boolean admit(org.habla.security.PortAccess.Admitted who, com.fasterxml.jackson.databind.JsonNode requestId)
-            throws InterruptedException {
+    public boolean admit(org.habla.security.PortAccess.Admitted who, com.fasterxml.jackson.databind.JsonNode requestId,
+            Frame hello) throws InterruptedException {
         id = id.named(who.principal().name());
         LOG.info("{}: authenticated as client '{}' (role {})", label, who.principal().name(), who.role().fileName());
         if (!becomeClient(requestId)) {
             return false;
         }
+        reply(hello); // queued before the client is admitted: no sample or notice can overtake it
         admitted = who;
         FrameReader f = frames;
         if (f != null) {

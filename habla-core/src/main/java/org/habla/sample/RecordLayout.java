@@ -1,6 +1,7 @@
 package org.habla.sample;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.BooleanNode;
 import com.fasterxml.jackson.databind.node.DoubleNode;
 import com.fasterxml.jackson.databind.node.IntNode;
@@ -9,7 +10,7 @@ import com.fasterxml.jackson.databind.node.LongNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import com.fasterxml.jackson.databind.node.TextNode;
 import java.util.ArrayList;
-import java.util.Iterator;
+import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -121,7 +122,7 @@ public final class RecordLayout<F extends RecordForm> {
         return null;
     }
 
-    /** A hash that a record's JSON gives too ({@link #hashOfJson}): equal records hash alike, typed or not. */
+    /** A hash that a record's JSON gives too ({@link RecordHash}): equal records hash alike, typed or not. */
     int hash(RecordForm value) {
         F f = form.cast(value);
         int h = 0;
@@ -129,35 +130,16 @@ public final class RecordLayout<F extends RecordForm> {
             Object v = values.get(i).apply(f);
             if (v instanceof Map<?, ?> each && entries.get(i)) {
                 for (Map.Entry<?, ?> e : each.entrySet()) {
-                    h += e.getKey().hashCode() ^ scalarHash(e.getValue());
+                    h += RecordHash.of((String) e.getKey(), e.getValue());
                 }
             } else if (v != null) {
-                h += fields.get(i).name().hashCode() ^ scalarHash(v);
+                h += RecordHash.of(fields.get(i).name(), v);
             }
         }
         return h;
     }
 
-    /** The hash {@link #hash} gives a record whose JSON is {@code fields}. */
-    static int hashOfJson(ObjectNode fields) {
-        int h = 0;
-        for (Iterator<Map.Entry<String, JsonNode>> it = fields.fields(); it.hasNext(); ) {
-            Map.Entry<String, JsonNode> e = it.next();
-            h += e.getKey().hashCode() ^ scalarHash(e.getValue());
-        }
-        return h;
-    }
-
-    /** Numbers by their double value, texts and flags by theirs; arrays and objects count for nothing. */
-    private static int scalarHash(Object v) {
-        if (v instanceof JsonNode n) {
-            return n.isNumber() ? Double.hashCode(n.doubleValue()) : n.isTextual() ? n.textValue().hashCode()
-                    : n.isBoolean() ? Boolean.hashCode(n.booleanValue()) : 0;
-        }
-        return v instanceof Number n ? Double.hashCode(n.doubleValue()) : v.hashCode();
-    }
-
-    /** A field's value as a JSON node. */
+    /** A field's value as a JSON node; an array of numbers, flags or texts as a JSON array. */
     static JsonNode node(Object v) {
         return switch (v) {
             case Double d -> DoubleNode.valueOf(d);
@@ -166,6 +148,23 @@ public final class RecordLayout<F extends RecordForm> {
             case Boolean b -> BooleanNode.valueOf(b);
             case String s -> TextNode.valueOf(s);
             case JsonNode n -> n;
+            case double[] numbers -> {
+                ArrayNode a = NODES.arrayNode(numbers.length);
+                Arrays.stream(numbers).forEach(a::add);
+                yield a;
+            }
+            case boolean[] flags -> {
+                ArrayNode a = NODES.arrayNode(flags.length);
+                for (boolean f : flags) {
+                    a.add(f);
+                }
+                yield a;
+            }
+            case List<?> texts -> {
+                ArrayNode a = NODES.arrayNode(texts.size());
+                texts.forEach(t -> a.add((String) t));
+                yield a;
+            }
             default -> throw new IllegalStateException("a record field cannot hold a " + v.getClass().getName());
         };
     }
@@ -219,6 +218,21 @@ public final class RecordLayout<F extends RecordForm> {
 
         /** An array, made as JSON only when the record's JSON or this field is asked for; null leaves it out. */
         public Builder<F> array(String name, Function<F, JsonNode> value) {
+            return field(name, "array", value::apply);
+        }
+
+        /** An array of numbers, written as doubles; null leaves it out. */
+        public Builder<F> numbers(String name, Function<F, double[]> value) {
+            return field(name, "array", value::apply);
+        }
+
+        /** An array of flags. */
+        public Builder<F> flags(String name, Function<F, boolean[]> value) {
+            return field(name, "array", value::apply);
+        }
+
+        /** An array of texts. */
+        public Builder<F> texts(String name, Function<F, List<String>> value) {
             return field(name, "array", value::apply);
         }
 

@@ -140,7 +140,7 @@ public final class RecordValue implements Payload {
 
     @Override
     public int hashCode() {
-        return form != null ? form.layout().hash(form) : RecordLayout.hashOfJson(fields);
+        return form != null ? form.layout().hash(form) : RecordHash.ofJson(fields);
     }
 
     @Override

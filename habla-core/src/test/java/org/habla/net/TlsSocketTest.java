@@ -33,7 +33,7 @@ import org.junit.jupiter.api.io.TempDir;
 @Timeout(120)
 class TlsSocketTest {
 
-    private static final Path CLIENT = Paths.get("..", "examples", "control-python").toAbsolutePath().normalize();
+    private static final Path CLIENT = Paths.get("..", "clients", "python", "src").toAbsolutePath().normalize();
     private static final String TOKEN = "mdb-token-0123456789abcdef";
 
     @TempDir
@@ -81,11 +81,11 @@ class TlsSocketTest {
         point.emit("distance", new org.habla.sample.NumberValue(1.25));
         String script = """
                 import json, sys
-                from habla_client import ControlSocket
-                with ControlSocket("127.0.0.1", int(sys.argv[1]), client="mdb", token=sys.argv[2], tls=sys.argv[3]) as s:
-                    print(s._sock.version(), s.hello["socket"], s.hello["client"])
+                import habla
+                with habla.connect("127.0.0.1", int(sys.argv[1]), client="mdb", token=sys.argv[2], tls=sys.argv[3]) as s:
+                    print(s._sock.version(), s.hello.socket, s.hello.client)
                     s.send({"op": "latest"})
-                    print(json.dumps(s.next_sample(timeout=10)))
+                    print(json.dumps(s.next_sample(timeout=10).line))
                 """;
         ProcessBuilder pb = new ProcessBuilder("python3", "-c", script, "" + server.port(), TOKEN,
                 certificate.toString()).directory(CLIENT.toFile()).redirectErrorStream(true);

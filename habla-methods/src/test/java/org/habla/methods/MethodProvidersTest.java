@@ -52,7 +52,7 @@ class MethodProvidersTest {
             assertThat(typeByClass).as("discovered: " + className).containsKey(className);
             assertThat(names.add(typeByClass.get(className))).as("unique type name " + typeByClass.get(className)).isTrue();
         }
-        assertThat(names).contains("sonar", "infrared", "microphone", "keyboard", "odometry", "wheels",
+        assertThat(names).contains("sonar", "infrared", "laser", "microphone", "keyboard", "odometry", "wheels",
                 "nearest-distance", "motion-composition", "movement-safety", "distance-angle", "command", "reward",
                 "action", "robot-pose", "link-state");
     }

@@ -72,6 +72,8 @@ class PortsListedBTest {
                 List.of("ranges", "scan"));
         lists(new RangeSensor.InfraredProvider(), RangeSensorParams.defaults(), List.of("ranges", "head"),
                 List.of("ranges", "scan"));
+        lists(new RangeSensor.LaserProvider(), RangeSensorParams.defaults(), List.of("ranges", "head"),
+                List.of("ranges", "scan"));
         lists(new Speaker.Provider(), SpeakerParams.defaults(), List.of("audio", "text"), List.of("speaker"));
         lists(new Wheels.Provider(), WheelsParams.defaults(), List.of("motion"), List.of("motion", "limits"));
         lists(new Speech.Provider(), SpeechParams.defaults(), List.of("text", "emotion"), List.of("audio"));

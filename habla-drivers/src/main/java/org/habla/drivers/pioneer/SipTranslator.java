@@ -71,15 +71,9 @@ final class SipTranslator {
         double wRadps = sip.rotVelDdegps().isPresent()
                 ? Math.toRadians(sip.rotVelDdegps().getAsInt() / 10.0)
                 : (sip.rightVel() - sip.leftVel()) / 2.0 * params.velConvFactor() * params.diffConvFactor();
-        return RecordValue.builder()
-                .put("xM", x.update(sip.xPos()) * mPerUnit)
-                .put("yM", y.update(sip.yPos()) * mPerUnit)
-                .put("thetaRad", normalise(sip.thPos() * params.angleConvFactor()))
-                .put("vMps", (leftMps + rightMps) / 2.0)
-                .put("wRadps", wRadps)
-                .put("leftMps", leftMps)
-                .put("rightMps", rightMps)
-                .build();
+        return RecordValue.of(new OdometryReading(x.update(sip.xPos()) * mPerUnit, y.update(sip.yPos()) * mPerUnit,
+                normalise(sip.thPos() * params.angleConvFactor()), (leftMps + rightMps) / 2.0, wRadps, leftMps,
+                rightMps));
     }
 
     private static double batteryV(StandardSip sip) {

@@ -54,9 +54,10 @@ public record PlanarPose(double xM, double yM, double thetaRad) implements Recor
 
     /** Reads {@code {"xM","yM","thetaRad"}}; empty if a field is missing or not a finite number. */
     public static Optional<PlanarPose> fromJson(JsonNode node) {
-        JsonNode x = node.path("xM");
-        JsonNode y = node.path("yM");
-        JsonNode t = node.path("thetaRad");
+        return fromFields(node.path("xM"), node.path("yM"), node.path("thetaRad"));
+    }
+
+    private static Optional<PlanarPose> fromFields(JsonNode x, JsonNode y, JsonNode t) {
         if (!x.isNumber() || !y.isNumber() || !t.isNumber()) {
             return Optional.empty();
         }
@@ -69,10 +70,13 @@ public record PlanarPose(double xM, double yM, double thetaRad) implements Recor
         return Optional.of(new PlanarPose(xv, yv, tv));
     }
 
-    /** The pose a record carries (itself, or read from its fields as {@link #fromJson} does). */
+    /**
+     * The pose a record carries: itself, or read from its fields as {@link #fromJson} does (through the record's
+     * accessors, so a reading typed by a driver makes no JSON).
+     */
     public static Optional<PlanarPose> fromRecord(RecordValue record) {
         Optional<PlanarPose> typed = record.form(PlanarPose.class);
-        return typed.isPresent() ? typed : fromJson(record.jsonView());
+        return typed.isPresent() ? typed : fromFields(record.get("xM"), record.get("yM"), record.get("thetaRad"));
     }
 
     /** A {@code pose} record carrying this pose. */

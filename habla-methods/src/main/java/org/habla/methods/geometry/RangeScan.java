@@ -28,10 +28,10 @@ public final class RangeScan implements RecordForm {
 
     /** The fields of a scan record. */
     public static final RecordLayout<RangeScan> LAYOUT = RecordLayout.of(RangeScan.class)
-            .array("rangesM", RangeScan::rangesJson).unit("m").frame("from each sensor, in index order")
+            .numbers("rangesM", s -> s.rangesM).unit("m").frame("from each sensor, in index order")
             .doc("each sensor's range; its reach when it saw nothing")
-            .array("valid", RangeScan::validJson).doc("whether each sensor saw something within its reach")
-            .array("maxRangesM", RangeScan::reachesJson).unit("m").frame("from each sensor").doc("each sensor's reach")
+            .flags("valid", s -> s.valid).doc("whether each sensor saw something within its reach")
+            .numbers("maxRangesM", s -> s.maxRangesM).unit("m").frame("from each sensor").doc("each sensor's reach")
             .array("poses", s -> s.poses.isEmpty() ? null : s.posesJson()).optional().unit("m, rad")
             .frame("robot frame: x forward, y to the left").doc("each sensor's pose {xM, yM, thetaRad}, when known")
             .build();
@@ -102,30 +102,6 @@ public final class RangeScan implements RecordForm {
     @Override
     public RecordLayout<RangeScan> layout() {
         return LAYOUT;
-    }
-
-    private ArrayNode rangesJson() {
-        ArrayNode a = JsonNodeFactory.instance.arrayNode(rangesM.length);
-        for (double r : rangesM) {
-            a.add(r);
-        }
-        return a;
-    }
-
-    private ArrayNode validJson() {
-        ArrayNode a = JsonNodeFactory.instance.arrayNode(valid.length);
-        for (boolean v : valid) {
-            a.add(v);
-        }
-        return a;
-    }
-
-    private ArrayNode reachesJson() {
-        ArrayNode a = JsonNodeFactory.instance.arrayNode(maxRangesM.length);
-        for (double m : maxRangesM) {
-            a.add(m);
-        }
-        return a;
     }
 
     private ArrayNode posesJson() {

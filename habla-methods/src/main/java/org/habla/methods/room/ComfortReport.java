@@ -1,8 +1,5 @@
 package org.habla.methods.room;
 
-import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import java.util.List;
 import org.habla.sample.RecordForm;
 import org.habla.sample.RecordLayout;
@@ -27,7 +24,7 @@ public record ComfortReport(Double temperatureC, Double humidityPct, Double lux,
             .optionalNumber("lux", ComfortReport::lux).unit("lx").doc("the illuminance")
             .optionalNumber("soundDb", ComfortReport::soundDb).unit("dB").doc("the sound level")
             .number("score", ComfortReport::score).doc("the share of the readings heard that are comfortable, 0..1")
-            .array("complaints", ComfortReport::complaintsJson)
+            .texts("complaints", ComfortReport::complaints)
             .doc("what is wrong: cold, warm, dry, humid, dark, glaring, noisy")
             .build();
 
@@ -40,9 +37,4 @@ public record ComfortReport(Double temperatureC, Double humidityPct, Double lux,
         return LAYOUT;
     }
 
-    private JsonNode complaintsJson() {
-        ArrayNode a = JsonNodeFactory.instance.arrayNode(complaints.size());
-        complaints.forEach(a::add);
-        return a;
-    }
 }

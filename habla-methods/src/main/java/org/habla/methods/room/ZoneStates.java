@@ -1,7 +1,6 @@
 package org.habla.methods.room;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Collections;
@@ -27,7 +26,7 @@ final class ZoneStates {
 
         static final RecordLayout<Occupied> LAYOUT = RecordLayout.of(Occupied.class)
                 .object("zones", o -> object(o.zones)).doc("each zone: 1 while someone is there, else 0")
-                .array("occupied", o -> array(o.occupied)).doc("the occupied zones")
+                .texts("occupied", Occupied::occupied).doc("the occupied zones")
                 .longInteger("count", o -> o.occupied.size()).doc("how many zones are occupied")
                 .build();
 
@@ -52,7 +51,7 @@ final class ZoneStates {
 
         static final RecordLayout<Light> LAYOUT = RecordLayout.of(Light.class)
                 .object("lux", l -> object(l.lux)).unit("lx").doc("each zone's illuminance, once heard")
-                .array("dark", l -> array(l.dark)).doc("the zones darker than darkLux")
+                .texts("dark", Light::dark).doc("the zones darker than darkLux")
                 .build();
 
         Light {
@@ -78,9 +77,4 @@ final class ZoneStates {
         return o;
     }
 
-    private static JsonNode array(List<String> names) {
-        ArrayNode a = JsonNodeFactory.instance.arrayNode(names.size());
-        names.forEach(a::add);
-        return a;
-    }
 }

@@ -58,7 +58,7 @@ class SpeechRecognitionTest {
     private static MethodHarness loaded(SpeechRecognitionParams params) {
         MethodHarness h = MethodHarness.started("speech", new SpeechRecognition(params));
         assertThat(h.ready()).isFalse();
-        assertThat(h.readinessDetail()).isEqualTo("loading model");
+        assertThat(h.readinessDetail()).isEqualTo("loading the " + params.engine() + " model");
         long t0 = System.nanoTime();
         assertThat(h.runBackground()).isEqualTo(1);
         System.out.printf("speech-recognition: model loaded in %d ms%n", (System.nanoTime() - t0) / 1_000_000);

@@ -30,8 +30,15 @@ final class Children implements AutoCloseable {
 
     /** Starts a process with its standard output and error appended to {@code log}. */
     synchronized Child start(String name, List<String> command, Path workDir, Path log) throws IOException {
+        return start(name, command, java.util.Map.of(), workDir, log);
+    }
+
+    /** Starts a process with these environment variables added to this one's. */
+    synchronized Child start(String name, List<String> command, java.util.Map<String, String> env, Path workDir, Path log)
+            throws IOException {
         ProcessBuilder pb = new ProcessBuilder(command).directory(workDir.toFile())
                 .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.appendTo(log.toFile()));
+        pb.environment().putAll(env);
         Child c = new Child(name, pb.start(), log);
         children.add(c);
         return c;

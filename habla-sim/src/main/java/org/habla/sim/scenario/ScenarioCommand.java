@@ -15,7 +15,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code habla scenario pioneer|aibo}: the paper's experiment on a simulated robot — simulator, daemon
+ * {@code habla scenario pioneer|aibo|ros2-base|room}: the paper's experiment on a simulated robot — simulator, daemon
  * and control program as three processes — with a report of every episode.
  */
 @Command(name = "scenario", mixinStandardHelpOptions = true,
@@ -27,7 +27,7 @@ public final class ScenarioCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "ROBOT", description = "pioneer, aibo or room")
+    @Parameters(index = "0", paramLabel = "ROBOT", description = "pioneer, aibo, ros2-base (a simulated ROS 2 base; ./habla ros2 setup first) or room")
     private String robot;
 
     @Option(names = "--scenario", paramLabel = "FILE", description = "A scenario file instead of the robot's built-in one.")

@@ -52,10 +52,13 @@ final class ScenarioRunner {
             throw new IOException("no control program at " + mdb);
         }
         Path derived = DerivedConfig.write(robotConfig, o.speed(), o.portOffset(), o.reportDir().resolve("daemon-config.json"));
-        int truthPort = (sc.robot().equals("pioneer") ? 8199 : 10199) + o.portOffset();
+        int truthPort = (sc.robot().equals("aibo") ? 10199 : 8199) + o.portOffset();
         List<EpisodeResult> episodes = new ArrayList<>();
         try (Children children = new Children()) {
-            Children.Child sim = children.start("simulator", simCommand(truthPort), o.home(), o.reportDir().resolve("simulator.log"));
+            List<Children.Child> world = sc.robot().equals("ros2-base")
+                    ? Ros2Base.start(children, o.home(), o.reportDir(), sc.world(), o.speed(), o.seed(), o.portOffset(), truthPort)
+                    : List.of(children.start("simulator", simCommand(truthPort), o.home(), o.reportDir().resolve("simulator.log")));
+            Children.Child sim = world.get(0);
             say("simulated %s started (speed %sx); waiting for its ground truth on port %d", sc.robot(), fmt(o.speed()), truthPort);
             TruthLink link;
             try {
@@ -90,11 +93,17 @@ final class ScenarioRunner {
                         "--speed", fmt(o.speed()), "--step-s", fmt(sc.stepS() / o.speed()),
                         "--reward-wait-s", fmt(sc.rewardWaitS() / o.speed()), "--log", o.reportDir().resolve("control.jsonl").toString()),
                         o.home(), o.reportDir().resolve("control.log"));
+                long startedAt = System.nanoTime();
+                DaemonReadiness.awaitClients(statusPort(derived), List.of(names), READY_TIMEOUT_MS, control::alive);
+                say("control program connected to all four sockets (%.1f s after it started)",
+                        (System.nanoTime() - startedAt) / 1e9);
+                List<Children.Child> watched = new ArrayList<>(world);
+                watched.addAll(List.of(daemon, control));
                 try (TeacherLog log = new TeacherLog(o.reportDir())) {
                     this.teacherLog = log;
                     for (int e = 1; e <= o.episodes(); e++) {
                         this.episode = e;
-                        episodes.add(episode(e, truth, List.of(sim, daemon, control)));
+                        episodes.add(episode(e, truth, watched));
                     }
                 }
             }
