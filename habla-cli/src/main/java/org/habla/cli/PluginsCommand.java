@@ -1,13 +1,12 @@
 package org.habla.cli;
 
-import com.fasterxml.jackson.core.JsonProcessingException;
-import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.PrintWriter;
 import java.lang.reflect.RecordComponent;
 import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.stream.Collectors;
 import org.habla.command.ExitCodes;
+import org.habla.config.ParamsJson;
 import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.OutputPort;
@@ -15,21 +14,21 @@ import org.habla.method.Ports;
 import org.habla.plugin.DriverProvider;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
+import org.habla.plugin.ParamRange;
 import org.habla.plugin.PluginRegistry;
+import org.habla.sample.RecordField;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;
 
 /**
  * {@code habla plugins}: every method and driver type on the class path, with layers and parameters, and each
- * method type's ports as its provider lists them for the default parameters (no method is made).
+ * method type's ports as its provider lists them for the default parameters (no method is made), a record output
+ * with its declared fields.
  */
 @Command(name = "plugins", mixinStandardHelpOptions = true,
         description = "List every method type and driver type, with its layers, parameters and ports.")
 public final class PluginsCommand implements Callable<Integer> {
-
-    private static final ObjectMapper JSON = new ObjectMapper();
 
     @Spec
     private CommandSpec spec;
@@ -82,10 +81,9 @@ public final class PluginsCommand implements Callable<Integer> {
     private static <P extends Record> void printPorts(PrintWriter out, MethodProvider<P> provider) {
         Ports ports;
         try {
-            P defaults = JSON.treeToValue(ParamDefaults.filled(JSON.createObjectNode(), provider.paramsType()),
-                    provider.paramsType());
+            P defaults = ParamsJson.defaults(provider.paramsType());
             ports = provider.ports(provider.layers().stream().sorted().findFirst().orElseThrow(), defaults);
-        } catch (JsonProcessingException | RuntimeException e) {
+        } catch (RuntimeException e) {
             out.println("      ports: as its parameters say (the defaults alone do not make a method of it)");
             return;
         }
@@ -96,6 +94,9 @@ public final class PluginsCommand implements Callable<Integer> {
             String unit = o.shape().unit().isEmpty() ? "" : " [" + o.shape().unit() + "]";
             String doc = o.shape().doc().isEmpty() ? "" : "  " + o.shape().doc();
             out.println("      " + o + unit + doc);
+            for (RecordField f : o.shape().recordFields()) {
+                out.println("          " + f);
+            }
         }
     }
 
@@ -115,6 +116,7 @@ public final class PluginsCommand implements Callable<Integer> {
                 } else {
                     line.append(" (required)");
                 }
+                ParamRange.of(doc).ifPresent(r -> line.append(", ").append(r));
                 line.append("  ").append(doc.value());
             }
             out.println(line);

@@ -17,10 +17,21 @@ class PluginsCommandTest {
         assertThat(run.out()).contains("""
                   safety  [processing]  test type safety
                       label: String = "step"  Label of the step
-                      verbose: Boolean = false  Whether to log each step
+                      verbose: boolean = false  Whether to log each step
                       input velocity (vector, latest)
                       optional input nearest (number, latest)
                       output velocity (vector)
+                """);
+    }
+
+    @Test
+    void eachParameterShowsItsDeclaredRange() {
+        CommandRun run = CommandRun.of(new PluginsCommand(TestPlugins.registry()));
+
+        assertThat(run.out()).contains("""
+                      maxRangeM: double [m] = 5.0, greater than 0  Ranges beyond this are reported as this
+                      minRangeM: double [m] = 0.1, at least 0  Ranges below this are ignored
+                      use: List<Integer> = [], within [0, 31]  Which transducers to use; empty means all
                 """);
     }
 

@@ -7,12 +7,14 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLongArray;
+import java.util.function.Function;
 import org.habla.net.Expose;
 import org.habla.method.ControlNotice;
 import org.habla.method.Input;
 import org.habla.method.Layer;
 import org.habla.method.MethodState;
 import org.habla.method.Output;
+import org.habla.method.Shape;
 import org.habla.net.ControlLease;
 import org.habla.net.ControlPoint;
 import org.habla.sample.Payload;
@@ -31,11 +33,16 @@ final class ExposedMethod implements ControlPoint {
     private final AtomicLongArray controlSequences;
     private final boolean actuating;
     private final ControlLease lease;
+    private final Function<Output<?>, Shape> shapes;
 
-    /** @param actuating whether values written here can reach a command channel */
+    /**
+     * @param actuating whether values written here can reach a command channel
+     * @param shapes    the shape each output shows with what feeds it
+     */
     ExposedMethod(MethodRunner runner, Expose expose, List<Input<?>> controlInputs, MotionWatchdog watchdog,
-            GraphTap tap, boolean actuating) {
+            GraphTap tap, boolean actuating, Function<Output<?>, Shape> shapes) {
         this.runner = runner;
+        this.shapes = shapes;
         this.actuating = actuating && !controlInputs.isEmpty();
         this.lease = this.actuating ? new ControlLease(expose.name(), watchdog.timeoutMillis(), runner::nowMicros,
                 this::writerLeft, line -> listeners.forEach(l -> l.onControl(line))) : null;
@@ -76,6 +83,11 @@ final class ExposedMethod implements ControlPoint {
     @Override
     public List<Output<?>> outputs() {
         return runner.method().outputs();
+    }
+
+    @Override
+    public Shape shapeOf(Output<?> output) {
+        return shapes.apply(output);
     }
 
     @Override

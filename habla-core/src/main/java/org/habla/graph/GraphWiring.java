@@ -28,22 +28,27 @@ final class GraphWiring {
     private final Map<String, InterfaceLink> links;
     private final MotionWatchdog watchdog;
     private final GraphTap tap;
+    private final WiredShapes shapes;
     private final List<ExposedMethod> exposed = new ArrayList<>();
 
     private GraphWiring(HablaConfig config, GraphTopology topology, Map<String, MethodRunner> runners,
-            Map<String, InterfaceLink> links, MotionWatchdog watchdog, GraphTap tap) {
+            Map<String, InterfaceLink> links, MotionWatchdog watchdog, GraphTap tap, WiredShapes shapes) {
         this.config = config;
         this.topology = topology;
         this.runners = runners;
         this.links = links;
         this.watchdog = watchdog;
         this.tap = tap;
+        this.shapes = shapes;
     }
 
-    /** Wires the graph's methods and interfaces; returns the exposed methods, in config order. */
+    /**
+     * Wires the graph's methods and interfaces, telling {@code shapes} what feeds each input; returns the exposed
+     * methods, in config order.
+     */
     static List<ExposedMethod> wire(HablaConfig config, GraphTopology topology, Map<String, MethodRunner> runners,
-            Map<String, InterfaceLink> links, MotionWatchdog watchdog, GraphTap tap) {
-        GraphWiring w = new GraphWiring(config, topology, runners, links, watchdog, tap);
+            Map<String, InterfaceLink> links, MotionWatchdog watchdog, GraphTap tap, WiredShapes shapes) {
+        GraphWiring w = new GraphWiring(config, topology, runners, links, watchdog, tap, shapes);
         for (MethodConfig mc : config.methods()) {
             w.wire(mc);
         }
@@ -65,11 +70,13 @@ final class GraphWiring {
                     MethodRunner from = runners.get(mo.methodId());
                     Output<?> out = from.method().output(mo.output()).orElseThrow();
                     from.port(out).subscribe(slot::offer);
+                    shapes.fromOutput(mc.id(), input, from.id(), out);
                 }
                 case Source.Channel ch -> {
                     InterfaceLink link = links.get(ch.interfaceId());
                     link.reading(ch.channel()).subscribe(slot::offer);
                     runner.bindChannel(input, link.channel(ch.channel()));
+                    shapes.fromChannel(mc.id(), input, link.channel(ch.channel()));
                 }
                 case Source.Control c -> controlSources.put(e.getKey(), c);
             }
@@ -84,8 +91,9 @@ final class GraphWiring {
             }
             runner.port(out).subscribe(InterfaceTap.commands(link, channel, tap));
         }
-        mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner,
-                x, ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap, topology.actuates(mc.id()))));
+        mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner, x,
+                ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap, topology.actuates(mc.id()),
+                out -> shapes.of(mc.id(), out))));
     }
 
     /** Sends what each method tells control clients to the sockets whose values reach it. */

@@ -26,6 +26,8 @@ final class InterfaceReadings {
     private final String interfaceId;
     private final Map<String, ChannelDescriptor> channels;
     private final Map<String, Producer> ports = new HashMap<>();
+    /** The handle a session writes each reading channel through, made once; the engine's own link is not one. */
+    private final Map<String, ReadingSink.Channel> handles = new HashMap<>();
     private final Map<String, String> unavailable = new ConcurrentHashMap<>();
     /** The devices the driver told of, by name, sorted for the status. */
     private final Map<String, DeviceState> devices = new java.util.concurrent.ConcurrentSkipListMap<>();
@@ -48,7 +50,11 @@ final class InterfaceReadings {
         this.states = states;
         for (ChannelDescriptor c : channels.values()) {
             if (c.direction() == ChannelDescriptor.Direction.READING) {
-                ports.put(c.name(), new Producer("@" + interfaceId + "." + c.name()));
+                Producer port = new Producer("@" + interfaceId + "." + c.name());
+                ports.put(c.name(), port);
+                if (!engineTellsLink || !Driver.LINK_CHANNEL.name().equals(c.name())) {
+                    handles.put(c.name(), new Handle(c, port));
+                }
             }
         }
     }
@@ -110,28 +116,58 @@ final class InterfaceReadings {
         ports.forEach((name, port) -> rs.put(name, port.published()));
     }
 
-    /** Turns what the sessions decode into samples on the reading channels. */
-    private final class Sink implements ReadingSink {
-        @Override
-        public void reading(String channel, Payload value) {
-            reading(channel, value, clock.nowMicros());
+    /** A declared reading channel as a session writes it: its producer and kind, found once. */
+    private final class Handle implements ReadingSink.Channel {
+        private final ChannelDescriptor descriptor;
+        private final Producer port;
+
+        Handle(ChannelDescriptor descriptor, Producer port) {
+            this.descriptor = descriptor;
+            this.port = port;
         }
 
         @Override
-        public void reading(String channel, Payload value, long sourceMicros) {
-            Producer port = ports.get(channel);
-            ChannelDescriptor d = channels.get(channel);
-            if (port == null || (engineTellsLink && Driver.LINK_CHANNEL.name().equals(channel))) {
-                unknownChannel.increment();
-                LOG.debug("interface {}: reading on unknown channel '{}' ignored", interfaceId, channel);
-                return;
-            }
-            if (!d.kind().accepts(value.kind())) {
-                malformed("reading on " + channel + " is " + value.kind().wireName() + ", expected "
-                        + d.kind().wireName());
+        public void publish(Payload value) {
+            publish(value, clock.nowMicros());
+        }
+
+        @Override
+        public void publish(Payload value, long sourceMicros) {
+            if (!descriptor.kind().accepts(value.kind())) {
+                sink.malformed("reading on " + descriptor.name() + " is " + value.kind().wireName() + ", expected "
+                        + descriptor.kind().wireName());
                 return;
             }
             port.publish(value, sourceMicros, false);
+        }
+    }
+
+    /** What is written to a channel the interface does not have: counted and dropped. */
+    private final class Unknown implements ReadingSink.Channel {
+        private final String name;
+
+        Unknown(String name) {
+            this.name = name;
+        }
+
+        @Override
+        public void publish(Payload value) {
+            publish(value, 0);
+        }
+
+        @Override
+        public void publish(Payload value, long sourceMicros) {
+            unknownChannel.increment();
+            LOG.debug("interface {}: reading on unknown channel '{}' ignored", interfaceId, name);
+        }
+    }
+
+    /** Turns what the sessions decode into samples on the reading channels. */
+    private final class Sink implements ReadingSink {
+        @Override
+        public Channel channel(String name) {
+            Channel handle = handles.get(name);
+            return handle != null ? handle : new Unknown(name);
         }
 
         @Override

@@ -47,6 +47,7 @@ public final class MethodGraph implements AutoCloseable {
     private final Map<String, RemotePlacement> placements = new LinkedHashMap<>();
     private final LinkStates linkStates = new LinkStates();
     private final List<ExposedMethod> exposed;
+    private final WiredShapes shapes = new WiredShapes();
     private final GraphStaleness staleness;
     private final MotionWatchdog watchdog;
     private final long startedMicros;
@@ -93,7 +94,7 @@ public final class MethodGraph implements AutoCloseable {
                 placements.put(mc.id(), p);
             }
         }
-        this.exposed = GraphWiring.wire(config, topology, runners, links, watchdog, tap);
+        this.exposed = GraphWiring.wire(config, topology, runners, links, watchdog, tap, shapes);
         this.staleness = new GraphStaleness(topology, runners, links, placements, exposed);
         linkStates.onChange(staleness::refresh);
         this.replay = recorded == null ? null : new GraphReplay(recorded, runners, exposed, topology, watchdog, work);
@@ -225,7 +226,7 @@ public final class MethodGraph implements AutoCloseable {
         List<OutputInfo> all = new ArrayList<>();
         for (MethodRunner r : runners.values()) {
             for (Output<?> out : r.method().outputs()) {
-                all.add(new OutputInfo(r.id(), out.name(), out.shape()));
+                all.add(new OutputInfo(r.id(), out.name(), shapes.of(r.id(), out)));
             }
         }
         return all;

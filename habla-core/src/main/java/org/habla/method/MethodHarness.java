@@ -16,7 +16,7 @@ import org.habla.sample.Sample;
  * step its clock, read what it emitted. Shipped in the main sources so method authors test with it.
  *
  * <pre>{@code
- * MethodHarness h = MethodHarness.started("near", new Threshold(new ThresholdParams(null, null)));
+ * MethodHarness h = MethodHarness.started("near", new Threshold(ParamsJson.defaults(ThresholdParams.class)));
  * h.push("nearest", RecordValue.builder().put("distanceM", 1.0).build());
  * h.push("nearest", RecordValue.builder().put("distanceM", 0.4).build());
  * assertThat(h.values("label")).containsExactly(new TextValue("far"), new TextValue("near"));

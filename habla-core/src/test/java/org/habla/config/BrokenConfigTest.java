@@ -54,7 +54,10 @@ class BrokenConfigTest {
         layer-not-supported-by-type       | $.methods[2].layer              | type 'nearest-distance' cannot be placed in the virtual layer (it belongs in: processing)
         params-unknown-key                | $.methods[0].params.maxRange    | unknown parameter 'maxRange' (known: maxRangeM, minRangeM, use)
         params-string-for-number          | $.methods[0].params.maxRangeM   | must be a number, not a string ("5")
-        params-rejected-naming-field      | $.methods[0].params.maxRangeM   | maxRangeM must be positive, was -1.0
+        params-rejected-naming-field      | $.methods[1].params.label       | label must not be blank
+        params-not-above-declared-bound   | $.methods[0].params.maxRangeM   | must be greater than 0, was -1
+        params-below-declared-minimum     | $.methods[0].params.minRangeM   | must be at least 0, was -0.5
+        params-list-element-outside-range | $.methods[0].params.use[2]      | must be within [0, 31], was 40
         params-rejected-as-a-whole        | $.methods[0].params             | the minimum range must be below the maximum
         params-given-to-no-params-type    | $.methods[1].params.window      | unknown parameter 'window' (this type takes no parameters)
         params-primitive-missing          | $.methods[2].params.trackM      | required parameter 'trackM' is missing
@@ -65,7 +68,7 @@ class BrokenConfigTest {
         params-number-for-boolean         | $.methods[1].params.verbose     | must be a boolean (true or false), not a number (1)
         params-not-an-object              | $.methods[0].params             | must be an object, not an array
         params-float-for-integer          | $.interfaces[0].params.sonarCount | must be an integer, not a number (8.5)
-        driver-params-rejected            | $.interfaces[0].params.sonarCount | sonarCount must be in 1..32, was 40
+        driver-params-rejected            | $.interfaces[0].params.sonarCount | must be within [1, 32], was 40
         driver-cannot-be-made             | $.interfaces[0]                 | driver 'robot-sim' cannot be made: host unreachable.invalid is refused
         method-ports-cannot-be-listed     | $.methods[1]                    | type 'broken-model' cannot list its ports for these params: the model file is missing
         input-not-declared                | $.methods[0].inputs.extra       | 'extra' is not an input of type 'sonar' (inputs: ranges)

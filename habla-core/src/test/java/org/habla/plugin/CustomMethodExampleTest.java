@@ -7,6 +7,7 @@ import java.net.URL;
 import java.net.URLClassLoader;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import org.habla.config.ParamsJson;
 import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Method;
@@ -32,8 +33,7 @@ class CustomMethodExampleTest {
             @SuppressWarnings("unchecked")
             MethodProvider<Record> provider = (MethodProvider<Record>) registry.method("threshold").orElseThrow();
             assertThat(provider.layers()).containsExactly(Layer.PROCESSING);
-            Record params = provider.paramsType().getDeclaredConstructor(Double.class, Double.class)
-                    .newInstance(null, null);
+            Record params = ParamsJson.defaults(provider.paramsType());
             assertThat(provider.ports(Layer.PROCESSING, params).inputs()).extracting(InputPort::name)
                     .containsExactly("nearest");
             Method m = MethodProvider.make(provider, Layer.PROCESSING, params);

@@ -11,6 +11,7 @@ import org.habla.sample.AudioChunk;
 import org.habla.sample.ImageFrame;
 import org.habla.sample.NumberValue;
 import org.habla.sample.Payload;
+import org.habla.sample.RecordField;
 import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
 import org.habla.sample.TextValue;
@@ -98,6 +99,9 @@ record FoxgloveChannel(int id, OutputInfo output, String topic, String schemaNam
                 v.put("type", "object");
                 ObjectNode props = v.putObject("properties");
                 output.shape().fields().forEach(f -> props.putObject(f));
+                for (RecordField f : output.shape().recordFields()) {
+                    props.putObject(f.name()).put("description", f.toString());
+                }
             }
             default -> { }
         }

@@ -10,10 +10,12 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import org.habla.graph.OutputInfo;
+import org.habla.method.Shape;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.ImageFrame;
 import org.habla.sample.NumberValue;
 import org.habla.sample.Payload;
+import org.habla.sample.RecordField;
 import org.habla.sample.RecordValue;
 import org.habla.sample.TextValue;
 import org.habla.sample.VectorValue;
@@ -96,7 +98,7 @@ final class ViewedMethod {
             }
             if (!points.isEmpty()) {
                 o.set("points", points);
-                o.set("series", series(last.sample().payload()));
+                o.set("series", series(last.sample().payload(), info.shape()));
             }
             if (!texts.isEmpty()) {
                 o.set("texts", tail(texts));
@@ -133,8 +135,8 @@ final class ViewedMethod {
         }
     }
 
-    /** The names of the plotted lines of a payload. */
-    private static ArrayNode series(Payload p) {
+    /** The names of the plotted lines of a payload; a record's declared fields with their units. */
+    private static ArrayNode series(Payload p, Shape shape) {
         ArrayNode names = JSON.arrayNode();
         switch (p) {
             case NumberValue n -> names.add("value");
@@ -145,7 +147,9 @@ final class ViewedMethod {
             }
             case RecordValue r -> r.jsonView().properties().forEach(e -> {
                 if (e.getValue().isNumber()) {
-                    names.add(e.getKey());
+                    String unit = shape.recordFields().stream().filter(f -> f.name().equals(e.getKey()))
+                            .map(RecordField::unit).findFirst().orElse("");
+                    names.add(unit.isEmpty() ? e.getKey() : e.getKey() + " [" + unit + "]");
                 }
             });
             default -> { }

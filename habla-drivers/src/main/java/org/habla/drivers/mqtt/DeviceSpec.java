@@ -1,7 +1,6 @@
 package org.habla.drivers.mqtt;
 
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 
 /**
  * A device on the broker whose availability topic says whether it is there: Zigbee2MQTT's
@@ -21,9 +20,6 @@ public record DeviceSpec(
                 + "is this one; empty: none", defaultValue = "\"\"") String via) {
 
     public DeviceSpec {
-        online = ParamDefaults.or(DeviceSpec.class, "online", online);
-        offline = ParamDefaults.or(DeviceSpec.class, "offline", offline);
-        via = ParamDefaults.or(DeviceSpec.class, "via", via);
         if (name == null || name.isBlank() || availabilityTopic == null) {
             throw new IllegalArgumentException("devices: every device needs a \"name\" and an \"availabilityTopic\"");
         }

@@ -15,6 +15,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import org.habla.driver.ClientSession;
 import org.habla.driver.ReadingSink;
+import org.habla.driver.SessionChannel;
 import org.habla.sample.Payload;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -33,6 +34,9 @@ import org.slf4j.LoggerFactory;
  * refused; the broker lost ends the session, and the engine's link reconnects with its back-off.
  */
 final class MqttSession implements ClientSession {
+
+    /** The reading channel of each of the driver's decoders, in their order. */
+    private final List<SessionChannel> channels;
 
     private static final Logger LOG = LoggerFactory.getLogger(MqttSession.class);
     /** How often a reader waiting for a message looks whether the connection was lost. */
@@ -54,6 +58,7 @@ final class MqttSession implements ClientSession {
         this.driver = driver;
         this.queue = new ArrayBlockingQueue<>(driver.params().queueMessages());
         this.devices = new DeviceAvailability(driver.devices());
+        this.channels = driver.decoders().stream().map(d -> new SessionChannel(d.map().channel())).toList();
     }
 
     @Override
@@ -119,12 +124,15 @@ final class MqttSession implements ClientSession {
             }
         }
         List<String> unreadable = new ArrayList<>();
-        for (ReadingDecoder d : driver.decoders()) {
+        List<ReadingDecoder> decoders = driver.decoders();
+        for (int i = 0; i < decoders.size(); i++) {
+            ReadingDecoder d = decoders.get(i);
             if (!d.map().filter().matches(m.topic())) {
                 continue;
             }
+            SessionChannel channel = channels.get(i);
             try {
-                d.decode(m.payload()).ifPresent(v -> sink.reading(d.map().channel(), v));
+                d.decode(m.payload()).ifPresent(v -> channel.publish(sink, v));
             } catch (IllegalArgumentException e) {
                 unreadable.add("channel " + d.map().channel() + ": " + e.getMessage());
             }

@@ -8,9 +8,7 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
-import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
@@ -63,20 +61,18 @@ public final class Lamp extends SensorActuatorMethod {
      * @param resendMs      how long an unanswered command is not repeated
      */
     public record Params(
-            @Param(value = "whether the lamp takes a brightness", defaultValue = "true") Boolean dimmable,
-            @Param(value = "the device's brightness at full level (Zigbee: 254)", defaultValue = "254")
-            Integer maxBrightness,
-            @Param(value = "a lamp that is not dimmable is on at levels above this", defaultValue = "0.5")
-            Double onAbove,
+            @Param(value = "whether the lamp takes a brightness", defaultValue = "true") boolean dimmable,
+            @Param(value = "the device's brightness at full level (Zigbee: 254)", defaultValue = "254",
+                    min = 1, max = 65_535)
+            int maxBrightness,
+            @Param(value = "a lamp that is not dimmable is on at levels above this", defaultValue = "0.5",
+                    min = 0, max = 1)
+            double onAbove,
             @Param(value = "how long the same command is not sent again while the lamp has not answered it", unit = "ms",
-                    defaultValue = "2000") Integer resendMs) {
+                    defaultValue = "2000",
+                    min = 1, max = 3_600_000)
+            int resendMs) {
 
-        public Params {
-            dimmable = ParamDefaults.or(Params.class, "dimmable", dimmable);
-            maxBrightness = ParamRules.within(Params.class, "maxBrightness", maxBrightness, 1, 65_535);
-            onAbove = ParamRules.within(Params.class, "onAbove", onAbove, 0, 1);
-            resendMs = ParamRules.within(Params.class, "resendMs", resendMs, 1, 3_600_000);
-        }
     }
 
     Lamp(Params params) {

@@ -38,7 +38,7 @@ public final class RangeSensor extends SensorActuatorMethod {
     private static final OutputPort<VectorValue> RANGES_OUT = OutputPort.of("ranges", VectorValue.class,
             Shape.vector("m", "cleaned range per sensor; the maximum range where nothing was seen"));
     private static final OutputPort<RecordValue> SCAN = OutputPort.of("scan", RecordValue.class,
-            Shape.record("ranges with validity, reach and pose per sensor", RangeScan.class));
+            Shape.record("ranges with validity, reach and pose per sensor", RangeScan.LAYOUT));
     private static final InputPort<VectorValue> RANGES_IN = InputPort.of("ranges", VectorValue.class);
     private static final InputPort<RecordValue> HEAD = InputPort.optional("head", RecordValue.class, Delivery.latest());
     static final Ports PORTS = Ports.of(RANGES_OUT, SCAN, RANGES_IN, HEAD);

@@ -70,8 +70,7 @@ public final class SpeechRecognition extends ProcessingMethod {
     private static final OutputPort<TextValue> WORDS = OutputPort.of("words", TextValue.class,
             Shape.text("the phrase of the grammar recognised in one utterance"));
     private static final OutputPort<RecordValue> RESULT = OutputPort.of("result", RecordValue.class,
-            Shape.record("the recognised phrase with its confidence and decoding time", "phrase", "confidence",
-                    "timeMs", "audioMs", "score", "engine"));
+            Shape.record("the recognised phrase with its confidence and decoding time", Recognition.LAYOUT));
 
     /**
      * An utterance waiting for the decoder, with the source time of its last audio and the engine time it was
@@ -382,14 +381,8 @@ public final class SpeechRecognition extends ProcessingMethod {
     private void publish(SpeechEngine.Decoded r, long audioMs, long sourceMicros) {
         status.said++;
         emit(words, new TextValue(r.phrase()), sourceMicros);
-        emit(result, RecordValue.builder()
-                .put("phrase", r.phrase())
-                .put("confidence", Math.round(r.confidence() * 1000) / 1000.0)
-                .put("timeMs", r.decodeMs())
-                .put("audioMs", audioMs)
-                .put("score", r.score())
-                .put("engine", decoder.name())
-                .build(), sourceMicros);
+        emit(result, RecordValue.of(new Recognition(r.phrase(), Math.round(r.confidence() * 1000) / 1000.0,
+                r.decodeMs(), audioMs, r.score(), decoder.name())), sourceMicros);
     }
 
     /** Phrases said at an early endpoint, before the hangover ended the utterance. */

@@ -6,8 +6,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
-import org.habla.cli.CommandExtension;
-import org.habla.cli.ExitCodes;
+import org.habla.command.CommandExtension;
+import org.habla.command.ExitCodes;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -84,8 +84,8 @@ public final class ScenarioCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
         }
-        // Absolute: the daemon and the control program run in the HABLA folder, not where the command was given.
-        Path dir = (report != null ? report : root.resolve("reports").resolve(robot)).toAbsolutePath();
+        // The processes run in the HABLA folder: a report folder given relative to here is made absolute first.
+        Path dir = report != null ? report.toAbsolutePath() : root.resolve("reports").resolve(robot);
         ScenarioRunner.Options opts = new ScenarioRunner.Options(sc, episodes != null ? episodes : sc.episodes(), s, seed,
                 dir, portOffset, root);
         List<EpisodeResult> logs;
@@ -121,8 +121,8 @@ public final class ScenarioCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
         }
-        // Absolute: the daemon and the control program run in the HABLA folder, not where the command was given.
-        Path dir = (report != null ? report : root.resolve("reports").resolve(robot)).toAbsolutePath();
+        // The processes run in the HABLA folder: a report folder given relative to here is made absolute first.
+        Path dir = report != null ? report.toAbsolutePath() : root.resolve("reports").resolve(robot);
         RoomScenarioRunner runner = new RoomScenarioRunner(new RoomScenarioRunner.Options(sc,
                 episodes != null ? episodes : sc.episodes(), s, seed, dir, portOffset, root), out);
         List<RoomPhase> phases;
