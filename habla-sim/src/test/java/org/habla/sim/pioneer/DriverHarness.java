@@ -15,6 +15,7 @@ import java.util.OptionalInt;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Predicate;
+import org.habla.config.ParamsJson;
 import org.habla.driver.Connection;
 import org.habla.driver.InterfaceAddress;
 import org.habla.driver.LinkSession;
@@ -49,8 +50,7 @@ final class DriverHarness implements AutoCloseable {
      * @param keepAliveMs real milliseconds between PULSEs (the driver's keepAlivePeriodMs)
      */
     DriverHarness(int port, int keepAliveMs) throws IOException {
-        ObjectNode params = JSON.createObjectNode().put("keepAlivePeriodMs", keepAliveMs);
-        PioneerParams p = JSON.treeToValue(params, PioneerParams.class);
+        PioneerParams p = ParamsJson.of(PioneerParams.class, "{\"keepAlivePeriodMs\": " + keepAliveMs + "}");
         Connection c = new PioneerDriver(new InterfaceAddress("127.0.0.1", OptionalInt.of(port)), p).connections().get(0);
         session = c.sessions().get();
         socket = new Socket(InetAddress.getLoopbackAddress(), port);
