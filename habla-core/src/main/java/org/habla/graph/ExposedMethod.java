@@ -1,6 +1,5 @@
 package org.habla.graph;
 
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -24,6 +23,8 @@ final class ExposedMethod implements ControlPoint {
     private final MethodRunner runner;
     private final Expose expose;
     private final List<Input<?>> controlInputs;
+    /** What a control write to each control input is handed to, by the input's declaration index. */
+    private final InputEntry[] entries;
     private final MotionWatchdog watchdog;
     private final GraphTap tap;
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
@@ -32,9 +33,15 @@ final class ExposedMethod implements ControlPoint {
     private final boolean actuating;
     private final ControlLease lease;
 
-    /** @param actuating whether values written here can reach a command channel */
-    ExposedMethod(MethodRunner runner, Expose expose, List<Input<?>> controlInputs, MotionWatchdog watchdog,
+    /**
+     * @param controlled the inputs a control client writes, each with what a write is handed to
+     * @param actuating  whether values written here can reach a command channel
+     */
+    ExposedMethod(MethodRunner runner, Expose expose, Map<Input<?>, InputEntry> controlled, MotionWatchdog watchdog,
             GraphTap tap, boolean actuating) {
+        List<Input<?>> controlInputs = runner.method().inputs().stream().filter(controlled::containsKey).toList();
+        this.entries = new InputEntry[runner.method().inputs().size()];
+        controlled.forEach((in, entry) -> entries[in.index()] = entry);
         this.runner = runner;
         this.actuating = actuating && !controlInputs.isEmpty();
         this.lease = this.actuating ? new ControlLease(expose.name(), watchdog.timeoutMillis(), runner::nowMicros,
@@ -149,7 +156,7 @@ final class ExposedMethod implements ControlPoint {
         }
         Sample sample = new Sample(value, "control:" + expose.name(), seq, runner.nowMicros(), false);
         tap.control(expose.name(), input.name(), sample);
-        if (!runner.slot(input).offer(sample)) {
+        if (!entries[input.index()].offer(sample)) {
             throw new Rejected("queue_full", "input '" + input.name() + "' of " + runner.id()
                     + " is full (" + input.delivery().capacity() + " waiting); value dropped");
         }
@@ -161,16 +168,6 @@ final class ExposedMethod implements ControlPoint {
             tap.writerLeft(expose.name());
             watchdog.writerLeft();
         }
-    }
-
-    static List<Input<?>> controlInputsOf(MethodRunner runner, Map<String, ?> controlSources) {
-        List<Input<?>> list = new ArrayList<>();
-        for (Input<?> in : runner.method().inputs()) {
-            if (controlSources.containsKey(in.name())) {
-                list.add(in);
-            }
-        }
-        return list;
     }
 
 }

@@ -3,6 +3,7 @@ package org.habla.graph;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.atomic.LongAdder;
+import java.util.function.LongConsumer;
 import org.habla.method.Delivery;
 import org.habla.method.Input;
 import org.habla.sample.Sample;
@@ -12,30 +13,10 @@ import org.habla.sample.Sample;
  * inputs, a bounded queue for {@code queue} inputs. Offers never block; a full queue drops the
  * new sample and counts it.
  */
-final class InputSlot {
+final class InputSlot implements InputEntry {
 
     /** A sample with its place in the order of arrival at this slot. */
     private record Arrival(Sample sample, long index) {
-    }
-
-    /** Where the slot tells of the samples it skips, and asks which ones a recorded run skipped. */
-    interface Skips {
-        /** The {@code arrival}-th sample offered never reaches the method (replaced or dropped). */
-        void skipped(long arrival);
-
-        /** Whether the run being replayed skipped the {@code arrival}-th sample; false in a live run. */
-        boolean skippedWhenRecorded(long arrival);
-
-        Skips NONE = new Skips() {
-            @Override
-            public void skipped(long arrival) {
-            }
-
-            @Override
-            public boolean skippedWhenRecorded(long arrival) {
-                return false;
-            }
-        };
     }
 
     private final Input<?> input;
@@ -47,20 +28,20 @@ final class InputSlot {
     private final LongAdder conflated = new LongAdder();
     private final Runnable wake;
     private final WorkCount work;
-    private final Skips skips;
+    private final LongConsumer skipped;
     private volatile long consumedThrough;
 
     InputSlot(Input<?> input, Runnable wake, WorkCount work) {
-        this(input, input.delivery(), wake, work, Skips.NONE);
+        this(input, input.delivery(), wake, work, arrival -> { });
     }
 
     /**
      * A slot that delivers as {@code delivery}, which may differ from the input's own (a declared cycle's wire),
-     * and tells {@code skips} of every sample that does not reach the method.
+     * and tells {@code skipped} the place in the order of arrival of every sample that does not reach the method.
      */
-    InputSlot(Input<?> input, Delivery delivery, Runnable wake, WorkCount work, Skips skips) {
+    InputSlot(Input<?> input, Delivery delivery, Runnable wake, WorkCount work, LongConsumer skipped) {
         this.input = input;
-        this.skips = skips;
+        this.skipped = skipped;
         this.delivery = delivery;
         this.wake = wake;
         this.work = work;
@@ -83,42 +64,56 @@ final class InputSlot {
     }
 
     /** Hands a sample to the method; false if a full queue dropped it. */
-    boolean offer(Sample sample) {
-        Arrival arrival = new Arrival(sample, offered.incrementAndGet());
-        if (skips.skippedWhenRecorded(arrival.index())) {
-            // A replay: the recorded run replaced or dropped this one before the method took it, so it does too
-            // (and says so, for a recording of the replay).
-            skips.skipped(arrival.index());
-            if (latest != null) {
-                conflated.increment();
-                return true;
-            }
-            dropped.increment();
-            return false;
-        }
+    @Override
+    public boolean offer(Sample sample) {
+        return offer(sample, arrive());
+    }
+
+    /** Gives the next sample its place in the order of arrival (1 for the first); then {@link #offer} or {@link #skip}. */
+    long arrive() {
+        return offered.incrementAndGet();
+    }
+
+    /** Hands the {@code arrival}-th sample to the method; false if a full queue dropped it. */
+    boolean offer(Sample sample, long arrival) {
+        Arrival a = new Arrival(sample, arrival);
         boolean taken;
         if (latest != null) {
             work.begin();
-            Arrival replaced = latest.getAndSet(arrival);
+            Arrival replaced = latest.getAndSet(a);
             if (replaced != null) {
                 conflated.increment();
                 work.end();
-                skips.skipped(replaced.index());
+                skipped.accept(replaced.index());
             }
             taken = true;
         } else {
             work.begin();
-            taken = queue.offer(arrival);
+            taken = queue.offer(a);
             if (!taken) {
                 work.end();
                 dropped.increment();
-                skips.skipped(arrival.index());
+                skipped.accept(arrival);
             }
         }
         if (taken) {
             wake.run();
         }
         return taken;
+    }
+
+    /**
+     * Does not hand the {@code arrival}-th sample to the method, and counts it as this slot counts a sample that does
+     * not reach the method: replaced ({@code latest}, returns true) or dropped ({@code queue}, returns false).
+     */
+    boolean skip(long arrival) {
+        skipped.accept(arrival);
+        if (latest != null) {
+            conflated.increment();
+            return true;
+        }
+        dropped.increment();
+        return false;
     }
 
     /**

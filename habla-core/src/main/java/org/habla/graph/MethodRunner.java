@@ -4,7 +4,6 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Consumer;
@@ -17,7 +16,6 @@ import org.habla.method.Method;
 import org.habla.method.MethodLifecycle;
 import org.habla.method.MethodState;
 import org.habla.method.Output;
-import org.habla.sample.Payload;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -67,19 +65,8 @@ final class MethodRunner {
         this.clock = clock;
         for (Input<?> in : method.inputs()) {
             String input = in.name();
-            InputSlot slot = new InputSlot(in, latestInputs.contains(input) ? Delivery.latest() : in.delivery(),
-                    this::wake, work, new InputSlot.Skips() {
-                        @Override
-                        public void skipped(long arrival) {
-                            tap.skipped(id, input, arrival);
-                        }
-
-                        @Override
-                        public boolean skippedWhenRecorded(long arrival) {
-                            return tap.skippedWhenRecorded(id, input, arrival);
-                        }
-                    });
-            slots.add(slot);
+            slots.add(new InputSlot(in, latestInputs.contains(input) ? Delivery.latest() : in.delivery(), this::wake,
+                    work, arrival -> tap.skipped(id, input, arrival)));
         }
         slotByInput = slots.toArray(InputSlot[]::new);
         context = new RunnerContext(id, method, clock, backgroundPool, work, new RunnerContext.Turns() {
@@ -140,16 +127,6 @@ final class MethodRunner {
         context.bindCommandChannel(output, channel);
     }
 
-    /** The interface channels the inputs read, by input name (for a worker running the method). */
-    Map<String, ChannelDescriptor> channelsByInput() {
-        return context.channelsByInput();
-    }
-
-    /** The interface channels the outputs write, by output name (for a worker running the method). */
-    Map<String, ChannelDescriptor> commandChannelsByOutput() {
-        return context.commandChannelsByOutput();
-    }
-
     void stale(boolean isStale) {
         context.stale(isStale);
     }
@@ -167,16 +144,29 @@ final class MethodRunner {
         scheduler.followMotionResets(resets);
     }
 
-    /**
-     * Runs the method on a worker: from now on its input samples go to {@code remote} instead of the method
-     * object here, which runs only as the fallback while the worker is lost (if the config asks for one).
-     * Call before {@link #start}.
-     */
-    void placeOn(RemotePlacement remote) {
-        scheduler.host(new MethodHost.OnWorker(id, remote, local));
-        if (!remote.fallsBackToLocal()) {
-            context.startNotReady("waiting for worker " + remote.host());
-        }
+    /** What the method sees of the engine: its ports, channels, readiness. */
+    RunnerContext context() {
+        return context;
+    }
+
+    /** The method object in this daemon, as a host. */
+    MethodHost.Local local() {
+        return local;
+    }
+
+    /** Where the method runs now: in the daemon unless it was moved ({@link #runOn}). */
+    MethodHost host() {
+        return scheduler.host();
+    }
+
+    /** Has the method run on {@code host} instead of here (a worker's placement); before {@link #start}. */
+    void runOn(MethodHost host) {
+        scheduler.host(host);
+    }
+
+    /** Runs {@code turn} on the method's thread, between its messages. From any thread. */
+    void turn(Runnable turn) {
+        scheduler.turn(turn);
     }
 
     boolean ready() {
@@ -185,11 +175,6 @@ final class MethodRunner {
 
     String readinessDetail() {
         return context.readinessDetail();
-    }
-
-    /** The method's readiness, as its worker tells it (see {@link RunnerContext#readiness}). */
-    void readiness(boolean isReady, String detail) {
-        context.readiness(isReady, detail);
     }
 
     long nowMicros() {
@@ -211,15 +196,6 @@ final class MethodRunner {
         scheduler.wake();
     }
 
-    /** From the placement, on any thread: the worker was lost and the fallback is to run here. */
-    void fallBackToLocal() {
-        scheduler.turn(() -> {
-            if (scheduler.host() instanceof MethodHost.OnWorker w) {
-                w.fallBack();
-            }
-        });
-    }
-
     /** Stops the thread, then the method. Waits at most {@code waitMillis} for the current turn. */
     void stop(long waitMillis) {
         closeTicker();
@@ -236,11 +212,6 @@ final class MethodRunner {
             n += slot.consumedThrough();
         }
         return n;
-    }
-
-    /** A sample the method published on its worker, published here as if the method had emitted it. */
-    void publishFromWorker(Output<?> output, Payload value, long sourceMicros) {
-        context.emit(output, value, sourceMicros);
     }
 
     private void closeTicker() {
