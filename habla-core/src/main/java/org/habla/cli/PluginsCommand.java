@@ -21,8 +21,9 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code habla plugins}: every method and driver type on the class path, with layers and parameters, and each
- * method type's ports as its provider lists them for the default parameters (no method is made).
+ * {@code habla plugins}: every method and driver type on the class path, with layers ("light" after them for a
+ * type whose methods may run on the thread that feeds them) and parameters, and each method type's ports as its
+ * provider lists them for the default parameters (no method is made).
  */
 @Command(name = "plugins", mixinStandardHelpOptions = true,
         description = "List every method type and driver type, with its layers, parameters and ports.")
@@ -51,7 +52,7 @@ public final class PluginsCommand implements Callable<Integer> {
         for (Map.Entry<String, MethodProvider<?>> e : r.methods().entrySet()) {
             MethodProvider<?> p = e.getValue();
             String layers = p.layers().stream().sorted().map(Layer::configName).collect(Collectors.joining(", "));
-            out.println("  " + e.getKey() + "  [" + layers + "]  " + p.description());
+            out.println("  " + e.getKey() + "  [" + layers + "]" + (p.light() ? " light" : "") + "  " + p.description());
             printParams(out, p.paramsType());
             printPorts(out, p);
         }

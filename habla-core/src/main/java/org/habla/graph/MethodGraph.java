@@ -70,10 +70,11 @@ public final class MethodGraph implements AutoCloseable {
         }
         this.watchdog = new MotionWatchdog(config.safety().watchdogMs(), clock, List.copyOf(links.values()));
         links.values().forEach(l -> l.watchdog(watchdog));
+        ThreadPlan threads = ThreadPlan.of(config, registry);
         for (MethodConfig mc : config.methods()) {
             Method made = createMethod(registry, mc, config.methods().indexOf(mc));
             runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), made, clock, backgroundPool, run.work(), tap,
-                    config.cycleInputs(mc.id())));
+                    config.cycleInputs(mc.id()), threads.choice(mc.id())));
         }
         this.placements = RemotePlacement.placeAll(config, runners, linkStates);
         this.exposed = GraphWiring.wire(config, topology, runners, links, watchdog, tap, run::entry);

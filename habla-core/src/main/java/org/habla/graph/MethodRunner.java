@@ -20,11 +20,11 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Runs one method on a thread of its own: waits for samples in its input slots, ticks and
- * background results, and hands them to the method one at a time. Because every method has its
- * own thread, a slow method (speech, vision) never holds up a light one. The thread and the order of
- * messages are its {@link MethodScheduler}'s, what the method sees of the engine its {@link RunnerContext}'s;
- * the runner puts them together, ticks the method, and says in the status how it is doing.
+ * Runs one method: takes samples from its input slots, ticks and background results, and hands them to the method
+ * one at a time, on a thread of its own or on the thread that delivers to it, as the graph's {@link ThreadPlan}
+ * chose. A heavy method (speech, vision) has its own thread, so it never holds up a light one. The thread and the
+ * order of messages are its {@link MethodScheduler}'s, what the method sees of the engine its
+ * {@link RunnerContext}'s; the runner puts them together, ticks the method, and says in the status how it is doing.
  */
 final class MethodRunner {
 
@@ -47,17 +47,20 @@ final class MethodRunner {
     static final String TICK_PREFIX = "tick:";
     private final GraphTap tap;
 
+    /** A runner with a thread of its own (a method hosted for a daemon, on a worker). */
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
             WorkCount work, GraphTap tap) {
-        this(id, type, method, clock, backgroundPool, work, tap, java.util.Set.of());
+        this(id, type, method, clock, backgroundPool, work, tap, java.util.Set.of(),
+                ThreadPlan.Choice.own(id, false, "it is hosted alone"));
     }
 
     /**
      * A runner whose inputs named in {@code latestInputs} (the wires of a declared cycle) hold only the newest
-     * sample, whatever delivery the method type asks for.
+     * sample, whatever delivery the method type asks for, and whose messages run where {@code thread} says: on a
+     * thread of its own, or on the thread that delivers to it.
      */
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
-            WorkCount work, GraphTap tap, java.util.Set<String> latestInputs) {
+            WorkCount work, GraphTap tap, java.util.Set<String> latestInputs, ThreadPlan.Choice thread) {
         this.tap = tap;
         this.id = id;
         this.type = type;
@@ -69,7 +72,8 @@ final class MethodRunner {
                     work, arrival -> tap.skipped(id, input, arrival)));
         }
         slotByInput = slots.toArray(InputSlot[]::new);
-        context = new RunnerContext(id, method, clock, backgroundPool, work, new RunnerContext.Turns() {
+        context = new RunnerContext(id, method, clock, thread.light() ? RunnerContext.NO_BACKGROUND : backgroundPool,
+                work, new RunnerContext.Turns() {
             @Override
             public void done(String what, MethodLifecycle.ThrowingRunnable result) {
                 scheduler.turn(() -> lifecycle.runTurn(what, result));
@@ -83,7 +87,9 @@ final class MethodRunner {
         lifecycle = MethodLifecycle.attach(method, context);
         local = new MethodHost.Local(lifecycle, () -> method.tickPeriod()
                 .ifPresent(p -> ticker = clock.every(p.toNanos() / 1_000, this::requestTick)));
-        scheduler = new MethodScheduler(id, slots, clock, work, local);
+        scheduler = thread.inline()
+                ? new InlineScheduler(id, slots, clock, work, local, thread.thread(), thread.reason())
+                : new OwnThreadScheduler(id, slots, clock, work, local, thread.reason());
     }
 
     String id() {

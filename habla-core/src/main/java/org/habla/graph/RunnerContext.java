@@ -37,6 +37,42 @@ final class RunnerContext implements MethodContext {
         void failed(String what, Throwable cause);
     }
 
+    /**
+     * The pool of a method of a light type: it refuses every task, since a light method runs on the thread that
+     * delivers to it and a background result would come back on a thread of the pool's.
+     */
+    static final ExecutorService NO_BACKGROUND = new java.util.concurrent.AbstractExecutorService() {
+        @Override
+        public void execute(Runnable command) {
+            throw new IllegalStateException("a method of a light type runs no background work (its type must not"
+                    + " be declared light)");
+        }
+
+        @Override
+        public void shutdown() {
+        }
+
+        @Override
+        public java.util.List<Runnable> shutdownNow() {
+            return java.util.List.of();
+        }
+
+        @Override
+        public boolean isShutdown() {
+            return false;
+        }
+
+        @Override
+        public boolean isTerminated() {
+            return false;
+        }
+
+        @Override
+        public boolean awaitTermination(long timeout, java.util.concurrent.TimeUnit unit) {
+            return false;
+        }
+    };
+
     private final String id;
     private final EngineClock clock;
     private final ExecutorService backgroundPool;
@@ -177,6 +213,9 @@ final class RunnerContext implements MethodContext {
         } catch (RejectedExecutionException e) {
             work.end();
             LOG.debug("background work '{}' of {} refused: the engine is stopping", what, id);
+        } catch (RuntimeException e) {
+            work.end();
+            throw e; // a light method's: it fails, saying why
         }
     }
 }

@@ -1,0 +1,148 @@
+package org.habla.graph;
+
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.LongAdder;
+import java.util.concurrent.locks.LockSupport;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/**
+ * A light method run by the thread that delivers to it ({@link ThreadPlan}): once a sample is in one of the
+ * method's slots, the delivering thread runs the method's passes itself, before it goes on with its own work, so a
+ * chain of such methods runs as one pass on the producer's thread, in graph order, and nobody is woken. The slots
+ * stay as they are: a {@code latest} input still keeps only the newest sample, a {@code queue} input still keeps
+ * order and counts what it drops.
+ *
+ * <p>One message at a time still holds. A thread runs passes only while it holds the method ({@code busy}). A
+ * delivery that finds the method held — by the same thread further up its stack (what the method emitted led back
+ * to it), or by another thread — leaves its sample in the slot and returns, and the holder takes the sample before
+ * it lets go: a holder that lets go looks once more, and runs again if anything waits. A re-entrant delivery thus
+ * never runs the method inside itself, and a second delivering thread (the plan admits none, but a driver may
+ * surprise it) is served, not raced.
+ *
+ * <p>The first pass and then every {@value #TIMED_EVERY}th is timed; one that holds the delivering thread longer than
+ * {@link #OVERRUN_MICROS} µs (with the methods that ran inline after it) is counted in the status and logged: a
+ * type declared light that takes that long should not be, or the method should get {@code "thread": "own"}.
+ */
+final class InlineScheduler extends MethodScheduler {
+
+    private static final Logger LOG = LoggerFactory.getLogger(MethodScheduler.class);
+    /** How long a pass may hold the delivering thread before it counts as an overrun. */
+    static final long OVERRUN_MICROS = 1_000;
+    /** One pass in this many is timed (a clock read costs a light method's whole work). */
+    static final int TIMED_EVERY = 16;
+    /** Looks again at a queue place another thread claimed and has not filled, before the holder gives way. */
+    private static final int SPINS_BEFORE_YIELD = 64;
+    private static final long STOP_POLL_NANOS = TimeUnit.MICROSECONDS.toNanos(100);
+
+    private final AtomicBoolean busy = new AtomicBoolean();
+    private volatile boolean running;
+    private final String thread;
+    private final String reason;
+    private final LongAdder overruns = new LongAdder();
+    private volatile long longestMicros;
+    private int passes;
+
+    /**
+     * @param thread the thread the plan says delivers to the method (the status names it)
+     * @param reason why the method runs there
+     */
+    InlineScheduler(String id, List<InputSlot> slots, EngineClock clock, WorkCount work, MethodHost host,
+            String thread, String reason) {
+        super(id, slots, clock, work, host);
+        this.thread = thread;
+        this.reason = reason;
+    }
+
+    /** Starts the host, then handles what was delivered before, on the starting thread. */
+    @Override
+    void start() {
+        host().start();
+        running = true;
+        wake();
+    }
+
+    @Override
+    void stop(long waitMillis) {
+        running = false;
+        long end = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(waitMillis);
+        while (!busy.compareAndSet(false, true)) {
+            if (System.nanoTime() - end > 0) {
+                LOG.warn("method {} is still busy on {} after {} ms; stopping it anyway", id, thread, waitMillis);
+                break;
+            }
+            LockSupport.parkNanos(STOP_POLL_NANOS);
+        }
+        host().stop();
+    }
+
+    @Override
+    void wake() {
+        int idle = 0;
+        while (running && !busy.get() && busy.compareAndSet(false, true)) {
+            boolean worked = false;
+            try {
+                while (running && pass()) {
+                    worked = true;
+                    if (nothingWaiting()) {
+                        break;
+                    }
+                }
+            } finally {
+                busy.set(false);
+            }
+            if (nothingWaiting()) {
+                return;
+            }
+            // Something came in while this thread let go, or a producer claimed a queue place and is filling it.
+            idle = worked ? 0 : idle + 1;
+            if (idle >= SPINS_BEFORE_YIELD) {
+                return; // that producer's own wake, once it has filled the place, finds the method free
+            }
+            Thread.onSpinWait();
+        }
+    }
+
+    @Override
+    void threadStatusTo(ObjectNode status) {
+        ObjectNode t = status.putObject("thread");
+        t.put("name", thread);
+        t.put("inline", true);
+        t.put("reason", reason);
+        t.put("overruns", overruns.sum());
+        t.put("longestTimedPassUs", longestMicros);
+    }
+
+    /** One pass; the first and then every {@value #TIMED_EVERY}th one that handles anything timed. Runs held. */
+    private boolean pass() {
+        if (passes % TIMED_EVERY != 0) {
+            boolean worked = drainOnce();
+            if (worked) {
+                passes++;
+            }
+            return worked;
+        }
+        long start = System.nanoTime();
+        if (!drainOnce()) {
+            return false;
+        }
+        passes++;
+        long micros = TimeUnit.NANOSECONDS.toMicros(System.nanoTime() - start);
+        if (micros > longestMicros) {
+            longestMicros = micros;
+        }
+        if (micros > OVERRUN_MICROS) {
+            overruns.increment();
+            long n = overruns.sum();
+            if (n == 1 || n % 1_000 == 0) {
+                LOG.warn("method {} held {} for {} µs with the methods inline after it (limit {} µs; {} such passes so"
+                        + " far): a light type should take microseconds; give it \"thread\": \"own\" if it cannot",
+                        id, thread, micros, OVERRUN_MICROS, n);
+            }
+        }
+        return true;
+    }
+}
