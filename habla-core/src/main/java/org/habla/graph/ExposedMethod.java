@@ -32,6 +32,8 @@ final class ExposedMethod implements ControlPoint {
     private final AtomicLongArray controlSequences;
     private final boolean actuating;
     private final ControlLease lease;
+    /** The producer a written value's sample names ({@code control:SOCKET}). */
+    private final String controlProducer;
 
     /**
      * @param controlled the inputs a control client writes, each with what a write is handed to
@@ -47,6 +49,7 @@ final class ExposedMethod implements ControlPoint {
         this.lease = this.actuating ? new ControlLease(expose.name(), watchdog.timeoutMillis(), runner::nowMicros,
                 this::writerLeft, line -> listeners.forEach(l -> l.onControl(line))) : null;
         this.expose = expose;
+        this.controlProducer = "control:" + expose.name();
         this.controlInputs = List.copyOf(controlInputs);
         this.controlSequences = new AtomicLongArray(runner.method().inputs().size());
         this.watchdog = watchdog;
@@ -154,7 +157,7 @@ final class ExposedMethod implements ControlPoint {
         if (actuating) {
             watchdog.controlWrite();
         }
-        Sample sample = new Sample(value, "control:" + expose.name(), seq, runner.nowMicros(), false);
+        Sample sample = new Sample(value, controlProducer, seq, runner.nowMicros(), false);
         tap.control(expose.name(), input.name(), sample);
         if (!entries[input.index()].offer(sample)) {
             throw new Rejected("queue_full", "input '" + input.name() + "' of " + runner.id()

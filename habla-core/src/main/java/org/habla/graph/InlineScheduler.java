@@ -90,16 +90,11 @@ final class InlineScheduler extends MethodScheduler {
     void wake() {
         int idle = 0;
         while (running && !busy.get() && busy.compareAndSet(false, true)) {
-            boolean worked = false;
+            boolean worked;
             try {
-                while (running && pass()) {
-                    worked = true;
-                    if (nothingWaiting()) {
-                        break;
-                    }
-                }
+                worked = running && pass();
             } finally {
-                busy.set(false);
+                busy.set(false); // a full fence: what is offered from now on either finds the method free or is seen below
             }
             if (nothingWaiting()) {
                 return;

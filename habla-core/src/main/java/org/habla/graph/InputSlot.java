@@ -29,7 +29,18 @@ final class InputSlot implements InputEntry {
     private final Runnable wake;
     private final WorkCount work;
     private final LongConsumer skipped;
+    /** Written by whoever takes the method's messages, with release; read by any thread. */
     private volatile long consumedThrough;
+    private static final java.lang.invoke.VarHandle CONSUMED_THROUGH;
+
+    static {
+        try {
+            CONSUMED_THROUGH = java.lang.invoke.MethodHandles.lookup()
+                    .findVarHandle(InputSlot.class, "consumedThrough", long.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
 
     InputSlot(Input<?> input, Runnable wake, WorkCount work) {
         this(input, input.delivery(), wake, work, arrival -> { });
@@ -125,7 +136,7 @@ final class InputSlot implements InputEntry {
         if (a == null) {
             return null;
         }
-        consumedThrough = a.index();
+        CONSUMED_THROUGH.setRelease(this, a.index());
         return a.sample();
     }
 

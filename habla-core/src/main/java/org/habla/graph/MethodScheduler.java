@@ -114,6 +114,9 @@ abstract sealed class MethodScheduler permits OwnThreadScheduler, InlineSchedule
                 }
             }
         }
+        if (turns.isEmpty()) {
+            return worked;
+        }
         for (int n = turns.size(); n > 0; n--) {
             Runnable turn = turns.poll();
             if (turn == null) {

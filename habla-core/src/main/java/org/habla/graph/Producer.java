@@ -17,7 +17,17 @@ final class Producer {
     private final String producer;
     private final List<Consumer<Sample>> subscribers = new CopyOnWriteArrayList<>();
     private final AtomicLong sequence = new AtomicLong();
+    /** The newest sample; written with release (readers need only see it soon), read as a volatile. */
     private volatile Sample latest;
+    private static final java.lang.invoke.VarHandle LATEST;
+
+    static {
+        try {
+            LATEST = java.lang.invoke.MethodHandles.lookup().findVarHandle(Producer.class, "latest", Sample.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
     /** Sees every sample before the subscribers do; set while the graph is built, before anything publishes. */
     private Consumer<Sample> first = s -> { };
 
@@ -49,7 +59,7 @@ final class Producer {
     Sample publish(Payload payload, long sourceMicros, boolean stale) {
         Sample s = new Sample(payload, producer, sequence.incrementAndGet(), sourceMicros, stale);
         first.accept(s);
-        latest = s;
+        LATEST.setRelease(this, s);
         for (Consumer<Sample> sub : subscribers) {
             sub.accept(s);
         }
