@@ -8,15 +8,17 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.concurrent.locks.LockSupport;
+import org.habla.sample.Sample;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * A light method run by the thread that delivers to it ({@link ThreadPlan}): once a sample is in one of the
- * method's slots, the delivering thread runs the method's passes itself, before it goes on with its own work, so a
- * chain of such methods runs as one pass on the producer's thread, in graph order, and nobody is woken. The slots
- * stay as they are: a {@code latest} input still keeps only the newest sample, a {@code queue} input still keeps
- * order and counts what it drops.
+ * A light method run by the thread that delivers to it ({@link ThreadPlan}): the delivering thread hands the
+ * sample to the method itself, before it goes on with its own work — straight from the offer when the method is
+ * free and nothing waits in the slot ({@link #takeNow}), else from the slot once it is in — so a chain of such
+ * methods runs as one pass on the producer's thread, in graph order, and nobody is woken. The slots stay as they
+ * are: a {@code latest} input still keeps only the newest sample waiting, a {@code queue} input still keeps order
+ * and counts what it drops.
  *
  * <p>One message at a time still holds. A thread runs passes only while it holds the method ({@code busy}). A
  * delivery that finds the method held — by the same thread further up its stack (what the method emitted led back
@@ -86,8 +88,35 @@ final class InlineScheduler extends MethodScheduler {
         host().stop();
     }
 
+    /**
+     * The sample is handled here and now when the method is free and nothing waits in its slot: the same as
+     * queuing it and taking it at once, without the queue. Then whatever came in meanwhile is handled too.
+     */
     @Override
-    void wake() {
+    public boolean takeNow(InputSlot slot, Sample sample, long arrival) {
+        if (!running || busy.get() || !busy.compareAndSet(false, true)) {
+            return false;
+        }
+        boolean taken = false;
+        try {
+            if (running && slot.isEmpty()) {
+                taken = true;
+                long start = timing();
+                slot.takenNow(arrival);
+                handle(slot, sample);
+                passDone(start);
+            }
+        } finally {
+            busy.set(false); // a full fence, as in wake
+        }
+        if (!nothingWaiting()) {
+            wake();
+        }
+        return taken;
+    }
+
+    @Override
+    public void wake() {
         int idle = 0;
         while (running && !busy.get() && busy.compareAndSet(false, true)) {
             boolean worked;
@@ -120,18 +149,25 @@ final class InlineScheduler extends MethodScheduler {
 
     /** One pass; every {@value #TIMED_EVERY}th that handles anything timed. Runs with the method held. */
     private boolean pass() {
-        if ((passes + 1) % TIMED_EVERY != 0) {
-            boolean worked = drainOnce();
-            if (worked) {
-                passes++;
-            }
-            return worked;
-        }
-        long start = CPU.getCurrentThreadCpuTime();
+        long start = timing();
         if (!drainOnce()) {
             return false;
         }
+        passDone(start);
+        return true;
+    }
+
+    /** The processor time now if the next pass that handles anything is one to time, else -1. */
+    private long timing() {
+        return (passes + 1) % TIMED_EVERY == 0 ? CPU.getCurrentThreadCpuTime() : -1;
+    }
+
+    /** A pass that handled something, begun at {@code start} ({@link #timing}), is over. */
+    private void passDone(long start) {
         passes++;
+        if (start < 0) {
+            return;
+        }
         long micros = TimeUnit.NANOSECONDS.toMicros(CPU.getCurrentThreadCpuTime() - start);
         if (micros > longestMicros) {
             longestMicros = micros;
@@ -145,6 +181,5 @@ final class InlineScheduler extends MethodScheduler {
                         + " \"thread\": \"own\" if it cannot", id, micros, thread, OVERRUN_MICROS, n);
             }
         }
-        return true;
     }
 }

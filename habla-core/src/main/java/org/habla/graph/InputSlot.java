@@ -11,9 +11,38 @@ import org.habla.sample.Sample;
 /**
  * Where samples wait for one input of one method: a single conflating slot for {@code latest}
  * inputs, a bounded queue for {@code queue} inputs. Offers never block; a full queue drops the
- * new sample and counts it.
+ * new sample and counts it. A method run on the thread that delivers to it may take a sample at once, while
+ * nothing waits in the slot before it ({@link Taker#takeNow}): it is then handled as if it had been queued and
+ * taken, without the queue.
  */
 final class InputSlot implements InputEntry {
+
+    /** Who takes the slot's samples: the method's scheduler, through its runner. */
+    interface Taker {
+        /** A sample is waiting: see that it is handled. */
+        void wake();
+
+        /**
+         * Hands the {@code arrival}-th sample to the method now, on this thread, if the method is free and nothing
+         * waits in {@code slot}; false to queue it instead.
+         */
+        boolean takeNow(InputSlot slot, Sample sample, long arrival);
+
+        /** A taker that only wakes: every sample is queued. */
+        static Taker waking(Runnable wake) {
+            return new Taker() {
+                @Override
+                public void wake() {
+                    wake.run();
+                }
+
+                @Override
+                public boolean takeNow(InputSlot slot, Sample sample, long arrival) {
+                    return false;
+                }
+            };
+        }
+    }
 
     /** A sample with its place in the order of arrival at this slot. */
     private record Arrival(Sample sample, long index) {
@@ -26,7 +55,7 @@ final class InputSlot implements InputEntry {
     private final AtomicLong offered = new AtomicLong();
     private final LongAdder dropped = new LongAdder();
     private final LongAdder conflated = new LongAdder();
-    private final Runnable wake;
+    private final Taker taker;
     private final WorkCount work;
     private final LongConsumer skipped;
     /** Written by whoever takes the method's messages, with release; read by any thread. */
@@ -43,18 +72,18 @@ final class InputSlot implements InputEntry {
     }
 
     InputSlot(Input<?> input, Runnable wake, WorkCount work) {
-        this(input, input.delivery(), wake, work, arrival -> { });
+        this(input, input.delivery(), Taker.waking(wake), work, arrival -> { });
     }
 
     /**
      * A slot that delivers as {@code delivery}, which may differ from the input's own (a declared cycle's wire),
      * and tells {@code skipped} the place in the order of arrival of every sample that does not reach the method.
      */
-    InputSlot(Input<?> input, Delivery delivery, Runnable wake, WorkCount work, LongConsumer skipped) {
+    InputSlot(Input<?> input, Delivery delivery, Taker taker, WorkCount work, LongConsumer skipped) {
         this.input = input;
         this.skipped = skipped;
         this.delivery = delivery;
-        this.wake = wake;
+        this.taker = taker;
         this.work = work;
         if (delivery.mode() == Delivery.Mode.LATEST) {
             latest = new AtomicReference<>();
@@ -87,6 +116,9 @@ final class InputSlot implements InputEntry {
 
     /** Hands the {@code arrival}-th sample to the method; false if a full queue dropped it. */
     boolean offer(Sample sample, long arrival) {
+        if (taker.takeNow(this, sample, arrival)) {
+            return true;
+        }
         Arrival a = new Arrival(sample, arrival);
         boolean taken;
         if (latest != null) {
@@ -108,7 +140,7 @@ final class InputSlot implements InputEntry {
             }
         }
         if (taken) {
-            wake.run();
+            taker.wake();
         }
         return taken;
     }
@@ -138,6 +170,15 @@ final class InputSlot implements InputEntry {
         }
         CONSUMED_THROUGH.setRelease(this, a.index());
         return a.sample();
+    }
+
+    /**
+     * The {@code arrival}-th sample was handed to the method without waiting here ({@link Taker#takeNow}); counted in
+     * as work, as a queued one is. By the thread that holds the method.
+     */
+    void takenNow(long arrival) {
+        work.begin();
+        CONSUMED_THROUGH.setRelease(this, arrival);
     }
 
     /**

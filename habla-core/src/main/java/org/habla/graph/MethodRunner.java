@@ -16,6 +16,7 @@ import org.habla.method.Method;
 import org.habla.method.MethodLifecycle;
 import org.habla.method.MethodState;
 import org.habla.method.Output;
+import org.habla.sample.Sample;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -68,7 +69,7 @@ final class MethodRunner {
         this.clock = clock;
         for (Input<?> in : method.inputs()) {
             String input = in.name();
-            slots.add(new InputSlot(in, latestInputs.contains(input) ? Delivery.latest() : in.delivery(), this::wake,
+            slots.add(new InputSlot(in, latestInputs.contains(input) ? Delivery.latest() : in.delivery(), taker,
                     work, arrival -> tap.skipped(id, input, arrival)));
         }
         slotByInput = slots.toArray(InputSlot[]::new);
@@ -197,10 +198,18 @@ final class MethodRunner {
         scheduler.start();
     }
 
-    /** A slot has a sample: wakes the method's thread. */
-    private void wake() {
-        scheduler.wake();
-    }
+    /** What the slots hand their samples to: the scheduler, made after them. */
+    private final InputSlot.Taker taker = new InputSlot.Taker() {
+        @Override
+        public void wake() {
+            scheduler.wake();
+        }
+
+        @Override
+        public boolean takeNow(InputSlot slot, Sample sample, long arrival) {
+            return scheduler.takeNow(slot, sample, arrival);
+        }
+    };
 
     /** Stops the thread, then the method. Waits at most {@code waitMillis} for the current turn. */
     void stop(long waitMillis) {

@@ -14,7 +14,7 @@ import org.habla.sample.Sample;
  * thing that differs: a thread of the method's own, woken by whoever adds work ({@link OwnThreadScheduler}), or the
  * thread that delivers to the method, right away ({@link InlineScheduler}).
  */
-abstract sealed class MethodScheduler permits OwnThreadScheduler, InlineScheduler {
+abstract sealed class MethodScheduler implements InputSlot.Taker permits OwnThreadScheduler, InlineScheduler {
 
     /** How a method's own thread is named: then the method id. */
     static final String THREAD_PREFIX = "habla-method-";
@@ -45,7 +45,8 @@ abstract sealed class MethodScheduler permits OwnThreadScheduler, InlineSchedule
     abstract void stop(long waitMillis);
 
     /** A slot has a sample, or a turn is waiting: see that it is handled. From any thread. */
-    abstract void wake();
+    @Override
+    public abstract void wake();
 
     /** Adds what the status says of how the method's messages are run. */
     abstract void threadStatusTo(ObjectNode status);
@@ -103,15 +104,7 @@ abstract sealed class MethodScheduler permits OwnThreadScheduler, InlineSchedule
             Sample s = slot.poll();
             if (s != null) {
                 worked = true;
-                catchUpMotionReset();
-                long now = clock.nowMicros();
-                latency.record(now - s.sourceMicros());
-                handled.mark(now);
-                try {
-                    host.deliver(slot.input(), s);
-                } finally {
-                    work.end();
-                }
+                handle(slot, s);
             }
         }
         if (turns.isEmpty()) {
@@ -131,6 +124,19 @@ abstract sealed class MethodScheduler permits OwnThreadScheduler, InlineSchedule
             }
         }
         return worked;
+    }
+
+    /** Hands one sample taken from {@code slot} to the method, measured; it was counted in as work. */
+    final void handle(InputSlot slot, Sample s) {
+        catchUpMotionReset();
+        long now = clock.nowMicros();
+        latency.record(now - s.sourceMicros());
+        handled.mark(now);
+        try {
+            host.deliver(slot.input(), s);
+        } finally {
+            work.end();
+        }
     }
 
     /**

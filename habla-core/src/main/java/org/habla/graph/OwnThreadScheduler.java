@@ -6,6 +6,7 @@ import java.lang.invoke.VarHandle;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
+import org.habla.sample.Sample;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -77,8 +78,14 @@ final class OwnThreadScheduler extends MethodScheduler {
         host().stop();
     }
 
+    /** Never: a method with a thread of its own takes every sample there. */
     @Override
-    void wake() {
+    public boolean takeNow(InputSlot slot, Sample sample, long arrival) {
+        return false;
+    }
+
+    @Override
+    public void wake() {
         // The first producer to find the thread going to sleep wakes it; the ones after it, while the thread is
         // still being scheduled, find the flag cleared and leave it (each unpark takes the thread's lock).
         if (parking && PARKING.compareAndSet(this, true, false)) {

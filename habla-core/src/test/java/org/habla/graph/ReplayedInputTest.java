@@ -25,7 +25,7 @@ class ReplayedInputTest {
     }
 
     private InputSlot slot(Delivery delivery) {
-        return new InputSlot(input(), delivery, () -> { }, WorkCount.NONE, told::add);
+        return new InputSlot(input(), delivery, InputSlot.Taker.waking(() -> { }), WorkCount.NONE, told::add);
     }
 
     private static List<Double> drain(InputSlot slot) {
