@@ -75,11 +75,11 @@ final class GraphWiring {
                 case Source.MethodOutput mo -> {
                     MethodRunner from = runners.get(mo.methodId());
                     Output<?> out = from.method().output(mo.output()).orElseThrow();
-                    from.port(out).subscribe(entry::offer);
+                    feed(from.port(out), runner, entry);
                 }
                 case Source.Channel ch -> {
                     InterfaceLink link = links.get(ch.interfaceId());
-                    link.reading(ch.channel()).subscribe(entry::offer);
+                    feed(link.reading(ch.channel()), runner, entry);
                     runner.bindChannel(input, link.channel(ch.channel()));
                 }
                 case Source.Control c -> controlled.put(input, entry);
@@ -97,6 +97,18 @@ final class GraphWiring {
         }
         mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner, x, controlled, watchdog, tap,
                 topology.actuates(mc.id()))));
+    }
+
+    /**
+     * Wires {@code producer} to an input of {@code runner}: a method that runs on the producer's thread gets each
+     * sample before the methods whose threads are woken, so the light chain runs first.
+     */
+    private static void feed(Producer producer, MethodRunner runner, InputEntry entry) {
+        if (runner.inline()) {
+            producer.subscribeAhead(entry::offer);
+        } else {
+            producer.subscribe(entry::offer);
+        }
     }
 
     /** Sends what each method tells control clients to the sockets whose values reach it. */

@@ -151,6 +151,11 @@ final class MethodRunner {
         scheduler.followMotionResets(resets);
     }
 
+    /** Whether the method runs on the thread that delivers to it. */
+    boolean inline() {
+        return scheduler instanceof InlineScheduler;
+    }
+
     /** What the method sees of the engine: its ports, channels, readiness. */
     RunnerContext context() {
         return context;

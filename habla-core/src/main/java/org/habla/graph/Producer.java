@@ -16,6 +16,8 @@ final class Producer {
 
     private final String producer;
     private final List<Consumer<Sample>> subscribers = new CopyOnWriteArrayList<>();
+    /** How many subscribers at the head of the list were added ahead of the others. */
+    private int ahead;
     private final AtomicLong sequence = new AtomicLong();
     /** The newest sample; written with release (readers need only see it soon), read as a volatile. */
     private volatile Sample latest;
@@ -41,6 +43,15 @@ final class Producer {
 
     void subscribe(Consumer<Sample> subscriber) {
         subscribers.add(subscriber);
+    }
+
+    /**
+     * Adds a subscriber that gets each sample before the ones added by {@link #subscribe} (after the others added
+     * here): a method run on this producer's thread, so a light chain is not kept waiting while other methods'
+     * threads are woken. Called while the graph is built.
+     */
+    void subscribeAhead(Consumer<Sample> subscriber) {
+        subscribers.add(ahead++, subscriber);
     }
 
     void unsubscribe(Consumer<Sample> subscriber) {

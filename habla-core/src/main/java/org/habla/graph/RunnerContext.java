@@ -5,7 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.Callable;
-import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executor;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.function.Consumer;
 import org.habla.driver.ChannelDescriptor;
@@ -41,41 +41,14 @@ final class RunnerContext implements MethodContext {
      * The pool of a method of a light type: it refuses every task, since a light method runs on the thread that
      * delivers to it and a background result would come back on a thread of the pool's.
      */
-    static final ExecutorService NO_BACKGROUND = new java.util.concurrent.AbstractExecutorService() {
-        @Override
-        public void execute(Runnable command) {
-            throw new IllegalStateException("a method of a light type runs no background work (its type must not"
-                    + " be declared light)");
-        }
-
-        @Override
-        public void shutdown() {
-        }
-
-        @Override
-        public java.util.List<Runnable> shutdownNow() {
-            return java.util.List.of();
-        }
-
-        @Override
-        public boolean isShutdown() {
-            return false;
-        }
-
-        @Override
-        public boolean isTerminated() {
-            return false;
-        }
-
-        @Override
-        public boolean awaitTermination(long timeout, java.util.concurrent.TimeUnit unit) {
-            return false;
-        }
+    static final Executor NO_BACKGROUND = task -> {
+        throw new IllegalStateException("a method of a light type runs no background work (its type must not be"
+                + " declared light)");
     };
 
     private final String id;
     private final EngineClock clock;
-    private final ExecutorService backgroundPool;
+    private final Executor backgroundPool;
     private final WorkCount work;
     private final Turns turns;
     /** The output ports by their output's declaration index ({@link Output#index()}). */
@@ -87,7 +60,7 @@ final class RunnerContext implements MethodContext {
     private volatile String readinessDetail = "";
     private volatile Consumer<ControlNotice> controlNotices = n -> { };
 
-    RunnerContext(String id, Method method, EngineClock clock, ExecutorService backgroundPool, WorkCount work,
+    RunnerContext(String id, Method method, EngineClock clock, Executor backgroundPool, WorkCount work,
             Turns turns) {
         this.id = id;
         this.clock = clock;
