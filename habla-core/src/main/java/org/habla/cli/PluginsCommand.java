@@ -52,7 +52,8 @@ public final class PluginsCommand implements Callable<Integer> {
         for (Map.Entry<String, MethodProvider<?>> e : r.methods().entrySet()) {
             MethodProvider<?> p = e.getValue();
             String layers = p.layers().stream().sorted().map(Layer::configName).collect(Collectors.joining(", "));
-            out.println("  " + e.getKey() + "  [" + layers + "]" + (p.light() ? " light" : "") + "  " + p.description());
+            String light = p.light() ? " light" : "";
+            out.println("  " + e.getKey() + "  [" + layers + "]" + light + "  " + p.description());
             printParams(out, p.paramsType());
             printPorts(out, p);
         }

@@ -42,8 +42,8 @@ final class InlineScheduler extends MethodScheduler {
     /** Overruns counted before the first is logged (then one line per thousand): one alone may be a first use. */
     static final int OVERRUNS_LOGGED = 10;
     private static final ThreadMXBean CPU = ManagementFactory.getThreadMXBean();
-    /** Looks again at a queue place another thread claimed and has not filled, before the holder gives way. */
-    private static final int SPINS_BEFORE_YIELD = 64;
+    /** How often a thread that let the method go looks again at a queue place claimed and not yet filled. */
+    private static final int LOOKS_BEFORE_LEAVING = 64;
     private static final long STOP_POLL_NANOS = TimeUnit.MICROSECONDS.toNanos(100);
 
     private final AtomicBoolean busy = new AtomicBoolean();
@@ -123,14 +123,15 @@ final class InlineScheduler extends MethodScheduler {
             try {
                 worked = running && pass();
             } finally {
-                busy.set(false); // a full fence: what is offered from now on either finds the method free or is seen below
+                // A full fence: what is offered from now on either finds the method free or is seen below.
+                busy.set(false);
             }
             if (nothingWaiting()) {
                 return;
             }
             // Something came in while this thread let go, or a producer claimed a queue place and is filling it.
             idle = worked ? 0 : idle + 1;
-            if (idle >= SPINS_BEFORE_YIELD) {
+            if (idle >= LOOKS_BEFORE_LEAVING) {
                 return; // that producer's own wake, once it has filled the place, finds the method free
             }
             Thread.onSpinWait();

@@ -109,7 +109,7 @@ final class InputSlot implements InputEntry {
         return offer(sample, arrive());
     }
 
-    /** Gives the next sample its place in the order of arrival (1 for the first); then {@link #offer} or {@link #skip}. */
+    /** The next sample's place in the order of arrival (1 for the first); then {@link #offer} or {@link #skip} it. */
     long arrive() {
         return offered.incrementAndGet();
     }
