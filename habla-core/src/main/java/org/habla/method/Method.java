@@ -55,24 +55,15 @@ import org.slf4j.LoggerFactory;
  *
  * <h2>Threading contract</h2>
  * The engine hands a method one message at a time — a sample, a tick or the result of background
- * work — never two at once, and each after the previous one has returned (what a handler wrote is
- * seen by the next), so method code needs no locks: keep state in plain fields. Method code
- * never sleeps, never starts a thread and never opens a socket; slow work goes through
- * {@link #background}, periodic work through {@link #tickEvery}, time through {@link #nowMicros}.
- *
- * <p>Which thread hands a method its messages is the engine's choice. Most methods have a thread of
- * their own. A method whose type is declared light ({@code MethodProvider.light}) and that is fed from
- * one thread only runs on the thread that delivers to it: the producer's thread runs it as soon as
- * the sample is in its input, before it goes on, and runs the light methods after it in the same pass
- * ({@code habla graph} shows which methods share a thread; {@code "thread": "own"} in the config gives
- * one its own). So {@link #emit} may return only after the light methods downstream have handled the
- * value; a value that finds its way back to the method that is handling (a wiring cycle) is not
- * handled inside that call but waits in the input, and is handled after the handler returns. Inputs
- * keep their delivery either way: {@code latest} keeps the newest sample waiting, {@code queue} keeps
- * order and counts what it drops. A light type takes microseconds per message, asks for no ticks and
- * runs no background work, since every microsecond is taken from the thread that feeds it; a method
- * of such a type that asks for ticks is refused when it is made, and one that asks for background work
- * fails.
+ * work — each after the previous one has returned, so method code needs no locks: keep state in plain
+ * fields. Method code never sleeps, never starts a thread and never opens a socket; slow work goes
+ * through {@link #background}, periodic work through {@link #tickEvery}, time through {@link #nowMicros}.
+ * Which thread hands over the messages is the engine's choice: a method's own, or, for a method of a
+ * light type ({@code MethodProvider.light}) fed from one thread, that thread, which runs it and the
+ * light methods after it in one pass. So {@link #emit} may return after the light methods downstream
+ * have handled the value; a value that comes back to the method while it handles waits in its input
+ * until the handler returns. Inputs keep their delivery ({@code latest}, {@code queue}) either way. A
+ * light type takes microseconds, asks for no ticks (refused when made) and no background work (fails).
  *
  * <h2>Life cycle</h2>
  * The engine owns it, through a {@link MethodLifecycle} that a method never sees:
