@@ -1,7 +1,7 @@
 # The class cache a daemon's JVM maps so that it opens its ports sooner (docs/deployment.md, "The daemon's JVM").
-# Sourced by the launcher (bash) after habla_find_jdk; defines habla_class_cache DIR NAME LIB OPTS, which sets the array
-# habla_cache_opts to the JVM options for the daemon command NAME (run, worker) whose jars are in LIB and whose
-# other JVM options are OPTS, with its caches kept in DIR:
+# Sourced by the launcher (bash) after habla_find_jdk; defines habla_class_cache DIR NAME CP OPTS, which sets the array
+# habla_cache_opts to the JVM options for the daemon command NAME (run, worker) whose class path is CP (folders of
+# jars, each as FOLDER/*, with ':' between) and whose other JVM options are OPTS, with its caches kept in DIR:
 #
 #   JDK 24 and later: the JDK's ahead-of-time cache (classes already loaded and linked).
 #     no cache, no recording   the daemon records what it loads, when it stops     DIR/NAME-KEY.PID.aotconf
@@ -10,12 +10,12 @@
 #                              (HABLA_CACHE_NICE, default 19), and starts without one   DIR/NAME-KEY.aot
 #     a cache                  the daemon maps it
 #   KEY sums the JDK's release file and OPTS: another JDK or other options make a cache of their own. A cache
-#   older than a jar of LIB is deleted (the JVM would refuse it); one the JVM refuses anyway (a JDK updated in
+#   older than a jar of CP is deleted (the JVM would refuse it); one the JVM refuses anyway (a JDK updated in
 #   place) costs the start nothing but the cache. Its messages are turned off either way.
 #   JDK 21 to 23: a class-data archive the JVM writes when the first daemon stops and rewrites when stale.
 
 habla_class_cache() {
-  _dir=$1 _name=$2 _lib=$3 _opts=$4
+  _dir=$1 _name=$2 _cp=$3 _opts=$4
   habla_cache_opts=()
   { mkdir -p "$_dir" && [ -w "$_dir" ]; } 2>/dev/null || return 0
   _major=$(habla_java_major "$JAVA_HOME/bin/java")
@@ -26,9 +26,12 @@ habla_class_cache() {
   _quiet=('-Xlog:aot*=off' '-Xlog:cds*=off')
   _key=$({ cat "$JAVA_HOME/release" 2>/dev/null; printf '%s\n' "$_opts"; } | cksum | cut -d' ' -f1)
   _base="$_dir/$_name-$_key"
-  if [ -f "$_base.aot" ] && [ -n "$(find "$_lib" -newer "$_base.aot" -print -quit 2>/dev/null)" ]; then
-    rm -f "$_base.aot"
-  fi
+  IFS=: read -r -a _folders <<<"$_cp"
+  for _folder in "${_folders[@]}"; do
+    if [ -f "$_base.aot" ] && [ -n "$(find "${_folder%/\*}" -maxdepth 1 -newer "$_base.aot" -print -quit 2>/dev/null)" ]; then
+      rm -f "$_base.aot"
+    fi
+  done
   if [ -f "$_base.aot" ]; then
     habla_cache_opts=("-XX:AOTCache=$_base.aot" "${_quiet[@]}")
     return 0
@@ -50,7 +53,7 @@ habla_class_cache() {
     # shellcheck disable=SC2086
     ( trap '' INT HUP
       if nice -n "${HABLA_CACHE_NICE:-19}" "$JAVA_HOME/bin/java" $_opts -XX:AOTMode=create "-XX:AOTConfiguration=$_making.aotconf" \
-          "-XX:AOTCache=$_making.aot" "${_quiet[@]}" -cp "$_lib/*" >/dev/null 2>&1; then
+          "-XX:AOTCache=$_making.aot" "${_quiet[@]}" -cp "$_cp" >/dev/null 2>&1; then
         mv -f "$_making.aot" "$_base.aot"
       fi
       rm -f "$_making.aotconf" "$_making.aot" ) </dev/null >/dev/null 2>&1 &

@@ -5,8 +5,8 @@
     reward          out  number in [-1, 1], once per teacher reward
     action          in   text, one of forward/left/right/back/stop (the daemon echoes it out)
 
-`ContractLink` connects to all four with `habla_client.ControlSocket` (one JSON object per line, a
-hello line first), reads each in a background thread, keeps the latest distance/angle and numbered
+`ContractLink` connects to all four with the packaged client `habla` (clients/python: one JSON object per
+line, a hello line first), reads each in a background thread, keeps the latest distance/angle and numbered
 lists of the commands and rewards heard, and writes actions. When any socket drops (the daemon stops
 or restarts) it closes the rest and connects again every `retry_s` until the daemon is back; the
 caller sees `connected` turn False and back True, and never an exception from a reader.
@@ -14,14 +14,15 @@ caller sees `connected` turn False and back True, and never an exception from a 
 
 import collections
 import os
-import socket
 import sys
 import threading
 import time
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "control-python"))
-
-from habla_client import ControlError, ControlSocket  # noqa: E402  (the path above is where it lives)
+try:
+    import habla
+except ImportError:  # not installed: the client of this checkout
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "clients", "python", "src"))
+    import habla
 
 DEFAULT_PORTS = {"command": 7001, "distance_angle": 7002, "reward": 7003, "action": 7004}
 SAMPLES_KEPT = 32  # distance_angle samples remembered, for a caller that smooths over a few
@@ -142,8 +143,8 @@ class ContractLink:
                 opened = {}
                 try:
                     for name, port in self.ports.items():
-                        opened[name] = ControlSocket(self.host, port, timeout=self.connect_timeout_s)
-                except (OSError, ValueError, ControlError) as e:
+                        opened[name] = habla.connect(self.host, port, timeout=self.connect_timeout_s)
+                except (OSError, habla.HablaError) as e:
                     for s in opened.values():
                         s.close()
                     raise ConnectionError("%s:%s %s" % (self.host, self.ports.get(name), e)) from e
@@ -158,7 +159,7 @@ class ContractLink:
                     self._connected = True
                     self.connections += 1
                     self._cv.notify_all()
-                self._on_event("connected", {n: s.hello.get("method") for n, s in opened.items()})
+                self._on_event("connected", {n: s.hello.method for n, s in opened.items()})
                 for r in readers:
                     r.start()
                 for r in readers:
@@ -180,10 +181,7 @@ class ContractLink:
             self._connected = False
             self._cv.notify_all()
         for s in sockets.values():
-            try:
-                s._sock.shutdown(socket.SHUT_RDWR)
-            except OSError:
-                pass
+            s.shutdown()
             s.close()
 
     def _read(self, name, sock):
@@ -191,14 +189,12 @@ class ContractLink:
         try:
             while not self._closed:
                 try:
-                    line = sock.read_line(timeout=1.0)
-                except socket.timeout:
+                    line = sock.read_frame(timeout=1.0)
+                except TimeoutError:
                     sock.keep_alive()  # a client of a quiet socket (command, reward) must not be the idle one a full socket evicts
                     continue
-                if line is None:
-                    break
                 self._take(name, line)
-        except (OSError, ValueError) as e:  # a reset, a malformed line: start afresh
+        except (OSError, habla.HablaError) as e:  # the daemon went away, a reset, a frame over the limits: afresh
             self._on_event("read_failed", "%s: %s" % (name, e))
         finally:
             self._drop_sockets()

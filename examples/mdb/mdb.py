@@ -275,11 +275,16 @@ class WorldModel:
             mine = [e for e in sighted if e.action == action]
             if mine:
                 errors["motion." + action] = population.run(lambda p: self.motion_error(p, mine), generations)
-        judged = self.recency_weighted(memory.judged())
-        if judged:
-            errors["relevance"] = self.relevance.run(lambda p: self.relevance_error(p, judged),
-                                                   generations * self.RELEVANCE_GENERATIONS)
+        errors.update(self.learn_relevance(memory, generations))
         return errors
+
+    def learn_relevance(self, memory, generations):
+        """Evolves the relevance table alone (a few milliseconds); returns its error by part."""
+        judged = self.recency_weighted(memory.judged())
+        if not judged:
+            return {}
+        return {"relevance": self.relevance.run(lambda p: self.relevance_error(p, judged),
+                                                generations * self.RELEVANCE_GENERATIONS)}
 
 
 class SatisfactionModel:
@@ -292,7 +297,12 @@ class SatisfactionModel:
     what remains useful once the teacher has gone."""
 
     DIM = 4
-    DECAY = 0.001
+    # Fitted through a clip to [-1, 1], the model is free above +1 and below -1: without a real decay its weights
+    # drift to any size that keeps the rewarded steps above +1, and the unclipped values a plan is ranked by say
+    # more of that drift than of the rewards (the Pioneer, alone, backed away from the object because a bearing
+    # that grew as it closed in cost more than the distance gained). The decay keeps the smallest weights that
+    # explain the rewards.
+    DECAY = 0.05
 
     def __init__(self, rng, distance_scale_m=0.2, angle_scale_rad=0.5, population=16):
         self.ds, self.as_ = distance_scale_m, angle_scale_rad
@@ -334,6 +344,9 @@ class Brain:
     """Memory, models and action selection; the part of the architecture that knows no sockets."""
 
     TRUSTED_AFTER = 8  # experiences of an action after which its world model is fully trusted
+    SECOND_STEP = 0.5  # what the second step of a plan counts for: it is predicted from a prediction
+    APPROVED = 0.5  # relevance above which a move counts as one the teacher has rewarded
+    LOST_AFTER = 3  # decisions without seeing the target after which, uncommanded, the robot tries moves at random
 
     def __init__(self, seed=0, memory=80, population=16, generations=3, epsilon=0.2, epsilon_decay=0.97,
                  epsilon_min=0.02, distance_scale_m=0.2, angle_scale_rad=0.5, horizon=2):
@@ -347,6 +360,7 @@ class Brain:
         self.decisions = 0
         self.errors = {}
         self.predictions = {}
+        self.unseen = 0  # decisions in a row taken while the target was not seen
 
     def confidence(self, action):
         """How far the world model of `action` can be trusted, 0..1: n / TRUSTED_AFTER, n being the
@@ -370,31 +384,46 @@ class Brain:
         """Chooses an action; returns (action, explored, scores by action).
 
         With a command, an action's score is the relevance the world model predicts for it. Without one,
-        the induced satisfaction model scores where a short plan leads: for `horizon` 2, every action
-        followed by the best next action, the first action scored by its best plan. One step alone rewards
-        moves that only seem to gain — near the object, a turn that flips a sonar's bearing from one side
-        to the other looks like facing it better, and the turn back looks the same; over two steps a turn
-        and its undoing lead back to where they started, while closing in and then turning leads closer.
+        the induced satisfaction model scores a short plan step by step: for `horizon` 2, every action
+        followed by every action, a plan worth the satisfaction of its first step plus SECOND_STEP times
+        that of its second, each first action scored by its best plan. One step alone rewards moves that
+        only seem to gain — near the object, a turn that flips a sonar's bearing from one side to the other
+        looks like facing it better, and the turn back looks the same; over two steps a turn and its undoing
+        pay for the worse bearing they pass through, while closing in twice gains twice.
 
         A plan is only as good as the experience behind it: its satisfaction is pulled towards that of
         staying where the robot is — what an unknown move is worth, neither gain nor loss — in proportion
         to how little the world models of its actions have seen (the least `confidence` of them), so a
         rarely tried action is not taken on a badly trained model's word, yet is not ruled out either when
-        everything known makes matters worse. The
-        relevance table needs no such care: its untried entries sit at 0, below rewarded ones."""
+        everything known makes matters worse. The relevance table needs no such care: its untried entries
+        sit at 0, below rewarded ones."""
+        self.unseen = 0 if perception.seen else self.unseen + 1
         self.predictions = {a: self.world.predict(perception, a) for a in ACTIONS}
         if perception.command in COMMANDS:
             scores = {a: self.score(perception, a) for a in ACTIONS}
         else:
             scores = self._plan_scores(perception)
-        explored = self.rng.random() < self.epsilon
+        # Lost: a target not seen for a while is where it was last seen only in the perception, which the robot's
+        # moves no longer change. Deciding on that frozen sighting, the Aibo walked into a wall for half a minute with
+        # the ball it had lost 0.74 m "ahead"; when its moves change nothing it sees, it tries moves at random.
+        lost = perception.command not in COMMANDS and self.unseen > self.LOST_AFTER
+        explored = lost or self.rng.random() < self.epsilon
         if explored:
             action = self.rng.choice(ACTIONS)
         else:
-            top = max(scores.values())
-            action = self.rng.choice([a for a in ACTIONS if scores[a] >= top - 1e-9])
+            candidates = ACTIONS if perception.command in COMMANDS else self.approved()
+            top = max(scores[a] for a in candidates)
+            action = self.rng.choice([a for a in candidates if scores[a] >= top - 1e-9])
         self.decisions += 1
         return action, explored, scores
+
+    def approved(self):
+        """The moves the robot makes when no command is heard: those the teacher has rewarded after some command
+        (relevance above APPROVED), or every move while it has rewarded none. A move the teacher never asked for is
+        known to the satisfaction model only from the few times exploration or a mistake made it; alone, the Pioneer
+        trusted such a model of `back` and backed away from an object straight ahead."""
+        approved = [a for a in ACTIONS if max(self.world.relevance_of(a, c) for c in COMMANDS) > self.APPROVED]
+        return approved or list(ACTIONS)
 
     def _plan_scores(self, perception):
         trust = {a: self.confidence(a) for a in ACTIONS}
@@ -406,13 +435,21 @@ class Brain:
                 plans[first] = [(now, trust[first])]
                 continue
             middle = Perception(p.distance_m, p.angle_rad, True, None)
-            plans[first] = [(now + induced(middle, e.distance_m, e.angle_rad), min(trust[first], trust[a]))
+            plans[first] = [(now + self.SECOND_STEP * induced(middle, e.distance_m, e.angle_rad), min(trust[first], trust[a]))
                             for a, e in ((a, self.world.predict(middle, a)) for a in ACTIONS)]
-        stay = min(self.horizon, 2) * self.satisfaction.induced_of(perception, perception.distance_m, perception.angle_rad)
+        stay = (1 + (self.SECOND_STEP if self.horizon >= 2 else 0)) * induced(perception, perception.distance_m,
+                                                                            perception.angle_rad)
         return {a: max(stay + c * (v - stay) for v, c in ends) for a, ends in plans.items()}
 
     def remember(self, experience):
         self.memory.add(experience)
+
+    def learn_judgement(self):
+        """What a judgement teaches at once: the relevance table, so that the next command is obeyed in its light
+        (the world and satisfaction models learn from it while the next action takes effect)."""
+        errors = self.world.learn_relevance(self.memory, self.generations)
+        self.errors.update(errors)
+        return errors
 
     def learn(self, generations=None):
         """One round of evolution of every model on the memory; returns the errors by model."""
@@ -510,6 +547,10 @@ class Runner:
             return
         after = self._perceive(da, None)
         brain.remember(Experience(before, action, after, reward))
+        if reward is not None:
+            # A judgement is learned from before the next decision, not a step late: learning only while the next
+            # action took effect, the robot told "left" and punished for going forward went forward again.
+            errors.update(brain.learn_judgement())
         self.steps += 1
         self.log({"t": round(self.clock() - start, 3), "wall": round(decided_wall, 3), "step": self.steps, "command": before.command,
                   "distanceM": round(before.distance_m, 4), "angleRad": round(before.angle_rad, 4),

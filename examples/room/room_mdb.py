@@ -33,10 +33,13 @@ import threading
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, "..", "control-python"))
 sys.path.insert(0, os.path.join(HERE, "..", "mdb"))
+try:
+    import habla
+except ImportError:  # not installed: the client of this checkout
+    sys.path.insert(0, os.path.join(HERE, "..", "..", "clients", "python", "src"))
+    import habla
 
-from habla_client import ControlSocket  # noqa: E402
 from mdb import Evolution, clamp  # noqa: E402
 
 LIT_LUX = 200.0  # the light a person needs (the controller's own threshold, not the teacher's)
@@ -69,15 +72,15 @@ class RoomLink:
     def _read(self, name):
         while not self.closed:
             try:
-                with ControlSocket(self.host, self.ports[name], timeout=5.0) as s:
+                with habla.connect(self.host, self.ports[name], timeout=5.0) as s:
                     if name != "reward":
                         s.send({"op": "latest"})
                     while not self.closed:
-                        line = s.read_line(timeout=30.0)
-                        if line is None:
-                            break
-                        self._take(name, line)
-            except OSError:
+                        try:
+                            self._take(name, s.read_frame(timeout=30.0))
+                        except TimeoutError:
+                            s.keep_alive()   # a quiet socket (the reward): stay a client the daemon keeps
+            except (OSError, habla.HablaError):  # the daemon went away: connect again
                 time.sleep(0.5)
 
     def _take(self, name, line):
@@ -105,8 +108,8 @@ class RoomLink:
         """Writes one action; False if the daemon is not there (the next step tries again)."""
         try:
             if self.action is None:
-                self.action = ControlSocket(self.host, self.ports["action"], timeout=5.0)
-            self.action.request({"op": "write", "value": text})
+                self.action = habla.connect(self.host, self.ports["action"], timeout=5.0)
+            self.action.write_and_wait(text)
             return True
         except (OSError, Exception):  # a refused value or a lost socket: reconnect next time
             try:

@@ -7,7 +7,7 @@ import argparse
 import json
 import time
 
-from habla_client import ControlSocket  # examples/control-python, on PYTHONPATH
+import habla  # clients/python/src, on PYTHONPATH
 
 
 def say(**kv):
@@ -21,14 +21,14 @@ def main():
     ap.add_argument("--silence", type=float, default=1.5)
     a = ap.parse_args()
 
-    with ControlSocket("127.0.0.1", a.ranges) as ranges:
-        say(event="hello", **ranges.hello)
+    with habla.connect("127.0.0.1", a.ranges) as ranges:
+        say(event="hello", **ranges.hello.line)
         for _ in range(3):
             s = ranges.next_sample(timeout=5.0)
-            say(event="sample", **{k: v for k, v in s.items() if not k.startswith("_")})
+            say(event="sample", **{k: v for k, v in s.line.items() if not k.startswith("_")})
 
-    with ControlSocket("127.0.0.1", a.wheels) as wheels:
-        say(event="wheels-hello", **wheels.hello)
+    with habla.connect("127.0.0.1", a.wheels) as wheels:
+        say(event="wheels-hello", **wheels.hello.line)
         wheels.request({"op": "write", "value": [0.3, 0.3]})
         say(event="wrote", t=time.time())
         time.sleep(a.silence)  # silent, connection open: the watchdog must stop the robot

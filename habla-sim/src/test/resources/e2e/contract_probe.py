@@ -10,7 +10,7 @@ import json
 import sys
 import time
 
-from habla_client import ControlSocket
+import habla  # clients/python/src, on PYTHONPATH
 
 
 def out(obj):
@@ -23,30 +23,32 @@ def main(argv):
     if cmd == "sample":
         n = int(argv[2])
         timeout = float(argv[3]) if len(argv) > 3 else 10.0
-        with ControlSocket("127.0.0.1", port, timeout=timeout) as s:
+        with habla.connect("127.0.0.1", port, timeout=timeout) as s:
             for _ in range(n):
-                line = s.next_sample(timeout)
-                if line is None:
+                try:
+                    sample = s.next_sample(timeout)
+                except habla.LinkLostError:
                     break
-                out({"value": line.get("value"), "stale": line.get("stale", False)})
+                out({"value": sample.value, "stale": sample.stale})
     elif cmd == "first":
         timeout = float(argv[2])
-        with ControlSocket("127.0.0.1", port, timeout=timeout) as s:
+        with habla.connect("127.0.0.1", port, timeout=timeout) as s:
             out({"ready": True, "wall": time.time()})
-            line = s.next_sample(timeout)
-            out({"value": None if line is None else line.get("value"), "wall": time.time()})
+            try:
+                value = s.next_sample(timeout).value
+            except habla.LinkLostError:
+                value = None
+            out({"value": value, "wall": time.time()})
     elif cmd == "act":
         label, hold = argv[2], float(argv[3])
-        with ControlSocket("127.0.0.1", port, timeout=5.0) as s:
+        with habla.connect("127.0.0.1", port, timeout=5.0) as s:
             s.write(label)
             out({"wrote": label, "wall": time.time()})
             end = time.monotonic() + hold
             while time.monotonic() < end:
                 try:
-                    line = s.read_line(max(0.01, end - time.monotonic()))
-                except OSError:
-                    break
-                if line is None:
+                    line = s.read_frame(max(0.01, end - time.monotonic()))
+                except (TimeoutError, habla.LinkLostError):
                     break
                 out({"line": line})
     else:

@@ -10,7 +10,7 @@ import json
 import sys
 import time
 
-from habla_client import ControlError, ControlSocket
+import habla  # clients/python/src, on PYTHONPATH
 
 
 def say(**finding):
@@ -20,9 +20,12 @@ def say(**finding):
 def desk_lux(light, deadline):
     """The desk's illuminance from the next light sample."""
     while time.monotonic() < deadline:
-        s = light.next_sample(timeout=max(0.1, deadline - time.monotonic()))
-        if s and "desk" in s["value"]["lux"]:
-            return s["value"]["lux"]["desk"]
+        try:
+            s = light.next_sample(timeout=max(0.1, deadline - time.monotonic()))
+        except TimeoutError:
+            continue
+        if "desk" in s.value["lux"]:
+            return s.value["lux"]["desk"]
     raise SystemExit("no light sample in time")
 
 
@@ -32,11 +35,13 @@ def occupancy(occ, seconds):
     deadline = time.monotonic() + seconds
     last = None
     while time.monotonic() < deadline:
-        s = occ.next_sample(timeout=max(0.1, deadline - time.monotonic()))
-        if s:
-            last = s
-            if s["value"]["occupied"]:
-                return s
+        try:
+            s = occ.next_sample(timeout=max(0.1, deadline - time.monotonic()))
+        except TimeoutError:
+            continue
+        last = s
+        if s.value["occupied"]:
+            return s
     if last is None:
         raise SystemExit("no occupancy sample in time")
     return last
@@ -57,11 +62,11 @@ def main():
     ap.add_argument("--light", type=int, required=True)
     ap.add_argument("--action", type=int, required=True)
     a = ap.parse_args()
-    with ControlSocket("127.0.0.1", a.occupancy) as occ, ControlSocket("127.0.0.1", a.light) as light, \
-            ControlSocket("127.0.0.1", a.action) as action:
+    with habla.connect("127.0.0.1", a.occupancy) as occ, habla.connect("127.0.0.1", a.light) as light, \
+            habla.connect("127.0.0.1", a.action) as action:
         occ.send({"op": "latest"})
         seen = occupancy(occ, 10)
-        say(occupied=seen["value"]["occupied"], zones=seen["value"]["zones"], stale=seen["stale"])
+        say(occupied=seen.value["occupied"], zones=seen.value["zones"], stale=seen.stale)
         action.request({"op": "write", "value": "all off"})
         dark = wait_for(light, lambda lux: lux < 100, 10)
         say(off=dark)
@@ -73,7 +78,7 @@ def main():
         try:
             action.request({"op": "write", "value": "garage on"})
             say(refused=None)
-        except ControlError as e:
+        except habla.RefusedError as e:
             say(refused=e.code, message=str(e))
 
 

@@ -8,7 +8,8 @@ import org.habla.net.ControlPoint;
 /**
  * Carries exposed methods to another transport, beside their control sockets: it sees the same
  * {@link ControlPoint}s a control server sees, so it streams the same samples and staleness and writes actions
- * through the same checks. A bridge never blocks the engine: it hands samples on or drops them, counted.
+ * through the same checks. A bridge never blocks the engine: it hands samples on or drops them, counted. Its
+ * connection is kept by the engine, as every link's is ({@link BridgeSession}).
  *
  * <pre>
  *   graph ──samples──▶ ControlPoint ──▶ ControlServer (TCP port, one per method)
@@ -19,8 +20,9 @@ import org.habla.net.ControlPoint;
 public interface Bridge extends AutoCloseable {
 
     /**
-     * Attaches to the daemon's exposed methods and starts carrying them; returns at once (a broker that is not
-     * there yet is retried in the background). An {@link IOException} stops the daemon's start.
+     * Attaches to the daemon's exposed methods; opens no connection (the engine then keeps one up through
+     * {@link #session()}). What reaches the bridge while no session is up is dropped and counted. An
+     * {@link IOException} stops the daemon's start.
      *
      * @param system the config's system name
      * @param points every exposed method, in config order
@@ -28,10 +30,16 @@ public interface Bridge extends AutoCloseable {
      */
     void start(String system, List<ControlPoint> points, CommandRole role) throws IOException;
 
-    /** Figures for the status endpoint: connected, samples carried and dropped, actions taken and refused. */
+    /** A fresh session for each connection the engine opens, after {@link #start}. */
+    BridgeSession session();
+
+    /**
+     * The bridge's own figures for the status endpoint (samples carried and dropped, actions taken and refused);
+     * the engine adds its link's ({@code connected}, {@code connects}, {@code failures}, {@code lastError}).
+     */
     ObjectNode status();
 
-    /** Stops carrying and says goodbye. Safe to call twice. */
+    /** Stops carrying, after the engine has closed its session. Safe to call twice. */
     @Override
     void close();
 }

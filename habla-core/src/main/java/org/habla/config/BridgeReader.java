@@ -64,7 +64,7 @@ final class BridgeReader {
             if (p.isEmpty()) {
                 errors.add(path.field("type"), "unknown bridge type '" + name + "' (known: "
                         + (registry.bridges().isEmpty() ? "none registered" : String.join(", ", registry.bridges().keySet()))
-                        + ")");
+                        + ")" + EntryReader.pluginsNote(registry));
             }
             return p;
         }).orElse(null);
@@ -77,6 +77,8 @@ final class BridgeReader {
                 return Optional.empty();
             }
         }).orElse(null);
+        Reconnect reconnect = o.object("reconnect").map(r -> new EntryReader(registry, errors, baseDir).reconnect(r))
+                .orElse(Reconnect.DEFAULTS);
         Record params = provider == null ? null
                 : ParamsBinder.bind(o.node().get("params"), provider.paramsType(), path.field("params"), errors, baseDir)
                         .orElse(null);
@@ -90,7 +92,7 @@ final class BridgeReader {
                     + new java.util.TreeSet<>(socketNames) + ")");
             return Optional.empty();
         }
-        return Optional.of(new BridgeConfig(id, provider.name(), address, params));
+        return Optional.of(new BridgeConfig(id, provider.name(), address, params, reconnect));
     }
 
     @SuppressWarnings("unchecked")

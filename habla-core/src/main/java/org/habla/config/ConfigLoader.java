@@ -19,6 +19,7 @@ import java.util.Map;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.Set;
+import org.habla.net.Limits;
 import org.habla.plugin.PluginRegistry;
 
 /**
@@ -35,7 +36,7 @@ public final class ConfigLoader {
             Set.of("maxLineBytes", "maxBinaryBytes", "maxClientsPerPort", "clientQueueSamples", "maxPendingPerPort", "idleTimeoutMs",
                     "frameTimeoutMs", "evictableIdleMs", "socketBlockBudgetBytes", "processBlockBudgetBytes");
     static final Set<String> SAFETY_KEYS = Set.of("watchdogMs");
-    static final Set<String> STATUS_KEYS = Set.of("bind", "port", "monitorPort", "tls");
+    static final Set<String> STATUS_KEYS = Set.of("bind", "port", "monitorPort", "monitorBind", "tls");
     static final Set<String> INTERFACE_KEYS = Set.of("id", "driver", "address", "params", "reconnect");
     static final Set<String> RECONNECT_KEYS = Set.of("initialMs", "maxMs", "connectTimeoutMs", "readTimeoutMs",
             "tcpKeepAliveIdleS", "tcpKeepAliveIntervalS", "tcpKeepAliveCount");
@@ -43,7 +44,7 @@ public final class ConfigLoader {
             Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host", "fallback", "feedback",
                     "thread");
     static final Set<String> EXPOSE_KEYS = Set.of("port", "name", "bind", "tls");
-    static final Set<String> BRIDGE_KEYS = Set.of("id", "type", "address", "params");
+    static final Set<String> BRIDGE_KEYS = Set.of("id", "type", "address", "params", "reconnect");
 
     /** The keys of each fixed object of the format, by where it sits ({@code []} stands for any element). */
     static final Map<String, Set<String>> KEYS_BY_OBJECT = Map.ofEntries(
@@ -56,6 +57,7 @@ public final class ConfigLoader {
             Map.entry("$.methods[]", METHOD_KEYS),
             Map.entry("$.methods[].expose", EXPOSE_KEYS),
             Map.entry("$.bridges[]", BRIDGE_KEYS),
+            Map.entry("$.bridges[].reconnect", RECONNECT_KEYS),
             Map.entry("$.security", SecurityReader.SECURITY_KEYS),
             Map.entry("$.security.tls", SecurityReader.TLS_KEYS));
 
@@ -263,6 +265,6 @@ public final class ConfigLoader {
         StatusConfig d = StatusConfig.DEFAULTS;
         return new StatusConfig(o.optionalString("bind").orElse(d.bind()),
                 (int) o.integer("port", d.port(), 0, 65_535), (int) o.integer("monitorPort", d.monitorPort(), 0, 65_535),
-                o.bool("tls", false));
+                o.bool("tls", false), o.optionalString("monitorBind").orElse(d.monitorBind()));
     }
 }

@@ -18,6 +18,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.habla.method.Layer;
+import org.habla.net.Limits;
 import org.habla.plugin.DriverProvider;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.PluginRegistry;
@@ -58,10 +59,13 @@ public final class ConfigSchema {
                 .set("properties", props("watchdogMs", integer(0, ConfigLoader.MAX_MS, Safety.DEFAULTS.watchdogMs(),
                         "Stop the robot when no control client has written for this long; 0 turns the silence check off [ms]"))));
         p.set("status", object("The status endpoint read by `habla status`.").set("properties", props(
-                "bind", string("The address to listen on.").put("default", StatusConfig.DEFAULTS.bind()),
+                "bind", string("The address the status endpoint listens on (0.0.0.0: every IPv4 address; ::, both "
+                        + "families).").put("default", StatusConfig.DEFAULTS.bind()),
                 "port", integer(0, 65_535, StatusConfig.DEFAULTS.port(), "The TCP port; 0 turns the endpoint off."),
                 "monitorPort", integer(0, 65_535, StatusConfig.DEFAULTS.monitorPort(),
                         "The live monitor's port: a web page and the Foxglove WebSocket protocol; 0: no monitor."),
+                "monitorBind", string("The address the monitor listens on; it has no authentication, so beyond "
+                        + "loopback it needs security.insecure.").put("default", StatusConfig.DEFAULTS.monitorBind()),
                 "tls", bool(false, "The status endpoint speaks TLS with the certificate of security.tls."))));
         p.set("interfaces", NODES.objectNode().put("description", "The robot's interface servers.")
                 .put("type", "array").set("items", ref("interface")));
@@ -148,8 +152,27 @@ public final class ConfigSchema {
                                 + "socketBlockBudgetBytes [bytes]")));
     }
 
-    private static ObjectNode iface(PluginRegistry registry) {
+    /** An interface's or a bridge's {@code reconnect} object. */
+    private static ObjectNode reconnect(String description) {
         Reconnect d = Reconnect.DEFAULTS;
+        return object(description).set("properties", props(
+                "initialMs", integer(1, ConfigLoader.MAX_MS, d.initialMs(),
+                        "The first wait after a failure, and the wait after a refused connect [ms]"),
+                "maxMs", integer(1, ConfigLoader.MAX_MS, d.maxMs(), "The longest wait; not below initialMs [ms]"),
+                "connectTimeoutMs", integer(1, ConfigLoader.MAX_MS, d.connectTimeoutMs(),
+                        "How long one connect and handshake may take [ms]"),
+                "readTimeoutMs", integer(0, ConfigLoader.MAX_MS, d.readTimeoutMs(),
+                        "Silence after which a connection whose peer keeps sending is declared lost, "
+                        + "replacing the driver's limit; 0 keeps the driver's; quiet connections ignore it [ms]"),
+                "tcpKeepAliveIdleS", integer(1, ConfigLoader.MAX_TCP_KEEPALIVE_S, d.tcpKeepAlive().idleS(),
+                        "Idle time before the first TCP keep-alive probe [s]"),
+                "tcpKeepAliveIntervalS", integer(1, ConfigLoader.MAX_TCP_KEEPALIVE_S,
+                        d.tcpKeepAlive().intervalS(), "Time between TCP keep-alive probes [s]"),
+                "tcpKeepAliveCount", integer(1, ConfigLoader.MAX_TCP_KEEPALIVE_COUNT, d.tcpKeepAlive().count(),
+                        "Unanswered TCP keep-alive probes after which the connection fails")));
+    }
+
+    private static ObjectNode iface(PluginRegistry registry) {
         ObjectNode s = withRequired(object("One robot interface: a driver type, where the robot's servers are, "
                 + "the driver's params."), "id", "driver", "address");
         s.set("properties", props(
@@ -157,21 +180,7 @@ public final class ConfigSchema {
                 "driver", string("The driver type.").set("enum", strings(registry.drivers().keySet())),
                 "address", string("host or host:port of the robot's main server.").put("minLength", 1),
                 "params", object("The driver's own params (see the driver type).").put("additionalProperties", true),
-                "reconnect", object("How the link notices a lost peer and is re-established.").set("properties", props(
-                        "initialMs", integer(1, ConfigLoader.MAX_MS, d.initialMs(),
-                                "The first wait after a failure, and the wait after a refused connect [ms]"),
-                        "maxMs", integer(1, ConfigLoader.MAX_MS, d.maxMs(), "The longest wait; not below initialMs [ms]"),
-                        "connectTimeoutMs", integer(1, ConfigLoader.MAX_MS, d.connectTimeoutMs(),
-                                "How long one connect and handshake may take [ms]"),
-                        "readTimeoutMs", integer(0, ConfigLoader.MAX_MS, d.readTimeoutMs(),
-                                "Silence after which a connection whose peer keeps sending is declared lost, "
-                                + "replacing the driver's limit; 0 keeps the driver's; quiet connections ignore it [ms]"),
-                        "tcpKeepAliveIdleS", integer(1, ConfigLoader.MAX_TCP_KEEPALIVE_S, d.tcpKeepAlive().idleS(),
-                                "Idle time before the first TCP keep-alive probe [s]"),
-                        "tcpKeepAliveIntervalS", integer(1, ConfigLoader.MAX_TCP_KEEPALIVE_S,
-                                d.tcpKeepAlive().intervalS(), "Time between TCP keep-alive probes [s]"),
-                        "tcpKeepAliveCount", integer(1, ConfigLoader.MAX_TCP_KEEPALIVE_COUNT, d.tcpKeepAlive().count(),
-                                "Unanswered TCP keep-alive probes after which the connection fails")))));
+                "reconnect", reconnect("How the link notices a lost peer and is re-established.")));
         ArrayNode cases = s.putArray("allOf");
         registry.drivers().keySet().forEach(name -> cases.add(when("driver", name,
                 props("params", ref("params.driver." + name)))));
@@ -185,7 +194,9 @@ public final class ConfigSchema {
                 "id", ref("id").put("description", "The bridge's id, for logs and the status."),
                 "type", string("The bridge type.").set("enum", strings(registry.bridges().keySet())),
                 "address", string("host or host:port of the broker.").put("minLength", 1),
-                "params", object("The bridge's own params (see the bridge type).").put("additionalProperties", true)));
+                "params", object("The bridge's own params (see the bridge type).").put("additionalProperties", true),
+                "reconnect", reconnect("How the bridge's lost connection is re-established (the back-off and the "
+                        + "connect time-out; the client library keeps its own keep-alive).")));
         ArrayNode cases = s.putArray("allOf");
         registry.bridges().keySet().forEach(name -> cases.add(when("type", name,
                 props("params", ref("params.bridge." + name)))));

@@ -12,6 +12,7 @@ import org.habla.driver.Driver;
 import org.habla.driver.InterfaceAddress;
 import org.habla.method.Layer;
 import org.habla.method.Ports;
+import org.habla.net.Expose;
 import org.habla.plugin.DriverProvider;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.PluginRegistry;
@@ -46,7 +47,7 @@ final class EntryReader {
             Optional<DriverProvider<?>> p = registry.driver(name);
             if (p.isEmpty()) {
                 errors.add(o.path().field("driver"), "unknown driver type '" + name + "' (known: "
-                        + known(registry.drivers()) + ")");
+                        + known(registry.drivers()) + ")" + pluginsNote(registry));
             }
             return p;
         }).orElse(null);
@@ -87,7 +88,7 @@ final class EntryReader {
             Optional<MethodProvider<?>> p = registry.method(name);
             if (p.isEmpty()) {
                 errors.add(o.path().field("type"), "unknown method type '" + name + "' (known: "
-                        + known(registry.methods()) + ")");
+                        + known(registry.methods()) + ")" + pluginsNote(registry));
             }
             return p;
         }).orElse(null);
@@ -185,7 +186,8 @@ final class EntryReader {
         }).orElse(null);
     }
 
-    private Reconnect reconnect(CheckedObject o) {
+    /** An interface's or a bridge's {@code reconnect} object. */
+    Reconnect reconnect(CheckedObject o) {
         o.allowOnly(ConfigLoader.RECONNECT_KEYS);
         Reconnect d = Reconnect.DEFAULTS;
         long initial = o.integer("initialMs", d.initialMs(), 1, ConfigLoader.MAX_MS);
@@ -265,5 +267,11 @@ final class EntryReader {
 
     private static String known(Map<String, ?> table) {
         return table.isEmpty() ? "none registered" : String.join(", ", table.keySet());
+    }
+
+    /** What the plugins gave, for an error about a type nobody registered: "; plugins: ..." or nothing. */
+    static String pluginsNote(PluginRegistry registry) {
+        String why = registry.report().why();
+        return why.isEmpty() ? "" : "; " + why;
     }
 }

@@ -3,6 +3,7 @@ package org.habla.config;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
+import org.habla.net.Limits;
 
 /**
  * A whole, valid config: the system's name, its interfaces, its methods, its bridges and the daemon's settings.

@@ -4,6 +4,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import org.habla.method.Layer;
+import org.habla.net.Expose;
 
 /**
  * One method of the graph.

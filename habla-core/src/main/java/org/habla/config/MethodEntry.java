@@ -5,6 +5,7 @@ import java.util.Optional;
 import java.util.Set;
 import org.habla.method.Layer;
 import org.habla.method.Ports;
+import org.habla.net.Expose;
 
 /**
  * One element of the config's {@code methods} array as far as it could be read. A null component

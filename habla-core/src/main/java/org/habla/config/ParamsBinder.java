@@ -26,7 +26,8 @@ import org.habla.plugin.ParamDefaults;
 /**
  * Binds a method's or an interface's {@code params} object to its type's params record, strictly: no
  * unknown keys, no nulls for primitives, no {@code "5"} for a number or {@code 5} for a string. Keys
- * left out are first filled with their declared defaults ({@link ParamDefaults#filled}). Every
+ * left out are first filled with their declared defaults ({@link ParamDefaults#filled}), and numbers are checked
+ * against the ranges their {@link org.habla.plugin.Param} annotations declare ({@link ParamsRangeCheck}). Every
  * failure becomes a {@link ConfigError} at the JSON path of the offending value; an exception thrown by
  * the record's constructor becomes an error at the parameter it names, or at {@code params}.
  */
@@ -92,6 +93,9 @@ final class ParamsBinder {
             if (c.getType().isPrimitive() && !node.has(jsonName(c))) {
                 errors.add(path.field(jsonName(c)), "required parameter '" + jsonName(c) + "' is missing");
             }
+        }
+        if (errors.size() == before) {
+            ParamsRangeCheck.check(node, type, path, errors);
         }
         if (errors.size() > before) {
             return Optional.empty();

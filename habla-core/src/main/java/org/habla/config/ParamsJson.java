@@ -4,9 +4,10 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 
 /**
- * A method's bound params record as JSON and back, for a method placed on a worker: the daemon sends the
- * params it checked, and the worker binds them to the same record with the same strict rules, so both sides
- * run the method with exactly the same settings.
+ * A params record as JSON and back. For a method placed on a worker: the daemon sends the params it checked, and
+ * the worker binds them to the same record with the same strict rules, so both sides run the method with exactly
+ * the same settings. For Java code that needs a params record (a test, a type made inside another): it is bound
+ * from JSON as a config's would be, so it receives the declared defaults and passes the declared ranges.
  */
 public final class ParamsJson {
 
@@ -30,5 +31,30 @@ public final class ParamsJson {
             throw new ConfigException(errors.sorted());
         }
         return bound.get();
+    }
+
+    /**
+     * The params record with every parameter at its declared default, bound from {@code {}}.
+     *
+     * @throws IllegalArgumentException when {@code type} has a required parameter
+     */
+    public static <P extends Record> P defaults(Class<P> type) {
+        return of(type, "{}");
+    }
+
+    /**
+     * The params record bound from JSON text, as a config's {@code params} would be: {@code of(Params.class,
+     * "{\"spreadM\": 0.2}")}.
+     *
+     * @throws IllegalArgumentException naming every wrong parameter, at paths under {@code $.params}
+     */
+    public static <P extends Record> P of(Class<P> type, String json) {
+        try {
+            return type.cast(read(ParamsBinder.STRICT.readTree(json), type));
+        } catch (ConfigException e) {
+            throw new IllegalArgumentException(e.getMessage(), e);
+        } catch (com.fasterxml.jackson.core.JsonProcessingException e) {
+            throw new IllegalArgumentException("params are not JSON: " + e.getOriginalMessage(), e);
+        }
     }
 }

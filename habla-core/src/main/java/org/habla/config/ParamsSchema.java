@@ -14,10 +14,11 @@ import java.util.Map;
 import java.util.Optional;
 import org.habla.plugin.Param;
 import org.habla.plugin.ParamDefaults;
+import org.habla.plugin.ParamRange;
 
 /**
  * The JSON Schema of one params record: an object whose properties are the record's components, typed
- * from their Java types and documented from their {@link Param} annotations (meaning, unit, default; a
+ * from their Java types and documented from their {@link Param} annotations (meaning, unit, default, range; a
  * {@link Param#defaultNote()} joins the description, since it is no value of the property's type).
  */
 final class ParamsSchema {
@@ -46,6 +47,7 @@ final class ParamsSchema {
                     property.put("x-unit", doc.unit());
                 }
                 ParamDefaults.json(type, c).ifPresent(d -> property.set("default", d));
+                ParamRange.of(doc).ifPresent(r -> range(numbers(property), r));
             }
             if (doc == null ? c.getType().isPrimitive() : doc.defaultValue().isEmpty() && doc.defaultNote().isEmpty()) {
                 required.add(name);
@@ -56,6 +58,34 @@ final class ParamsSchema {
             schema.set("required", required);
         }
         return schema;
+    }
+
+    /** Where a range applies: the property itself, or its items or values when it holds numbers. */
+    private static ObjectNode numbers(ObjectNode property) {
+        if (property.has("items")) {
+            return (ObjectNode) property.get("items");
+        }
+        return property.get("additionalProperties") instanceof ObjectNode values ? values : property;
+    }
+
+    private static void range(ObjectNode s, ParamRange r) {
+        if (r.greaterThan() != Double.NEGATIVE_INFINITY) {
+            bound(s, "exclusiveMinimum", r.greaterThan());
+        }
+        if (r.min() != Double.NEGATIVE_INFINITY) {
+            bound(s, "minimum", r.min());
+        }
+        if (r.max() != Double.POSITIVE_INFINITY) {
+            bound(s, "maximum", r.max());
+        }
+    }
+
+    private static void bound(ObjectNode s, String key, double v) {
+        if (v == Math.rint(v) && Math.abs(v) < 1e15) {
+            s.put(key, (long) v);
+        } else {
+            s.put(key, v);
+        }
     }
 
     /** The schema of a value of Java type {@code t}. */

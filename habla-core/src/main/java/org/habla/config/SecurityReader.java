@@ -5,6 +5,7 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Optional;
 import java.util.Set;
+import org.habla.driver.InterfaceAddress;
 import org.habla.security.Credentials;
 import org.habla.security.CredentialsFile;
 import org.habla.security.Tls;
@@ -89,7 +90,8 @@ final class SecurityReader {
     /**
      * The policy: every socket and the status endpoint bound beyond loopback require authentication unless
      * {@code security.insecure}; the monitor, which cannot authenticate, stays on loopback unless
-     * {@code security.insecure}; a TLS socket needs {@code security.tls}.
+     * {@code security.insecure}; a TLS socket needs {@code security.tls}; a method placed on a worker beyond
+     * loopback needs the credentials file's {@code workerSecret}, since such a worker always asks for it.
      */
     void checkPolicy(SecurityConfig security, StatusConfig status, List<MethodEntry> methods) {
         for (MethodEntry m : methods) {
@@ -112,9 +114,17 @@ final class SecurityReader {
             errors.add(JsonPath.ROOT.field("status").field("tls"), "a TLS status endpoint needs security.tls with a "
                     + "certificate and its key (see docs/security.md)");
         }
-        if (status.monitorPort() > 0 && !SecurityConfig.isLoopback(status.bind()) && !security.insecure()) {
-            errors.add(JsonPath.ROOT.field("status").field("monitorPort"), "the monitor has no authentication, so it "
-                    + "may not listen on " + status.bind() + " (beyond loopback) unless security.insecure is true");
+        boolean workerSecret = security.credentials() != null && security.credentials().workerSecret().isPresent();
+        for (MethodEntry m : methods) {
+            m.host().filter(h -> !workerSecret && !SecurityConfig.isLoopback(InterfaceAddress.parse(h).host()))
+                    .ifPresent(h -> errors.add(m.path().field("host"), "worker " + h + " is beyond loopback, where a "
+                            + "worker requires the shared secret (habla worker refuses to listen there without "
+                            + "--secret-file): give \"workerSecret\" in the credentials file (security.credentials; "
+                            + "see docs/security.md)"));
+        }
+        if (status.monitorPort() > 0 && !SecurityConfig.isLoopback(status.monitorBind()) && !security.insecure()) {
+            errors.add(JsonPath.ROOT.field("status").field("monitorBind"), "the monitor has no authentication, so it "
+                    + "may not listen on " + status.monitorBind() + " (beyond loopback) unless security.insecure is true");
         }
     }
 

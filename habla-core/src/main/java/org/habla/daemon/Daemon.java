@@ -3,11 +3,15 @@ package org.habla.daemon;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.ServiceLoader;
 import java.util.function.Consumer;
+import java.util.stream.Collectors;
 import org.habla.bridge.Bridge;
+import org.habla.graph.BridgeLink;
 import org.habla.config.BridgeConfig;
 import org.habla.config.ConfigError;
 import org.habla.config.HablaConfig;
@@ -20,10 +24,6 @@ import org.habla.graph.MethodGraph;
 import org.habla.graph.RecordedSkips;
 import org.habla.net.BlockBudget;
 import org.habla.graph.OutputInfo;
-import org.habla.monitor.LiveGraph;
-import org.habla.monitor.Monitor;
-import org.habla.draw.GraphPicture;
-import org.habla.draw.SvgWriter;
 import org.habla.sample.Sample;
 import org.habla.net.ControlPoint;
 import org.habla.net.ControlServer;
@@ -34,13 +34,16 @@ import org.slf4j.LoggerFactory;
 
 /**
  * The HABLA daemon: a config's method graph with a control server on every exposed method's port, the
- * config's bridges and the status endpoint. The one assembly point between the engine and the sockets.
+ * config's bridges and the status endpoint, and the products that run beside it ({@link DaemonExtension}: the live
+ * monitor). The one assembly point between the engine and the sockets.
  */
 public final class Daemon implements AutoCloseable {
 
     private static final Logger LOG = LoggerFactory.getLogger(Daemon.class);
     /** How long a worker may take to say what it runs when the daemon starts. */
     private static final int WORKER_CHECK_MILLIS = 2_000;
+    /** The name the live monitor runs under beside a daemon ({@link DaemonExtension.Running#name}). */
+    public static final String MONITOR = "monitor";
 
     private final HablaConfig config;
     private final MethodGraph graph;
@@ -48,10 +51,10 @@ public final class Daemon implements AutoCloseable {
     private final Map<String, ControlServer> servers = new LinkedHashMap<>();
     /** Memory for blocks clients are sending, on every control socket together. */
     private final BlockBudget blockBudget;
-    private final Map<String, Bridge> bridges = new LinkedHashMap<>();
+    private final Map<String, BridgeLink> bridges = new LinkedHashMap<>();
     private StatusServer statusServer;
     private PortGuards guards;
-    private Monitor monitor;
+    private final List<DaemonExtension.Running> extensions = new ArrayList<>();
     private volatile boolean closed;
 
     private Daemon(HablaConfig config, MethodGraph graph, EngineClock clock) {
@@ -111,10 +114,10 @@ public final class Daemon implements AutoCloseable {
     }
 
     /**
-     * Binds every port first — the control sockets and the status endpoint, then the monitor — and only when all
-     * are held starts serving the control sockets and the status endpoint, then the config's bridges (when
-     * {@code withBridges}), then the graph. A port that cannot be had stops the start before any control socket
-     * served, any bridge connected or anything moved.
+     * Binds every port first — the control sockets and the status endpoint — then starts the extensions (the
+     * monitor binds its port), and only when all are held starts serving the control sockets and the status
+     * endpoint, then the config's bridges (when {@code withBridges}), then the graph. A port that cannot be had stops
+     * the start before any control socket served, any bridge connected or anything moved.
      */
     private static Daemon assemble(HablaConfig config, PluginRegistry registry, MethodGraph graph, EngineClock clock,
             boolean withBridges) throws IOException {
@@ -147,15 +150,16 @@ public final class Daemon implements AutoCloseable {
                     throw new PortsUnavailableException(List.of(new ConfigError("$.status.port", e.getMessage())));
                 }
             }
-            if (config.status().monitorPort() > 0) {
-                // The monitor binds and serves in one step: it starts last of the ports, before any control
-                // socket serves, so a monitor port taken meanwhile still leaves the control sockets unused.
-                try {
-                    d.monitor = Monitor.start(config.status().bind(), config.status().monitorPort(), d.liveView(),
-                            () -> SvgWriter.write(GraphPicture.of(config, registry)));
-                } catch (IOException e) {
-                    throw new PortsUnavailableException(List.of(new ConfigError("$.status.monitorPort", e.getMessage())));
-                }
+            // An extension binds and serves in one step: they start last of the ports, before any control socket
+            // serves, so a port of theirs taken meanwhile still leaves the control sockets unused.
+            LiveGraph view = d.liveView();
+            for (DaemonExtension extension : ServiceLoader.load(DaemonExtension.class,
+                    Thread.currentThread().getContextClassLoader())) {
+                extension.start(config, registry, view).ifPresent(d.extensions::add);
+            }
+            if (config.status().monitorPort() > 0 && d.extensionPort(MONITOR) == 0) {
+                LOG.warn("status.monitorPort is {}, but no monitor is on this class path (habla-monitor): none runs",
+                        config.status().monitorPort());
             }
             for (ControlServer server : d.servers.values()) {
                 server.start();
@@ -166,9 +170,11 @@ public final class Daemon implements AutoCloseable {
             if (withBridges) {
                 for (BridgeConfig bc : config.bridges()) {
                     Bridge bridge = Bridges.create(registry, bc);
-                    d.bridges.put(bc.id(), bridge);
                     bridge.start(config.system(), d.graph.controlPoints(),
                             Bridges.role(registry, bc).auditedIn(d.guards.audit()));
+                    BridgeLink link = new BridgeLink(bc.id(), bridge, bc.reconnect());
+                    d.bridges.put(bc.id(), link);
+                    link.start();
                 }
             }
             d.graph.start();
@@ -178,7 +184,7 @@ public final class Daemon implements AutoCloseable {
         }
         LOG.info("HABLA daemon '{}' running: {} control sockets{}{}", config.system(), d.servers.size(),
                 d.statusServer == null ? "" : ", status on port " + d.statusServer.port(),
-                d.monitor == null ? "" : ", monitor on http://" + config.status().bind() + ":" + d.monitor.port() + "/");
+                d.extensions.stream().map(e -> ", " + e.where()).collect(Collectors.joining()));
         return d;
     }
 
@@ -205,12 +211,13 @@ public final class Daemon implements AutoCloseable {
         return statusServer == null ? 0 : statusServer.port();
     }
 
-    /** The monitor's port, or 0 when there is no monitor. */
-    public int monitorPort() {
-        return monitor == null ? 0 : monitor.port();
+    /** The port of the extension {@code name} ({@code "monitor"}), or 0 when none by that name runs. */
+    public int extensionPort(String name) {
+        return extensions.stream().filter(e -> e.name().equals(name)).mapToInt(DaemonExtension.Running::port)
+                .findFirst().orElse(0);
     }
 
-    /** What the monitor may read of this daemon: the status, the outputs and a tap on them; nothing to write. */
+    /** What an extension may read of this daemon: the status, the outputs and a tap on them; nothing to write. */
     private LiveGraph liveView() {
         return new LiveGraph() {
             @Override
@@ -274,10 +281,14 @@ public final class Daemon implements AutoCloseable {
         closed = true;
         LOG.info("HABLA daemon '{}' stopping: actuators first", config.system());
         graph.stopActuators("the daemon is shutting down");
-        bridges.values().forEach(Bridge::close);
+        bridges.values().forEach(BridgeLink::stop);
         servers.values().forEach(ControlServer::close);
-        if (monitor != null) {
-            monitor.close();
+        for (DaemonExtension.Running e : extensions) {
+            try {
+                e.product().close();
+            } catch (Exception ex) {
+                LOG.warn("closing the {} failed: {}", e.name(), ex.toString());
+            }
         }
         if (statusServer != null) {
             statusServer.close();

@@ -1,16 +1,14 @@
 package org.habla.daemon;
 
 import java.io.IOException;
-import java.net.InetAddress;
-import java.net.InetSocketAddress;
-import java.net.Socket;
 import java.net.UnknownHostException;
 import java.util.ArrayList;
 import java.util.List;
 import org.habla.config.ConfigError;
-import org.habla.config.Expose;
+import org.habla.net.Expose;
 import org.habla.config.HablaConfig;
 import org.habla.config.MethodConfig;
+import org.habla.net.BindAddress;
 
 /**
  * Finds the ports of a config that cannot be listened on, before the daemon listens on any. Each port is
@@ -32,15 +30,17 @@ final class PortCheck {
             if (m.expose().isPresent()) {
                 Expose x = m.expose().get();
                 String at = "$.methods[" + i + "].expose";
-                probe(at, "port", "control socket '" + x.name() + "'", bindOf(x.bind()), x.port()).ifPresent(errors::add);
+                probe(at, "bind", "port", "control socket '" + x.name() + "'", bindOf(x.bind()), x.port()).ifPresent(errors::add);
             }
         }
         if (config.status().port() > 0) {
-            probe("$.status", "port", "the status endpoint", bindOf(config.status().bind()), config.status().port())
+            probe("$.status", "bind", "port", "the status endpoint", bindOf(config.status().bind()),
+                    config.status().port())
                     .ifPresent(errors::add);
         }
         if (config.status().monitorPort() > 0) {
-            probe("$.status", "monitorPort", "the monitor", bindOf(config.status().bind()), config.status().monitorPort())
+            probe("$.status", "monitorBind", "monitorPort", "the monitor", bindOf(config.status().monitorBind()),
+                    config.status().monitorPort())
                     .ifPresent(errors::add);
         }
         return errors;
@@ -57,23 +57,23 @@ final class PortCheck {
     }
 
     static String bindOf(String bind) {
-        return bind == null || bind.isBlank() ? "127.0.0.1" : bind;
+        return bind == null || bind.isBlank() ? BindAddress.DEFAULT : bind;
     }
 
-    private static java.util.Optional<ConfigError> probe(String at, String portKey, String what, String bind, int port) {
+    private static java.util.Optional<ConfigError> probe(String at, String bindKey, String portKey, String what,
+            String bind, int port) {
         if (port <= 0) {
             return java.util.Optional.empty();
         }
-        InetAddress address;
+        BindAddress address;
         try {
-            address = InetAddress.getByName(bind);
+            address = BindAddress.of(bind);
         } catch (UnknownHostException e) {
-            return java.util.Optional.of(new ConfigError(at + ".bind", what + " cannot listen on " + bind
+            return java.util.Optional.of(new ConfigError(at + "." + bindKey, what + " cannot listen on " + bind
                     + ": not an address of this computer (" + e.getMessage() + ")"));
         }
-        try (Socket probe = new Socket()) {
-            probe.setReuseAddress(true);
-            probe.bind(new InetSocketAddress(address, port));
+        try {
+            address.probe(port);
             return java.util.Optional.empty();
         } catch (IOException e) {
             return java.util.Optional.of(new ConfigError(at + "." + portKey, what + " cannot listen on " + bind + ":"

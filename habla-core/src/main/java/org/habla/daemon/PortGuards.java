@@ -1,7 +1,7 @@
 package org.habla.daemon;
 
 import java.io.IOException;
-import org.habla.config.Expose;
+import org.habla.net.Expose;
 import org.habla.config.HablaConfig;
 import org.habla.config.SecurityConfig;
 import org.habla.security.AuditLog;
@@ -111,8 +111,8 @@ final class PortGuards implements AutoCloseable {
             open.add("the status endpoint listens on " + st.bind() + ":" + st.port() + " without authentication "
                     + "(security.insecure is true)");
         }
-        if (st.monitorPort() > 0 && !SecurityConfig.isLoopback(st.bind())) {
-            open.add("the monitor listens on " + st.bind() + ":" + st.monitorPort() + " and has no authentication "
+        if (st.monitorPort() > 0 && !SecurityConfig.isLoopback(st.monitorBind())) {
+            open.add("the monitor listens on " + st.monitorBind() + ":" + st.monitorPort() + " and has no authentication "
                     + "(security.insecure is true)");
         }
         return open;

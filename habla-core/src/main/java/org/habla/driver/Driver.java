@@ -13,10 +13,11 @@ public interface Driver {
 
     /**
      * The reading channel the engine adds to every interface, whatever its driver: the link's state as a
-     * record {@code {"up": bool, "detail": text}}, sent on every change and once a second. Drivers must not
-     * declare a channel of this name.
+     * {@link LinkReport} record, sent on every change and once a second. Drivers must not declare a channel of this
+     * name.
      */
-    ChannelDescriptor LINK_CHANNEL = ChannelDescriptor.reading("link", PayloadKind.RECORD, "");
+    ChannelDescriptor LINK_CHANNEL = ChannelDescriptor.reading("link", PayloadKind.RECORD, "")
+            .withLayout(LinkReport.LAYOUT);
 
     /** Every channel the robot offers, readings and commands, with their metadata. */
     List<ChannelDescriptor> channels();

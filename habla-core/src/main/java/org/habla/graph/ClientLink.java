@@ -74,31 +74,36 @@ final class ClientLink implements Link {
     }
 
     @Override
-    public boolean command(String channel, Payload value) {
+    public CommandResult command(String channel, Payload value) {
         return write("command " + channel, s -> s.write(channel, value));
     }
 
     @Override
     public boolean stopMotion() {
-        return write("stop", ClientSession::stopMotion);
+        CommandResult r = write("stop", ClientSession::stopMotion);
+        if (r.refusal() != null) {
+            LOG.warn("link {}: stop refused: {}", name, r.refusal());
+        }
+        return r.written();
     }
 
-    private boolean write(String what, SessionWrite action) {
+    /** A refusal is the caller's to count and log (a command's dropped once, with its reason). */
+    private CommandResult write(String what, SessionWrite action) {
         writeLock.lock();
         Attempt attempt = link.session();
         try {
             if (attempt == null) {
-                return false;
+                return CommandResult.DOWN;
             }
             action.write(attempt.session);
-            return true;
+            return CommandResult.WRITTEN;
         } catch (IllegalArgumentException e) {
-            LOG.warn("link {}: {} refused: {}", name, what, e.getMessage());
-            return false;
+            // The session refused the command (e.g. its device is offline): drop it, keep the link.
+            return CommandResult.refused(e.getMessage());
         } catch (IOException | RuntimeException e) {
             LOG.warn("link {}: {} failed, reconnecting: {}", name, what, e.toString());
             attempt.close();
-            return false;
+            return CommandResult.refused("link " + name + " failed, reconnecting: " + e);
         } finally {
             writeLock.unlock();
         }

@@ -96,33 +96,37 @@ final class ConnectionLink implements Link {
 
     /** Writes a command now; false if the connection is down or the write failed. */
     @Override
-    public boolean command(String channel, Payload value) {
+    public CommandResult command(String channel, Payload value) {
         return write("command " + channel, (s, o) -> s.write(channel, value, o));
     }
 
     @Override
     public boolean stopMotion() {
-        return write("stop", (s, o) -> s.stopMotion(o));
+        CommandResult r = write("stop", (s, o) -> s.stopMotion(o));
+        if (r.refusal() != null) {
+            LOG.warn("link {}: stop refused: {}", name, r.refusal());
+        }
+        return r.written();
     }
 
-    private boolean write(String what, SessionWrite action) {
+    /** A refusal is the caller's to count and log (a command's dropped once, with its reason). */
+    private CommandResult write(String what, SessionWrite action) {
         writeLock.lock();
         RobotSession session = link.session();
         try {
             if (session == null) {
-                return false;
+                return CommandResult.DOWN;
             }
             action.write(session.protocol, session.out);
             session.out.flush();
-            return true;
+            return CommandResult.WRITTEN;
         } catch (IllegalArgumentException e) {
             // The session refused to encode this command before writing a byte: drop it, keep the link.
-            LOG.warn("link {}: {} refused: {}", name, what, e.getMessage());
-            return false;
+            return CommandResult.refused(e.getMessage());
         } catch (IOException | RuntimeException e) {
             LOG.warn("link {}: {} failed, reconnecting: {}", name, what, e.toString());
             session.close();
-            return false;
+            return CommandResult.refused("link " + name + " failed, reconnecting: " + e);
         } finally {
             writeLock.unlock();
         }

@@ -6,12 +6,14 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLongArray;
-import org.habla.config.Expose;
+import java.util.function.Function;
+import org.habla.net.Expose;
 import org.habla.method.ControlNotice;
 import org.habla.method.Input;
 import org.habla.method.Layer;
 import org.habla.method.MethodState;
 import org.habla.method.Output;
+import org.habla.method.Shape;
 import org.habla.net.ControlLease;
 import org.habla.net.ControlPoint;
 import org.habla.sample.Payload;
@@ -34,17 +36,20 @@ final class ExposedMethod implements ControlPoint {
     private final ControlLease lease;
     /** The producer a written value's sample names ({@code control:SOCKET}). */
     private final String controlProducer;
+    private final Function<Output<?>, Shape> shapes;
 
     /**
      * @param controlled the inputs a control client writes, each with what a write is handed to
      * @param actuating  whether values written here can reach a command channel
+     * @param shapes     the shape each output shows with what feeds it
      */
     ExposedMethod(MethodRunner runner, Expose expose, Map<Input<?>, InputEntry> controlled, MotionWatchdog watchdog,
-            GraphTap tap, boolean actuating) {
+            GraphTap tap, boolean actuating, Function<Output<?>, Shape> shapes) {
         List<Input<?>> controlInputs = runner.method().inputs().stream().filter(controlled::containsKey).toList();
         this.entries = new InputEntry[runner.method().inputs().size()];
         controlled.forEach((in, entry) -> entries[in.index()] = entry);
         this.runner = runner;
+        this.shapes = shapes;
         this.actuating = actuating && !controlInputs.isEmpty();
         this.lease = this.actuating ? new ControlLease(expose.name(), watchdog.timeoutMillis(), runner::nowMicros,
                 this::writerLeft, line -> listeners.forEach(l -> l.onControl(line))) : null;
@@ -86,6 +91,11 @@ final class ExposedMethod implements ControlPoint {
     @Override
     public List<Output<?>> outputs() {
         return runner.method().outputs();
+    }
+
+    @Override
+    public Shape shapeOf(Output<?> output) {
+        return shapes.apply(output);
     }
 
     @Override

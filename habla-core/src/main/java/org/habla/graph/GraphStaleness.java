@@ -41,7 +41,7 @@ final class GraphStaleness {
     /** Marks every method as it stands before anything runs: what depends on a link is stale until it is up. */
     void markAll() {
         for (MethodRunner r : runners.values()) {
-            r.stale(why(r.id()) != null);
+            r.stale(cause(r.id()));
         }
     }
 
@@ -51,13 +51,14 @@ final class GraphStaleness {
      */
     void refresh() {
         for (MethodRunner r : runners.values()) {
-            String why = why(r.id());
-            boolean stale = why != null;
-            if (r.stale() != stale) {
-                r.stale(stale);
+            StaleCause cause = cause(r.id());
+            boolean stale = cause != null;
+            boolean changed = r.stale() != stale;
+            r.stale(cause); // the cause may change while the method stays stale: the status tells the newest
+            if (changed) {
                 for (ExposedMethod x : exposed) {
                     if (x.methodId().equals(r.id())) {
-                        x.staleChanged(stale, stale ? why : "all links up");
+                        x.staleChanged(stale, stale ? cause.why() : "all links up");
                     }
                 }
             }
@@ -65,22 +66,23 @@ final class GraphStaleness {
     }
 
     /** Why a method's outputs are stale now, or null. */
-    private String why(String methodId) {
+    private StaleCause cause(String methodId) {
         for (String id : upstreamInterfaces.getOrDefault(methodId, Set.of())) {
             if (!links.get(id).up()) {
-                return "interface " + id + " is down";
+                return new StaleCause("@" + id, "interface " + id + " is down");
             }
         }
         for (Source.Channel ch : upstreamChannels.getOrDefault(methodId, Set.of())) {
             String why = links.get(ch.interfaceId()).unavailable(ch.channel());
             if (why != null) {
-                return "the device of @" + ch.interfaceId() + "." + ch.channel() + " is unavailable: " + why;
+                String channel = "@" + ch.interfaceId() + "." + ch.channel();
+                return new StaleCause(channel, "the device of " + channel + " is unavailable: " + why);
             }
         }
         for (String id : upstreamPlacements.getOrDefault(methodId, Set.of())) {
             RemotePlacement p = placements.get(id);
             if (!p.healthy()) {
-                return "worker " + p.host() + " of method " + id + " is lost";
+                return new StaleCause(id, "worker " + p.host() + " of method " + id + " is lost");
             }
         }
         return null;

@@ -29,6 +29,7 @@ final class GraphWiring {
     private final MotionWatchdog watchdog;
     private final GraphTap tap;
     private final Entries entries;
+    private final WiredShapes shapes;
     private final List<ExposedMethod> exposed = new ArrayList<>();
 
     /** What the wires of one method's input hand samples to ({@link GraphRun#entry}). */
@@ -38,7 +39,8 @@ final class GraphWiring {
     }
 
     private GraphWiring(HablaConfig config, GraphTopology topology, Map<String, MethodRunner> runners,
-            Map<String, InterfaceLink> links, MotionWatchdog watchdog, GraphTap tap, Entries entries) {
+            Map<String, InterfaceLink> links, MotionWatchdog watchdog, GraphTap tap, Entries entries,
+            WiredShapes shapes) {
         this.config = config;
         this.topology = topology;
         this.runners = runners;
@@ -46,15 +48,17 @@ final class GraphWiring {
         this.watchdog = watchdog;
         this.tap = tap;
         this.entries = entries;
+        this.shapes = shapes;
     }
 
     /**
      * Wires the graph's methods and interfaces, every input's wires and control writes to what {@code entries} gives
-     * for its slot; returns the exposed methods, in config order.
+     * for its slot, telling {@code shapes} what feeds each input; returns the exposed methods, in config order.
      */
     static List<ExposedMethod> wire(HablaConfig config, GraphTopology topology, Map<String, MethodRunner> runners,
-            Map<String, InterfaceLink> links, MotionWatchdog watchdog, GraphTap tap, Entries entries) {
-        GraphWiring w = new GraphWiring(config, topology, runners, links, watchdog, tap, entries);
+            Map<String, InterfaceLink> links, MotionWatchdog watchdog, GraphTap tap, Entries entries,
+            WiredShapes shapes) {
+        GraphWiring w = new GraphWiring(config, topology, runners, links, watchdog, tap, entries, shapes);
         for (MethodConfig mc : config.methods()) {
             w.wire(mc);
         }
@@ -76,11 +80,13 @@ final class GraphWiring {
                     MethodRunner from = runners.get(mo.methodId());
                     Output<?> out = from.method().output(mo.output()).orElseThrow();
                     feed(from.port(out), runner, entry);
+                    shapes.fromOutput(mc.id(), input, from.id(), out);
                 }
                 case Source.Channel ch -> {
                     InterfaceLink link = links.get(ch.interfaceId());
                     feed(link.reading(ch.channel()), runner, entry);
                     runner.bindChannel(input, link.channel(ch.channel()));
+                    shapes.fromChannel(mc.id(), input, link.channel(ch.channel()));
                 }
                 case Source.Control c -> controlled.put(input, entry);
             }
@@ -96,7 +102,7 @@ final class GraphWiring {
             runner.port(out).subscribe(InterfaceTap.commands(link, channel, tap));
         }
         mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner, x, controlled, watchdog, tap,
-                topology.actuates(mc.id()))));
+                topology.actuates(mc.id()), out -> shapes.of(mc.id(), out))));
     }
 
     /**

@@ -39,6 +39,7 @@ final class InterfaceCommands {
     private final Object motionLock = new Object();
     private final Set<Link> stopsOwed = new HashSet<>();
     private volatile MotionWatchdog watchdog;
+    private volatile Drop lastDrop;
 
     InterfaceCommands(String interfaceId, Map<String, ChannelDescriptor> channels, List<Link> connections) {
         this.interfaceId = interfaceId;
@@ -55,10 +56,18 @@ final class InterfaceCommands {
         this.watchdog = w;
     }
 
-    /** Adds how many commands were written and dropped to an interface's status. */
+    /** Adds how many commands were written and dropped, and why the last was dropped, to an interface's status. */
     void countsTo(ObjectNode status) {
         status.put("commandsSent", commandsSent.sum());
         status.put("commandsDropped", commandsDropped.get());
+        Drop last = lastDrop;
+        if (last != null) {
+            status.putObject("lastDrop").put("channel", last.channel()).put("why", last.why());
+        }
+    }
+
+    /** The last command dropped: its channel and why. */
+    private record Drop(String channel, String why) {
     }
 
     /** What became of a command: written to its connection, refused (counted), or on no connection at all. */
@@ -92,8 +101,10 @@ final class InterfaceCommands {
     }
 
     private Delivery send(String channel, Sample sample, Link link) {
-        if (!link.command(channel, sample.payload())) {
-            return refuse(channel, sample, "link " + interfaceId + "/" + link.connectionName() + " is down");
+        CommandResult result = link.command(channel, sample.payload());
+        if (!result.written()) {
+            return refuse(channel, sample, result.refusal() != null ? result.refusal()
+                    : "link " + interfaceId + "/" + link.connectionName() + " is down");
         }
         commandsSent.increment();
         return Delivery.WRITTEN;
@@ -158,6 +169,7 @@ final class InterfaceCommands {
      */
     private void drop(String channel, Sample sample, String why) {
         long n = commandsDropped.incrementAndGet();
+        lastDrop = new Drop(channel, why);
         ChannelDescriptor d = channels.get(channel);
         if (d != null && d.motion() && standsStill(sample.payload())) {
             LOG.debug("interface {}: a stand-still command on {} dropped: {}", interfaceId, channel, why);

@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.HashMap;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
@@ -11,6 +12,7 @@ import java.util.function.Consumer;
 import org.habla.config.InterfaceConfig;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.driver.Driver;
+import org.habla.driver.LinkReport;
 import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
 import org.slf4j.Logger;
@@ -186,7 +188,7 @@ final class InterfaceLink {
             return;
         }
         StringBuilder detail = new StringBuilder();
-        ObjectNode each = JsonNodeFactory.instance.objectNode();
+        Map<String, Boolean> each = new LinkedHashMap<>();
         for (Link c : connections) {
             each.put(c.connectionName(), c.up());
             if (!c.up()) {
@@ -195,9 +197,8 @@ final class InterfaceLink {
                         .append(c.lastError().isEmpty() ? "" : ": " + c.lastError());
             }
         }
-        RecordValue value = RecordValue.builder().put("up", up).put("interface", config.id())
-                .put("detail", detail.length() == 0 ? "all connections up" : detail.toString())
-                .set("connections", each).build();
+        RecordValue value = RecordValue.of(new LinkReport(up, config.id(),
+                detail.length() == 0 ? "all connections up" : detail.toString(), each));
         readings.port(Driver.LINK_CHANNEL.name()).publish(value, clock.nowMicros(), false);
     }
 

@@ -26,7 +26,11 @@ final class InterfaceReadings {
     private final String interfaceId;
     private final Map<String, ChannelDescriptor> channels;
     private final Map<String, Producer> ports = new HashMap<>();
+    /** The handle a session writes each reading channel through, made once; the engine's own link is not one. */
+    private final Map<String, ReadingSink.Channel> handles = new HashMap<>();
     private final Map<String, String> unavailable = new ConcurrentHashMap<>();
+    /** The devices the driver told of, by name, sorted for the status. */
+    private final Map<String, DeviceState> devices = new java.util.concurrent.ConcurrentSkipListMap<>();
     /** Whether the engine tells the {@code link} record, or the driver's connections deliver it (a recording). */
     private final boolean engineTellsLink;
     private final EngineClock clock;
@@ -46,7 +50,11 @@ final class InterfaceReadings {
         this.states = states;
         for (ChannelDescriptor c : channels.values()) {
             if (c.direction() == ChannelDescriptor.Direction.READING) {
-                ports.put(c.name(), new Producer("@" + interfaceId + "." + c.name()));
+                Producer port = new Producer("@" + interfaceId + "." + c.name());
+                ports.put(c.name(), port);
+                if (!engineTellsLink || !Driver.LINK_CHANNEL.name().equals(c.name())) {
+                    handles.put(c.name(), new Handle(c, port));
+                }
             }
         }
     }
@@ -73,6 +81,11 @@ final class InterfaceReadings {
     /** A fresh session tells its devices' availability again: until it does, every device is available. */
     void forgetAvailability() {
         unavailable.clear();
+        devices.clear();
+    }
+
+    /** What a driver last said of one device, and since when (engine clock, µs). */
+    private record DeviceState(boolean online, String detail, long sinceMicros) {
     }
 
     ObjectNode robotInfo() {
@@ -85,8 +98,16 @@ final class InterfaceReadings {
         status.put("unknownChannel", unknownChannel.sum());
     }
 
-    /** Adds the unavailable devices, if any, and how many readings each channel published to the status. */
+    /**
+     * Adds the devices the driver told of and the unavailable channels, if any, and how many readings each channel
+     * published to the status.
+     */
     void publishedTo(ObjectNode status) {
+        if (!devices.isEmpty()) {
+            ObjectNode ds = status.putObject("devices");
+            devices.forEach((name, d) -> ds.putObject(name).put("online", d.online()).put("detail", d.detail())
+                    .put("sinceMicros", d.sinceMicros()));
+        }
         if (!unavailable.isEmpty()) {
             ObjectNode un = status.putObject("unavailable");
             unavailable.forEach(un::put);
@@ -95,28 +116,58 @@ final class InterfaceReadings {
         ports.forEach((name, port) -> rs.put(name, port.published()));
     }
 
-    /** Turns what the sessions decode into samples on the reading channels. */
-    private final class Sink implements ReadingSink {
-        @Override
-        public void reading(String channel, Payload value) {
-            reading(channel, value, clock.nowMicros());
+    /** A declared reading channel as a session writes it: its producer and kind, found once. */
+    private final class Handle implements ReadingSink.Channel {
+        private final ChannelDescriptor descriptor;
+        private final Producer port;
+
+        Handle(ChannelDescriptor descriptor, Producer port) {
+            this.descriptor = descriptor;
+            this.port = port;
         }
 
         @Override
-        public void reading(String channel, Payload value, long sourceMicros) {
-            Producer port = ports.get(channel);
-            ChannelDescriptor d = channels.get(channel);
-            if (port == null || (engineTellsLink && Driver.LINK_CHANNEL.name().equals(channel))) {
-                unknownChannel.increment();
-                LOG.debug("interface {}: reading on unknown channel '{}' ignored", interfaceId, channel);
-                return;
-            }
-            if (!d.kind().accepts(value.kind())) {
-                malformed("reading on " + channel + " is " + value.kind().wireName() + ", expected "
-                        + d.kind().wireName());
+        public void publish(Payload value) {
+            publish(value, clock.nowMicros());
+        }
+
+        @Override
+        public void publish(Payload value, long sourceMicros) {
+            if (!descriptor.kind().accepts(value.kind())) {
+                sink.malformed("reading on " + descriptor.name() + " is " + value.kind().wireName() + ", expected "
+                        + descriptor.kind().wireName());
                 return;
             }
             port.publish(value, sourceMicros, false);
+        }
+    }
+
+    /** What is written to a channel the interface does not have: counted and dropped. */
+    private final class Unknown implements ReadingSink.Channel {
+        private final String name;
+
+        Unknown(String name) {
+            this.name = name;
+        }
+
+        @Override
+        public void publish(Payload value) {
+            publish(value, 0);
+        }
+
+        @Override
+        public void publish(Payload value, long sourceMicros) {
+            unknownChannel.increment();
+            LOG.debug("interface {}: reading on unknown channel '{}' ignored", interfaceId, name);
+        }
+    }
+
+    /** Turns what the sessions decode into samples on the reading channels. */
+    private final class Sink implements ReadingSink {
+        @Override
+        public Channel channel(String name) {
+            Channel handle = handles.get(name);
+            return handle != null ? handle : new Unknown(name);
         }
 
         @Override
@@ -143,6 +194,20 @@ final class InterfaceReadings {
                     states.refreshStaleness();
                 }
             });
+        }
+
+        @Override
+        public void device(String device, boolean online, String detail) {
+            DeviceState before = devices.get(device);
+            if (before != null && before.online() == online && before.detail().equals(detail)) {
+                return;
+            }
+            long since = before != null && before.online() == online ? before.sinceMicros() : clock.nowMicros();
+            devices.put(device, new DeviceState(online, detail, since));
+            if (before == null ? !online : before.online() != online) {
+                LOG.info("interface {}: device {} is {} ({})", interfaceId, device, online ? "online" : "offline",
+                        detail);
+            }
         }
 
         @Override

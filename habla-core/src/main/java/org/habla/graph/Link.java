@@ -32,8 +32,8 @@ interface Link {
     /** Says goodbye if connected, closes and stops reconnecting. */
     void stop();
 
-    /** Writes a command now; false if the connection is down or the command was refused. */
-    boolean command(String channel, Payload value);
+    /** Writes a command now, or says why not: the connection is down, or its session refused the command. */
+    CommandResult command(String channel, Payload value);
 
     boolean stopMotion();
 

@@ -45,6 +45,7 @@ public final class MethodGraph implements AutoCloseable {
     private final Map<String, RemotePlacement> placements;
     private final LinkStates linkStates = new LinkStates();
     private final List<ExposedMethod> exposed;
+    private final WiredShapes shapes = new WiredShapes();
     private final GraphStaleness staleness;
     private final MotionWatchdog watchdog;
     private final long startedMicros;
@@ -77,7 +78,7 @@ public final class MethodGraph implements AutoCloseable {
                     config.cycleInputs(mc.id()), threads.choice(mc.id())));
         }
         this.placements = RemotePlacement.placeAll(config, runners, linkStates);
-        this.exposed = GraphWiring.wire(config, topology, runners, links, watchdog, tap, run::entry);
+        this.exposed = GraphWiring.wire(config, topology, runners, links, watchdog, tap, run::entry, shapes);
         this.staleness = new GraphStaleness(topology, runners, links, placements, exposed);
         linkStates.onChange(staleness::refresh);
         run.wired(runners, exposed, topology, watchdog);
@@ -190,7 +191,7 @@ public final class MethodGraph implements AutoCloseable {
     }
 
     /** The socket settings of an exposed method's control point. */
-    public org.habla.config.Expose exposeOf(ControlPoint point) {
+    public org.habla.net.Expose exposeOf(ControlPoint point) {
         return ((ExposedMethod) point).expose();
     }
 
@@ -199,7 +200,7 @@ public final class MethodGraph implements AutoCloseable {
         List<OutputInfo> all = new ArrayList<>();
         for (MethodRunner r : runners.values()) {
             for (Output<?> out : r.method().outputs()) {
-                all.add(new OutputInfo(r.id(), out.name(), out.shape()));
+                all.add(new OutputInfo(r.id(), out.name(), shapes.of(r.id(), out)));
             }
         }
         return all;

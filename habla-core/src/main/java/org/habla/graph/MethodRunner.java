@@ -134,8 +134,9 @@ final class MethodRunner {
         context.bindCommandChannel(output, channel);
     }
 
-    void stale(boolean isStale) {
-        context.stale(isStale);
+    /** Marks the outputs stale for {@code cause}, or fresh when it is null. */
+    void stale(StaleCause cause) {
+        context.stale(cause);
     }
 
     boolean stale() {
@@ -268,7 +269,7 @@ final class MethodRunner {
         if (!context.readinessDetail().isEmpty()) {
             n.put("readiness", context.readinessDetail());
         }
-        n.put("stale", context.stale());
+        context.staleTo(n);
         scheduler.host().status(n);
         scheduler.statusTo(n, nowMicros);
         ObjectNode inputs = n.putObject("inputs");

@@ -111,8 +111,9 @@ public final class RealtimeThreads {
         List<String> command = new ArrayList<>(List.of("chrt"));
         command.addAll(List.of(options));
         command.add(Integer.toString(tid));
+        Process p = null;
         try {
-            Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
+            p = new ProcessBuilder(command).redirectErrorStream(true).start();
             if (!p.waitFor(10, TimeUnit.SECONDS)) {
                 p.destroyForcibly();
                 return cannot("chrt did not end within 10 s");
@@ -126,6 +127,8 @@ public final class RealtimeThreads {
         } catch (IOException e) {
             return cannot(e.getMessage());
         } catch (InterruptedException e) {
+            // chrt runs on: let it end before anything else asks (a hand-back must not come before this raise)
+            p.onExit().orTimeout(10, TimeUnit.SECONDS).exceptionally(t -> null).join();
             Thread.currentThread().interrupt();
             return false;
         }
@@ -185,15 +188,17 @@ public final class RealtimeThreads {
         String comm = prefix.length() > 15 ? prefix.substring(0, 15) : prefix;
         return Thread.ofPlatform().daemon().name("habla-realtime-carriers").start(() -> {
             Set<Integer> seen = new HashSet<>();
+            // Every carrier a raise was begun for: a close that interrupts the wait for chrt does not stop chrt
+            // itself, which may still raise the thread, so each one begun is handed back, raised or not.
             List<Integer> raised = new ArrayList<>();
             try {
                 while (!Thread.currentThread().isInterrupted()) {
                     try (DirectoryStream<Path> tasks = Files.newDirectoryStream(Path.of("/proc/self/task"))) {
                         for (Path task : tasks) {
                             int tid = Integer.parseInt(task.getFileName().toString());
-                            if (seen.add(tid) && startsWith(task, comm)
-                                    && chrt(tid, "--fifo", "--reset-on-fork", "--pid", Integer.toString(priority))) {
+                            if (seen.add(tid) && startsWith(task, comm)) {
                                 raised.add(tid);
+                                chrt(tid, "--fifo", "--reset-on-fork", "--pid", Integer.toString(priority));
                             }
                         }
                     }

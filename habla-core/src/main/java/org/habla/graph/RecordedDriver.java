@@ -119,8 +119,8 @@ final class RecordedDriver implements InterfaceDriver {
         }
 
         @Override
-        public boolean command(String channel, Payload value) {
-            return up;
+        public CommandResult command(String channel, Payload value) {
+            return up ? CommandResult.WRITTEN : CommandResult.DOWN;
         }
 
         @Override

@@ -8,7 +8,7 @@ import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.atomic.AtomicLong;
 import org.habla.config.Fallback;
 import org.habla.config.HablaConfig;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.config.MethodConfig;
 import org.habla.config.Reconnect;
 import org.habla.method.Input;

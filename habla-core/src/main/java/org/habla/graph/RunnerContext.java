@@ -56,6 +56,7 @@ final class RunnerContext implements MethodContext {
     private final Map<Input<?>, ChannelDescriptor> channels = new HashMap<>();
     private final Map<Output<?>, ChannelDescriptor> commandChannels = new HashMap<>();
     private volatile boolean stale;
+    private volatile StaleCause staleCause;
     private volatile boolean ready = true;
     private volatile String readinessDetail = "";
     private volatile Consumer<ControlNotice> controlNotices = n -> { };
@@ -99,11 +100,23 @@ final class RunnerContext implements MethodContext {
         return m;
     }
 
-    void stale(boolean isStale) {
-        stale = isStale;
+    /** Marks the outputs stale for {@code cause}, or fresh when it is null. */
+    void stale(StaleCause cause) {
+        staleCause = cause;
+        stale = cause != null;
     }
 
-    boolean stale() {
+    /** Adds whether the outputs are stale, and why ({@code staleBecause}), to a method's status. */
+    void staleTo(com.fasterxml.jackson.databind.node.ObjectNode status) {
+        StaleCause cause = staleCause;
+        status.put("stale", cause != null);
+        if (cause != null) {
+            status.putObject("staleBecause").put("source", cause.source()).put("why", cause.why());
+        }
+    }
+
+    @Override
+    public boolean stale() {
         return stale;
     }
 

@@ -204,6 +204,11 @@ public abstract sealed class Method permits SensorActuatorMethod, ProcessingMeth
         return context().nowMicros();
     }
 
+    /** Whether a link, device or worker its inputs come from is down now (a command sent meanwhile may not arrive). */
+    protected final boolean stale() {
+        return context().stale();
+    }
+
     /** The source time of the message being handled (the raw reading's time, or the tick's time). */
     protected final long sourceMicros() {
         return currentSourceMicros;

@@ -37,6 +37,14 @@ public interface MethodContext {
     default void tellControl(ControlNotice notice) {
     }
 
+    /**
+     * Whether something the method's inputs come from is down now (a link, a device its driver says is unavailable,
+     * a worker): what it emits meanwhile is marked stale, and a command it sends there may be dropped on the way.
+     */
+    default boolean stale() {
+        return false;
+    }
+
     /** Tells the status whether the method can do its work yet (e.g. a model still loading). */
     void readiness(boolean ready, String detail);
 

@@ -1,6 +1,5 @@
 package org.habla.method;
 
-import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
@@ -17,7 +16,7 @@ import org.habla.sample.Sample;
  * step its clock, read what it emitted. Shipped in the main sources so method authors test with it.
  *
  * <pre>{@code
- * MethodHarness h = MethodHarness.started("near", new Threshold(new ThresholdParams(null, null)));
+ * MethodHarness h = MethodHarness.started("near", new Threshold(ParamsJson.defaults(ThresholdParams.class)));
  * h.push("nearest", RecordValue.builder().put("distanceM", 1.0).build());
  * h.push("nearest", RecordValue.builder().put("distanceM", 0.4).build());
  * assertThat(h.values("label")).containsExactly(new TextValue("far"), new TextValue("near"));
@@ -25,6 +24,12 @@ import org.habla.sample.Sample;
  *
  * Background work runs when {@link #runBackground()} is called (or at once with
  * {@link #runBackgroundAtOnce()}), so tests decide when slow work finishes.
+ *
+ * <p>A method that throws from a hook is put in {@code FAILED}, as the engine would; the harness call that made
+ * it fail ({@link #start}, {@link #push}, {@link #advanceMillis}, {@link #runBackground}, ...) then throws an
+ * {@link AssertionError} with the method's exception as its cause, so a test never passes over a failure it did
+ * not ask for. A test about a failure says so first with {@link #expectFailure()} and then reads {@link #state()}
+ * and {@link #failure()}.
  */
 public final class MethodHarness {
 
@@ -34,13 +39,14 @@ public final class MethodHarness {
     private final Map<String, List<Sample>> emitted = new HashMap<>();
     private final Map<String, ChannelDescriptor> channels = new HashMap<>();
     private final Map<String, ChannelDescriptor> commandChannels = new HashMap<>();
-    private final ArrayDeque<Runnable> pendingBackground = new ArrayDeque<>();
+    private final HarnessBackground background = new HarnessBackground();
     private final List<ControlNotice> notices = new ArrayList<>();
     private final Map<String, Long> sequences = new HashMap<>();
     private long nowMicros = 1_700_000_000_000_000L;
     private long nextTickMicros;
-    private boolean backgroundAtOnce;
     private boolean ready = true;
+    private boolean stale;
+    private boolean failureExpected;
     private String readinessDetail = "";
 
     private MethodHarness(String id, Method method) {
@@ -77,25 +83,34 @@ public final class MethodHarness {
     public MethodHarness start() {
         lifecycle.start();
         method.tickPeriod().ifPresent(p -> nextTickMicros = nowMicros + p.toNanos() / 1000);
+        return failedUnlessExpected();
+    }
+
+    /**
+     * Lets the method fail: from now on a hook that throws leaves the method {@code FAILED} (read {@link #state()}
+     * and {@link #failure()}) instead of failing the test. Call it before the call expected to fail (before
+     * {@link #start()} for a start that fails: {@code MethodHarness.of(id, m).expectFailure().start()}).
+     */
+    public MethodHarness expectFailure() {
+        failureExpected = true;
         return this;
+    }
+
+    /** Why the method failed ({@code "failed to handle a sample of in: java.lang..."}), or an empty string. */
+    public String failure() {
+        return lifecycle.failure();
     }
 
     /** Makes background work run as soon as it is asked for. */
     public MethodHarness runBackgroundAtOnce() {
-        backgroundAtOnce = true;
-        while (!pendingBackground.isEmpty()) {
-            pendingBackground.poll().run();
-        }
-        return this;
+        background.runAtOnceFromNowOn();
+        return failedUnlessExpected();
     }
 
     /** Runs the background work asked for so far; returns how many tasks ran. */
     public int runBackground() {
-        int n = 0;
-        while (!pendingBackground.isEmpty()) {
-            pendingBackground.poll().run();
-            n++;
-        }
+        int n = background.runAll();
+        failedUnlessExpected();
         return n;
     }
 
@@ -112,7 +127,7 @@ public final class MethodHarness {
         }
         long seq = sequences.merge("in:" + input, 1L, Long::sum);
         lifecycle.deliver(in, new Sample(value, "harness." + input, seq, sourceMicros, false));
-        return this;
+        return failedUnlessExpected();
     }
 
     /**
@@ -127,10 +142,16 @@ public final class MethodHarness {
         return push(input, value);
     }
 
+    /** Makes the method stale or fresh, as a link or device its inputs come from going down or up would. */
+    public MethodHarness stale(boolean isStale) {
+        stale = isStale;
+        return this;
+    }
+
     /** Tells the method the engine stopped the robot (the motion watchdog tripped, or control came back). */
     public MethodHarness motionStopped() {
         lifecycle.motionStopped();
-        return this;
+        return failedUnlessExpected();
     }
 
     /** Moves the clock forward, running every tick that falls due on the way. */
@@ -146,7 +167,7 @@ public final class MethodHarness {
             }
         }
         nowMicros = target;
-        return this;
+        return failedUnlessExpected();
     }
 
     public long nowMicros() {
@@ -202,6 +223,16 @@ public final class MethodHarness {
         return this;
     }
 
+    /** Fails the test if the method failed and the test did not say it expects that. */
+    private MethodHarness failedUnlessExpected() {
+        if (!failureExpected && lifecycle.state() == MethodState.FAILED) {
+            throw new AssertionError("method " + id + " (" + method.getClass().getSimpleName() + ") "
+                    + lifecycle.failure() + "; call expectFailure() first if the test expects it",
+                    lifecycle.failureCause());
+        }
+        return this;
+    }
+
     private Input<?> requireInput(String name) {
         return method.input(name).orElseThrow(() -> new IllegalArgumentException(
                 id + " has no input '" + name + "'; it has " + method.inputs().stream().map(Input::name).toList()));
@@ -224,13 +255,18 @@ public final class MethodHarness {
         }
 
         @Override
+        public boolean stale() {
+            return stale;
+        }
+
+        @Override
         public void emit(Output<?> output, Payload value, long sourceMicros) {
             if (!output.type().isInstance(value)) {
                 throw new IllegalArgumentException(output + " cannot carry " + value.kind().wireName());
             }
             long seq = sequences.merge(output.name(), 1L, Long::sum);
             emitted.computeIfAbsent(output.name(), k -> new ArrayList<>())
-                    .add(new Sample(value, id + "." + output.name(), seq, sourceMicros, false));
+                    .add(new Sample(value, id + "." + output.name(), seq, sourceMicros, stale));
         }
 
         @Override
@@ -256,21 +292,7 @@ public final class MethodHarness {
 
         @Override
         public <T> void background(String what, Callable<T> task, Consumer<T> done) {
-            Runnable r = () -> {
-                T result;
-                try {
-                    result = task.call();
-                } catch (Exception e) {
-                    lifecycle.fail(what, e);
-                    return;
-                }
-                lifecycle.runTurn(what + " (done)", () -> done.accept(result));
-            };
-            if (backgroundAtOnce) {
-                r.run();
-            } else {
-                pendingBackground.add(r);
-            }
+            background.submit(lifecycle, what, task, done);
         }
     }
 }

@@ -20,6 +20,7 @@ public final class MethodLifecycle {
     private final MethodContext context;
     private volatile MethodState state = MethodState.ATTACHED;
     private volatile String failure = "";
+    private volatile Throwable failureCause;
 
     private MethodLifecycle(Method method, MethodContext context) {
         this.method = method;
@@ -114,6 +115,11 @@ public final class MethodLifecycle {
         guard(what, turn);
     }
 
+    /** What the method threw when it failed, or null. */
+    public Throwable failureCause() {
+        return failureCause;
+    }
+
     /** A failure that happened on the method's behalf (e.g. its background task). */
     public void fail(String what, Throwable cause) {
         if (state == MethodState.RUNNING || state == MethodState.ATTACHED) {
@@ -157,6 +163,7 @@ public final class MethodLifecycle {
 
     private void markFailed(String what, Throwable e) {
         failure = "failed to " + what + ": " + e;   // before the state, so whoever sees FAILED sees why
+        failureCause = e;
         state = MethodState.FAILED;
         LOG.error("method {} ({}) FAILED to {}: {}", method.id(), method.getClass().getSimpleName(), what, e.toString());
         LOG.debug("method {} failure trace", method.id(), e);

@@ -17,7 +17,7 @@ import java.util.concurrent.locks.LockSupport;
  * the calling thread until {@link ChannelReadiness} says the socket can be read or written; {@link #tryWrite}
  * never waits, so an engine thread can hand a sample to a client that keeps up without waking anyone.
  */
-final class ChannelConnection implements ClientConnection {
+final class ChannelConnection implements ControlConnection {
 
     /** A waiting thread looks again at least this often whether the connection was closed. */
     private static final long RECHECK_NANOS = 100_000_000L;

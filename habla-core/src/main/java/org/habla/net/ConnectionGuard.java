@@ -9,7 +9,6 @@ import java.util.List;
 import java.util.Objects;
 import java.util.Optional;
 import java.util.concurrent.atomic.AtomicLong;
-import org.habla.config.Limits;
 import org.habla.security.AuditEntry;
 import org.habla.security.AuditLog;
 import org.slf4j.Logger;

@@ -9,7 +9,6 @@ import java.net.SocketTimeoutException;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.atomic.AtomicBoolean;
-import org.habla.config.Limits;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -34,7 +33,7 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     /** How long a connection that broke the protocol may take to receive its error line before it is closed. */
     private static final long LINGER_MS = 2_000;
 
-    private final ClientConnection socket;
+    private final ControlConnection socket;
     private final String label;
     private final ControlProtocol protocol;
     private final Limits limits;
@@ -54,10 +53,10 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     private volatile FrameReader frames;
     /** Whether the port has made it a client ({@link ConnectionGuard#promote}); read and written by the reader. */
     private boolean promoted;
-    /** Whether samples may be written by the engine thread that hands them out ({@link ClientConnection#tryWrite}). */
+    /** Whether samples may be written by the engine thread that hands them out ({@link ControlConnection#tryWrite}). */
     private final boolean direct;
 
-    ControlClient(ClientConnection socket, String label, ClientId id, ControlProtocol protocol, Limits limits,
+    ControlClient(ControlConnection socket, String label, ClientId id, ControlProtocol protocol, Limits limits,
             BlockBudget budget, ConnectionGuard guard, ControlServer.Counters counters, Runnable onClosed) {
         this.socket = socket;
         this.direct = socket.writesWithoutWaiting();
@@ -202,14 +201,16 @@ final class ControlClient implements ControlProtocol.Replies, ConnectionGuard.Gu
     }
 
     @Override
-    public boolean admit(org.habla.security.PortAccess.Admitted who, com.fasterxml.jackson.databind.JsonNode requestId)
-            throws InterruptedException {
+    public boolean admit(org.habla.security.PortAccess.Admitted who, com.fasterxml.jackson.databind.JsonNode requestId,
+            Frame hello) throws InterruptedException {
         id = id.named(who.principal().name());
         LOG.info("{}: authenticated as client '{}' (role {})", label, who.principal().name(), who.role().fileName());
         if (!becomeClient(requestId)) {
             return false;
         }
-        admitted = who;
+        // Admitted as the hello is queued, under the outbox's lock: no sample can overtake the hello, and none emitted
+        // once the client could have read the hello is passed over as meant for a client not yet admitted.
+        outbox.putReply(EncodedFrame.of(hello), () -> admitted = who);
         FrameReader f = frames;
         if (f != null) {
             f.acceptBlocks();

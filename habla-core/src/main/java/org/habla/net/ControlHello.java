@@ -3,15 +3,18 @@ package org.habla.net;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import org.habla.config.Limits;
 import org.habla.method.Input;
 import org.habla.method.Output;
+import org.habla.method.Shape;
+import org.habla.sample.PayloadKind;
+import org.habla.sample.RecordField;
 import org.habla.security.PortAccess;
 
 /**
  * The hello line of a control socket (docs/control-contract.md): what the socket carries — its method, layer and
- * direction, each output's kind, unit, fields and meaning, each control input — whether it is stale, who commands
- * it, and the limits a client must keep to.
+ * direction, each output's kind, unit, fields and meaning (a record's declared fields each with its unit, frame and
+ * meaning in {@code fieldInfo}), each control input — whether it is stale, who commands it, and the limits a client
+ * must keep to. An output that hands on what feeds it (a pass-through) is described as that source.
  */
 final class ControlHello {
 
@@ -50,12 +53,20 @@ final class ControlHello {
         }
         ArrayNode outputs = h.putArray("outputs");
         for (Output<?> o : point.outputs()) {
+            Shape shape = point.shapeOf(o);
             ObjectNode out = outputs.addObject()
                     .put("name", o.name())
-                    .put("kind", o.kind().wireName())
-                    .put("unit", o.shape().unit());
-            o.shape().fields().forEach(out.putArray("fields")::add);
-            out.put("doc", o.shape().doc());
+                    .put("kind", (o.kind() == PayloadKind.ANY ? shape.kind() : o.kind()).wireName())
+                    .put("unit", shape.unit());
+            shape.fields().forEach(out.putArray("fields")::add);
+            out.put("doc", shape.doc());
+            if (!shape.recordFields().isEmpty()) {
+                ArrayNode info = out.putArray("fieldInfo");
+                for (RecordField f : shape.recordFields()) {
+                    info.addObject().put("name", f.name()).put("type", f.type()).put("unit", f.unit())
+                            .put("frame", f.frame()).put("doc", f.doc()).put("optional", f.optional());
+                }
+            }
         }
         ArrayNode inputs = h.putArray("inputs");
         for (Input<?> i : point.controlInputs()) {

@@ -27,7 +27,8 @@ import org.slf4j.LoggerFactory;
  * engine took. The commander's leaving or releasing stops the robot (the engine's motion watchdog); a client
  * that never commanded leaves without effect. The lapse time is the motion watchdog's: a commander silent that
  * long has already had the robot stopped, so it no longer stands in anyone's way; with no watchdog (0) control
- * lapses only by leaving, releasing or being taken.
+ * lapses only by leaving, releasing or being taken, or after the commander's own hold time
+ * ({@link Client#holdMillis}: a bridge's) when it has one.
  */
 public final class ControlLease {
 
@@ -36,6 +37,15 @@ public final class ControlLease {
     /** A client as the lease sees it: a control socket's connection, or a bridge. */
     public interface Client {
         ClientId id();
+
+        /**
+         * How long this client keeps control while silent when that is shorter than the lease's lapse time, or
+         * the lease has none: a commander that cannot leave (a bridge, whose actions come one by one from a
+         * broker) still lets go. 0: the lease's lapse time alone.
+         */
+        default long holdMillis() {
+            return 0;
+        }
     }
 
     /** A write that the lease lets through; throws what the engine's write throws. */
@@ -133,7 +143,12 @@ public final class ControlLease {
     }
 
     private boolean lapsed(long now) {
-        return lapseMicros > 0 && now - lastWriteMicros > lapseMicros;
+        long limit = lapseMicros;
+        long hold = holder == null ? 0 : holder.holdMillis() * 1_000;
+        if (hold > 0 && (limit == 0 || hold < limit)) {
+            limit = hold;
+        }
+        return limit > 0 && now - lastWriteMicros > limit;
     }
 
     private void change(Client to, long now, String why, Client previous) {

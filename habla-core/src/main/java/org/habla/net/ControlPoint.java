@@ -7,6 +7,7 @@ import org.habla.method.ControlNotice;
 import org.habla.method.Input;
 import org.habla.method.Layer;
 import org.habla.method.Output;
+import org.habla.method.Shape;
 import org.habla.sample.Payload;
 import org.habla.sample.Sample;
 
@@ -26,6 +27,11 @@ public interface ControlPoint {
 
     /** Outputs whose samples stream to clients. */
     List<Output<?>> outputs();
+
+    /** What an output's values look like with what feeds it (a hand-on output shows its source's shape). */
+    default Shape shapeOf(Output<?> output) {
+        return output.shape();
+    }
 
     /** Inputs wired to {@code control}: clients write values to these. */
     List<Input<?>> controlInputs();

@@ -8,7 +8,6 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.time.Instant;
 import java.util.List;
 import java.util.Map;
-import org.habla.config.Limits;
 import org.habla.method.Input;
 import org.habla.method.Output;
 import org.habla.sample.Payload;
@@ -60,13 +59,13 @@ final class ControlProtocol {
         PortAccess.Admitted admitted();
 
         /**
-         * The connection has proved who it is: from now on it gets samples and may use its role, once the port has
-         * a client's place for it.
+         * The connection has proved who it is: once the port has a client's place for it, it is sent {@code hello}
+         * and from then on gets samples and notices (never before the hello) and may use its role.
          *
          * @param requestId the auth line's {@code "id"}, for the error line of a refusal
          * @return whether it is a client; if not, it has been told why and closed
          */
-        boolean admit(PortAccess.Admitted admitted, JsonNode requestId) throws InterruptedException;
+        boolean admit(PortAccess.Admitted admitted, JsonNode requestId, Frame hello) throws InterruptedException;
 
         /**
          * Sends {@code error} (after {@link PortAccess#FAILURE_DELAY_MS} when {@code delay}) and closes the
@@ -234,9 +233,7 @@ final class ControlProtocol {
         ClientId who = replies.id();
         switch (security.access().authenticate(h, who.host())) {
             case PortAccess.Admitted a -> {
-                if (replies.admit(a, id)) {
-                    replies.reply(ControlHello.full(point, limits, lease, a));
-                }
+                replies.admit(a, id, ControlHello.full(point, limits, lease, a));
             }
             case PortAccess.Refused r -> {
                 security.audit().add(new AuditEntry(Instant.now(), r.client(), who.address(), point.name(),

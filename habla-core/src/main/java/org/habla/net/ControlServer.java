@@ -3,16 +3,12 @@ package org.habla.net;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
-import java.net.InetAddress;
-import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.List;
 import java.util.Objects;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicLong;
-import org.habla.config.Expose;
-import org.habla.config.Limits;
 import org.habla.security.PortSecurity;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -111,12 +107,11 @@ public final class ControlServer implements AutoCloseable {
         }
         String bind = bindAddress();
         // A channel's socket: what it accepts are channels, so a plain connection can be written without waiting.
-        ServerSocket server = java.nio.channels.ServerSocketChannel.open().socket();
+        // It listens on exactly the address asked for (0.0.0.0 is IPv4 only; see BindAddress).
+        ServerSocket server;
         try {
-            server.setReuseAddress(true);
-            server.bind(new InetSocketAddress(InetAddress.getByName(bind), expose.port()), ConnectionGuard.ACCEPT_BACKLOG);
+            server = BindAddress.of(bind).listen(expose.port(), ConnectionGuard.ACCEPT_BACKLOG).socket();
         } catch (IOException e) {
-            server.close();
             throw new IOException("control socket '" + point.name() + "' of method " + point.methodId()
                     + " cannot listen on " + bind + ":" + expose.port() + ": " + e.getMessage(), e);
         }
@@ -262,9 +257,9 @@ public final class ControlServer implements AutoCloseable {
         ControlClient[] self = new ControlClient[1];
         ClientId id = new ClientId(point.name() + "#" + n,
                 socket.getInetAddress().getHostAddress() + ":" + socket.getPort());
-        ClientConnection connection = socket.getChannel() != null && !(socket instanceof javax.net.ssl.SSLSocket)
+        ControlConnection connection = socket.getChannel() != null && !(socket instanceof javax.net.ssl.SSLSocket)
                 ? new ChannelConnection(socket.getChannel(), ChannelReadiness.shared())
-                : ClientConnection.of(socket);
+                : ControlConnection.of(socket);
         self[0] = new ControlClient(connection, label, id, protocol, limits, budget, guard, counters, () -> {
             guard.left(self[0]);
             if (clients.remove(self[0])) {

@@ -103,6 +103,11 @@ public final class FrameReader {
         return lines.frameSinceNanos();
     }
 
+    /** The bytes of the stream taken by the frames read so far (and by what was skipped): where the next begins. */
+    public long position() {
+        return lines.position();
+    }
+
     /**
      * Reads the next frame.
      *

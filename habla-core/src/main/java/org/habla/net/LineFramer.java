@@ -9,8 +9,8 @@ import java.util.Objects;
 
 /**
  * The first stage of every HABLA socket, and the line reader of every line protocol HABLA speaks (the text-lines
- * driver, Tekkotsu's controller and emergency stop, the simulator's line servers): a bounded, blocking line
- * reader over a byte stream. It hands out one line's bytes at a time (the {@code \n}, and a {@code \r} before
+ * driver, Tekkotsu's controller and emergency stop, the simulator's servers) and of its recordings: a bounded,
+ * blocking line reader over a byte stream. It hands out one line's bytes at a time (the {@code \n}, and a {@code \r} before
  * it, removed), or its text in a given charset, and the raw block that may follow a line, from the same buffer.
  *
  * <pre>
@@ -20,7 +20,12 @@ import java.util.Objects;
  *
  * <p>A line longer than {@code maxLineBytes} is never held: its bytes are discarded up to and including the
  * next newline, then a recoverable {@code line_too_long} error names the limit, and the next call reads the
- * next line. The limit does not count the line's end: a {@code \r} before the {@code \n} is free.
+ * next line. The limit does not count the line's end: a {@code \r} before the {@code \n} is free. A protocol
+ * where only a bare {@code \n} ends a line (Tekkotsu's emergency stop: {@code stop\r} is not {@code stop}) reads
+ * through {@link #keepingCarriageReturns}, which hands a {@code \r} out as part of the line and counts it.
+ *
+ * <p>{@link #position()} says how many bytes of the stream the lines and blocks handed out so far (and the lines
+ * discarded) took, so a reader of a file knows where each record starts.
  *
  * <p>A block's memory is reserved from a {@link BlockBudget} as its bytes arrive, growing by doubling from
  * {@link #FIRST_BLOCK_BYTES}: a declared size is never allocated before the bytes are there.
@@ -39,9 +44,13 @@ public final class LineFramer {
 
     private final InputStream in;
     private final int maxLineBytes;
+    /** Whether a {@code \r} before the {@code \n} is part of the line (and of its length). */
+    private final boolean keepCarriageReturn;
     private byte[] buf = new byte[FIRST_BUFFER_BYTES];
     private int pos;
     private int end;
+    /** Bytes read from the stream so far, into the buffer or straight into a block. */
+    private long streamBytes;
     /** When the frame being read got its first byte ({@link System#nanoTime()}), or 0 between frames. */
     private volatile long frameSince;
 
@@ -50,11 +59,29 @@ public final class LineFramer {
      * the stream must go through it.
      */
     public LineFramer(InputStream in, int maxLineBytes) {
+        this(in, maxLineBytes, false);
+    }
+
+    private LineFramer(InputStream in, int maxLineBytes, boolean keepCarriageReturn) {
         this.in = Objects.requireNonNull(in, "in");
         if (maxLineBytes < 1) {
             throw new IllegalArgumentException("maxLineBytes must be at least 1, was " + maxLineBytes);
         }
         this.maxLineBytes = maxLineBytes;
+        this.keepCarriageReturn = keepCarriageReturn;
+    }
+
+    /**
+     * A framer whose lines end at a bare {@code \n} only: a {@code \r} before it stays in the line and counts
+     * towards {@code maxLineBytes}.
+     */
+    public static LineFramer keepingCarriageReturns(InputStream in, int maxLineBytes) {
+        return new LineFramer(in, maxLineBytes, true);
+    }
+
+    /** The bytes of the stream taken so far by the lines and blocks handed out, and by what was discarded. */
+    public long position() {
+        return streamBytes - (end - pos);
     }
 
     /** The longest line, in bytes without its end, that {@link #readLine} hands out. */
@@ -83,7 +110,8 @@ public final class LineFramer {
      * @throws IOException    if the stream fails
      */
     public byte[] readLine() throws IOException {
-        byte[] line = new byte[Math.min(256, maxLineBytes + 1)];
+        int endSlack = keepCarriageReturn ? 0 : 1;
+        byte[] line = new byte[Math.min(256, maxLineBytes + endSlack)];
         int length = 0;
         while (true) {
             if (pos == end && !fill()) {
@@ -99,22 +127,22 @@ public final class LineFramer {
             int newline = indexOfNewline();
             int stop = newline < 0 ? end : newline;
             int take = stop - pos;
-            // The line may carry one '\r' beyond maxLineBytes; anything more is too long.
-            if (length + take > maxLineBytes + 1) {
+            // The line may carry one '\r' beyond maxLineBytes (unless it keeps it); anything more is too long.
+            if (length + take > maxLineBytes + endSlack) {
                 pos = stop;
                 discardThroughNewline(newline >= 0);
                 throw FrameException.recoverable("line_too_long",
                         "line longer than maxLineBytes=" + maxLineBytes + " bytes; discarded");
             }
             if (length + take > line.length) {
-                line = Arrays.copyOf(line, Math.min(maxLineBytes + 1, Math.max(line.length * 2, length + take)));
+                line = Arrays.copyOf(line, Math.min(maxLineBytes + endSlack, Math.max(line.length * 2, length + take)));
             }
             System.arraycopy(buf, pos, line, length, take);
             length += take;
             pos = stop;
             if (newline >= 0) {
                 pos++;
-                if (length > 0 && line[length - 1] == '\r') {
+                if (!keepCarriageReturn && length > 0 && line[length - 1] == '\r') {
                     length--;
                 }
                 if (length > maxLineBytes) {
@@ -178,6 +206,7 @@ public final class LineFramer {
                     if (n < 0) {
                         throw new EOFException("the stream ended after " + have + " of " + count + " bytes");
                     }
+                    streamBytes += n;
                     have += n;
                 }
             }
@@ -254,6 +283,7 @@ public final class LineFramer {
             pos = end = 0;
             return false;
         }
+        streamBytes += n;
         pos = 0;
         end = n;
         return true;

@@ -167,6 +167,15 @@ final class Outbox {
 
     /** Queues a reply, waiting while {@code replyCapacity} replies are unsent; dropped once finished. */
     void putReply(EncodedFrame frame) throws InterruptedException {
+        putReply(frame, () -> { });
+    }
+
+    /**
+     * Queues a reply, then runs {@code queued} under the outbox's lock, before the writer can take the reply or a
+     * sample can be written past it: a client told it is admitted only as its hello is queued never misses a sample
+     * emitted after the hello reached it.
+     */
+    void putReply(EncodedFrame frame, Runnable queued) throws InterruptedException {
         lock.lock();
         try {
             while (replies >= replyCapacity && !finished) {
@@ -177,6 +186,7 @@ final class Outbox {
             }
             queue.add(new Entry(frame, Kind.REPLY));
             replies++;
+            queued.run();
             noteWaiting();
             changed.signalAll();
         } finally {

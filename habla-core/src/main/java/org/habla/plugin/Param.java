@@ -11,6 +11,10 @@ import java.lang.annotation.Target;
  * parameter left out of {@code params} with its {@link #defaultValue()} before the record is built.
  *
  * <p>A parameter is required when it has neither a {@link #defaultValue()} nor a {@link #defaultNote()}.
+ *
+ * <p>A number parameter may declare its range ({@link #min()}, {@link #max()}, {@link #greaterThan()}); the config
+ * loader checks it, for the value or for every number of a list or map, and names the JSON path of a value outside
+ * it. A rule that relates two parameters ({@code nearM} below {@code farM}) stays in the record's constructor.
  */
 @Retention(RetentionPolicy.RUNTIME)
 @Target({ElementType.RECORD_COMPONENT, ElementType.FIELD, ElementType.PARAMETER, ElementType.METHOD})
@@ -40,4 +44,13 @@ public @interface Param {
      * names it, so a config and the files beside it move together.
      */
     boolean file() default false;
+
+    /** The least value allowed, inclusive; none when left at minus infinity. */
+    double min() default Double.NEGATIVE_INFINITY;
+
+    /** The greatest value allowed, inclusive; none when left at plus infinity. */
+    double max() default Double.POSITIVE_INFINITY;
+
+    /** The value must be greater than this ({@code greaterThan = 0}: a positive number); none at minus infinity. */
+    double greaterThan() default Double.NEGATIVE_INFINITY;
 }

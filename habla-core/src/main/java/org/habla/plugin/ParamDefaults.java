@@ -15,10 +15,10 @@ import java.util.Optional;
 
 /**
  * The defaults a params record declares in its {@link Param#defaultValue()} annotations. The config
- * loader fills left-out keys with them ({@link #filled}) before the record is built; a record built from
- * Java code with a null takes the same value through {@link #or}, so each default is written once, in the
- * annotation. Records inside a params object (a list of channel specs, a map of colour ranges) and inside
- * a default are filled the same way.
+ * loader fills left-out keys with them ({@link #filled}) before the record is built, so a record receives its
+ * defaults when it is bound and each default is written once, in the annotation; Java code that needs a record
+ * binds one too ({@code org.habla.config.ParamsJson#defaults}). Records inside a params object (a list of channel
+ * specs, a map of colour ranges) and inside a default are filled the same way.
  */
 public final class ParamDefaults {
 
@@ -39,8 +39,8 @@ public final class ParamDefaults {
     }
 
     /**
-     * The default of one component as JSON, or empty when it has none (required, or left to the record
-     * as its {@link Param#defaultNote()} says).
+     * The default of one component as JSON, records inside it filled with their own defaults, or empty when it
+     * has none (required, or left to the record as its {@link Param#defaultNote()} says).
      *
      * @throws IllegalStateException when the annotation's default is not JSON text
      */
@@ -50,32 +50,13 @@ public final class ParamDefaults {
             return Optional.empty();
         }
         try {
-            return Optional.of(JSON.readTree(doc.defaultValue()));
+            JsonNode d = JSON.readTree(doc.defaultValue());
+            fill(d, component.getGenericType());
+            return Optional.of(d);
         } catch (JsonProcessingException e) {
             throw new IllegalStateException(type.getName() + "." + component.getName() + ": defaultValue "
                     + doc.defaultValue() + " is not JSON text; words belong in defaultNote", e);
         }
-    }
-
-    /**
-     * {@code value}, or when it is null the declared default of {@code type}'s component {@code name}, as
-     * that component's Java type. For compact constructors called from Java with nulls.
-     *
-     * @throws IllegalArgumentException when {@code value} is null and the component declares no default
-     */
-    @SuppressWarnings("unchecked")
-    public static <T> T or(Class<? extends Record> type, String name, T value) {
-        if (value != null) {
-            return value;
-        }
-        JsonNode d = DEFAULTS.get(type).get(name);
-        if (d == null) {
-            throw new IllegalArgumentException(name + " is required");
-        }
-        RecordComponent component = component(type, name);
-        JsonNode filled = d.deepCopy();
-        fill(filled, component.getGenericType());
-        return (T) JSON.convertValue(filled, JSON.constructType(component.getGenericType()));
     }
 
     /**
@@ -102,7 +83,7 @@ public final class ParamDefaults {
         if (type instanceof Class<?> c && c.isRecord() && node instanceof ObjectNode object) {
             for (RecordComponent component : c.getRecordComponents()) {
                 JsonNode value = object.get(key(component));
-                boolean absent = value == null || value.isNull() && !component.getType().isPrimitive();
+                boolean absent = value == null || value.isNull();
                 JsonNode d = absent ? DEFAULTS.get(c).get(component.getName()) : null;
                 if (d != null) {
                     JsonNode copy = d.deepCopy();
@@ -124,14 +105,5 @@ public final class ParamDefaults {
         } else if (type instanceof Class<?> c && c.isArray() && node.isArray()) {
             node.forEach(element -> fill(element, c.getComponentType()));
         }
-    }
-
-    private static RecordComponent component(Class<? extends Record> type, String name) {
-        for (RecordComponent c : type.getRecordComponents()) {
-            if (c.getName().equals(name)) {
-                return c;
-            }
-        }
-        throw new IllegalArgumentException(type.getName() + " has no parameter " + name);
     }
 }

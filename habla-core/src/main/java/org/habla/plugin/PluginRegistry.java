@@ -5,62 +5,65 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.ServiceConfigurationError;
 import java.util.ServiceLoader;
 import java.util.TreeMap;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 
 /**
  * The immutable table of method, driver and bridge types, built once from {@link ServiceLoader}.
- * Two providers with the same name are an error, never a silent override.
+ * Two providers with the same name are an error, never a silent override. A provider that cannot be loaded (a
+ * class missing from its jar, a constructor that throws, a jar built for a newer Java) is left out and reported in
+ * {@link #report()}, with the jar it came from, as is a plugin folder that gave nothing.
  */
 public final class PluginRegistry {
+
+    /** How many providers that cannot be loaded are reported before discovery gives up on the rest. */
+    static final int MAX_LOAD_FAILURES = 100;
+    private static final Logger LOG = LoggerFactory.getLogger(PluginRegistry.class);
 
     private final Map<String, MethodProvider<?>> methods;
     private final Map<String, DriverProvider<?>> drivers;
     private final Map<String, BridgeProvider<?>> bridges;
+    private final PluginReport report;
 
     private PluginRegistry(Map<String, MethodProvider<?>> methods, Map<String, DriverProvider<?>> drivers,
-            Map<String, BridgeProvider<?>> bridges) {
+            Map<String, BridgeProvider<?>> bridges, PluginReport report) {
         this.methods = Collections.unmodifiableMap(methods);
         this.drivers = Collections.unmodifiableMap(drivers);
         this.bridges = Collections.unmodifiableMap(bridges);
+        this.report = report;
     }
 
-    /** Discovers every provider visible to {@code loader}. */
+    /**
+     * Discovers every provider visible to {@code loader}; a loader made by {@link PluginJars#open} also tells
+     * which jar registered what, and why a jar registered nothing.
+     *
+     * @throws PluginException if two providers give the same type name
+     */
     public static PluginRegistry discover(ClassLoader loader) {
+        PluginJars jars = PluginJars.of(loader);
         Map<String, MethodProvider<?>> methods = new TreeMap<>();
         Map<String, DriverProvider<?>> drivers = new TreeMap<>();
         Map<String, BridgeProvider<?>> bridges = new TreeMap<>();
-        List<String> problems = new ArrayList<>();
-        try {
-            for (MethodProvider<?> p : ServiceLoader.load(MethodProvider.class, loader)) {
-                MethodProvider<?> old = methods.putIfAbsent(p.name(), p);
-                if (old != null) {
-                    problems.add("method type '" + p.name() + "' is provided twice: by "
-                            + old.getClass().getName() + " and " + p.getClass().getName());
-                }
-            }
-            for (DriverProvider<?> p : ServiceLoader.load(DriverProvider.class, loader)) {
-                DriverProvider<?> old = drivers.putIfAbsent(p.name(), p);
-                if (old != null) {
-                    problems.add("driver type '" + p.name() + "' is provided twice: by "
-                            + old.getClass().getName() + " and " + p.getClass().getName());
-                }
-            }
-            for (BridgeProvider<?> p : ServiceLoader.load(BridgeProvider.class, loader)) {
-                BridgeProvider<?> old = bridges.putIfAbsent(p.name(), p);
-                if (old != null) {
-                    problems.add("bridge type '" + p.name() + "' is provided twice: by "
-                            + old.getClass().getName() + " and " + p.getClass().getName());
-                }
-            }
-        } catch (ServiceConfigurationError e) {
-            problems.add("a plugin could not be loaded: " + e.getMessage());
+        List<String> duplicates = new ArrayList<>();
+        Discovery found = new Discovery(jars);
+        for (MethodProvider<?> p : found.load(MethodProvider.class, loader)) {
+            found.register("method", p, p::name, methods, duplicates);
         }
-        if (!problems.isEmpty()) {
-            throw new PluginException(String.join("\n", problems));
+        for (DriverProvider<?> p : found.load(DriverProvider.class, loader)) {
+            found.register("driver", p, p::name, drivers, duplicates);
         }
-        return new PluginRegistry(methods, drivers, bridges);
+        for (BridgeProvider<?> p : found.load(BridgeProvider.class, loader)) {
+            found.register("bridge", p, p::name, bridges, duplicates);
+        }
+        if (!duplicates.isEmpty()) {
+            throw new PluginException(String.join("\n", duplicates));
+        }
+        PluginReport report = found.report();
+        report.loaded().forEach(line -> LOG.debug("plugin {}", line));
+        report.problems().forEach(line -> LOG.debug("plugin problem: {}", line));
+        return new PluginRegistry(methods, drivers, bridges, report);
     }
 
     /** Discovers the providers on the class path. */
@@ -82,7 +85,12 @@ public final class PluginRegistry {
                 throw new PluginException("driver type '" + p.name() + "' is provided twice");
             }
         }
-        return new PluginRegistry(methods, drivers, Map.of());
+        return new PluginRegistry(methods, drivers, Map.of(), PluginReport.NONE);
+    }
+
+    /** Where plugins were looked for, what each jar registered, and what kept a plugin from registering. */
+    public PluginReport report() {
+        return report;
     }
 
     public Optional<MethodProvider<?>> method(String name) {

@@ -2,6 +2,7 @@ package org.habla.sample;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import com.fasterxml.jackson.databind.node.MissingNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Objects;
 import java.util.Optional;
@@ -9,8 +10,12 @@ import java.util.function.Function;
 
 /**
  * A small structured value (a pose, a distance and angle, a blob list): a JSON object, or a typed
- * {@link RecordForm} whose JSON is made the first time something asks for it. Immutable: JSON is copied in and
- * copied out, and a form is immutable itself.
+ * {@link RecordForm}. A typed record answers its accessors from the form's {@link RecordLayout} without making
+ * JSON; its JSON is made the first time an edge asks for it ({@link #jsonView()}, {@link #json()}). Immutable:
+ * JSON is copied in and copied out, and a form is immutable itself.
+ *
+ * <p>Two records are equal when their JSON is: two typed records of one form compare their forms, a typed
+ * record and a JSON one compare JSON (the typed one's is made then, which happens at an edge or in a test).
  */
 public final class RecordValue implements Payload {
 
@@ -76,13 +81,23 @@ public final class RecordValue implements Payload {
         return f;
     }
 
-    /** The field's node (read only: do not modify), or a missing node. */
+    /** The field's node (read only: do not modify), or a missing node. A typed record makes only this node. */
     public JsonNode get(String name) {
-        return fields().path(name);
+        if (form != null) {
+            Object v = form.layout().value(form, name);
+            return v == null ? MissingNode.getInstance() : RecordLayout.node(v);
+        }
+        return fields.path(name);
     }
 
     public double number(String name) {
-        JsonNode n = fields().get(name);
+        if (form != null) {
+            if (form.layout().value(form, name) instanceof Number n) {
+                return n.doubleValue();
+            }
+            throw new IllegalArgumentException("record has no number field '" + name + "'");
+        }
+        JsonNode n = fields.get(name);
         if (n == null || !n.isNumber()) {
             throw new IllegalArgumentException("record has no number field '" + name + "'");
         }
@@ -90,7 +105,13 @@ public final class RecordValue implements Payload {
     }
 
     public String text(String name) {
-        JsonNode n = fields().get(name);
+        if (form != null) {
+            if (form.layout().value(form, name) instanceof String t) {
+                return t;
+            }
+            throw new IllegalArgumentException("record has no text field '" + name + "'");
+        }
+        JsonNode n = fields.get(name);
         if (n == null || !n.isTextual()) {
             throw new IllegalArgumentException("record has no text field '" + name + "'");
         }
@@ -98,7 +119,7 @@ public final class RecordValue implements Payload {
     }
 
     public boolean has(String name) {
-        return fields().has(name);
+        return form != null ? form.layout().value(form, name) != null : fields.has(name);
     }
 
     @Override
@@ -108,12 +129,18 @@ public final class RecordValue implements Payload {
 
     @Override
     public boolean equals(Object o) {
-        return o instanceof RecordValue r && fields().equals(r.fields());
+        if (!(o instanceof RecordValue r)) {
+            return false;
+        }
+        if (form != null && r.form != null && form.getClass() == r.form.getClass()) {
+            return form.equals(r.form);
+        }
+        return fields().equals(r.fields());
     }
 
     @Override
     public int hashCode() {
-        return fields().hashCode();
+        return form != null ? form.layout().hash(form) : RecordHash.ofJson(fields);
     }
 
     @Override

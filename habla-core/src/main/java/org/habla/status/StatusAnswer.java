@@ -7,7 +7,7 @@ import java.io.OutputStream;
 import java.net.Socket;
 import java.time.Instant;
 import java.util.function.Supplier;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.net.ClientId;
 import org.habla.net.ConnectionGuard;
 import org.habla.net.Frame;

@@ -3,14 +3,13 @@ package org.habla.status;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
-import java.net.InetAddress;
-import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.Objects;
 import java.util.function.Supplier;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.config.StatusConfig;
+import org.habla.net.BindAddress;
 import org.habla.net.ConnectionGuard;
 import org.habla.security.AuditLog;
 import org.habla.security.PortAccess;
@@ -114,14 +113,11 @@ public final class StatusServer implements AutoCloseable {
         if (port == 0) {
             return;
         }
-        String bind = config.bind() == null || config.bind().isBlank() ? "127.0.0.1" : config.bind();
-        ServerSocket server = new ServerSocket();
+        String bind = bindAddress();
+        ServerSocket server;
         try {
-            server.setReuseAddress(true);
-            server.bind(new InetSocketAddress(InetAddress.getByName(bind), Math.max(port, 0)),
-                    ConnectionGuard.ACCEPT_BACKLOG);
+            server = BindAddress.of(bind).listen(Math.max(port, 0), ConnectionGuard.ACCEPT_BACKLOG).socket();
         } catch (IOException e) {
-            server.close();
             throw new IOException("status endpoint cannot listen on " + bind + ":" + port + ": " + e.getMessage(), e);
         }
         listener = server;
@@ -133,13 +129,17 @@ public final class StatusServer implements AutoCloseable {
             LOG.info("status endpoint is off (port 0)");
             return;
         }
-        String bind = config.bind() == null || config.bind().isBlank() ? "127.0.0.1" : config.bind();
+        String bind = bindAddress();
         guard.start();
         Thread a = new Thread(this::acceptLoop, "status-accept");
         a.setDaemon(true);
         acceptor = a;
         a.start();
         LOG.info("status endpoint listening on {}:{}", bind, server.getLocalPort());
+    }
+
+    private String bindAddress() {
+        return config.bind() == null || config.bind().isBlank() ? BindAddress.DEFAULT : config.bind();
     }
 
     /** Whether the endpoint is listening. */

@@ -1,14 +1,12 @@
 package org.habla.worker;
 
 import java.io.IOException;
-import java.net.InetAddress;
-import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.ExecutorService;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.graph.EngineClock;
 import org.habla.net.BlockBudget;
 import org.habla.net.ConnectionGuard;
@@ -74,12 +72,10 @@ public final class WorkerServer implements AutoCloseable {
 
     /** Binds the port and starts accepting. */
     public synchronized void start() throws IOException {
-        ServerSocket s = new ServerSocket();
-        s.setReuseAddress(true);
+        ServerSocket s;
         try {
-            s.bind(new InetSocketAddress(InetAddress.getByName(bind), requestedPort), ConnectionGuard.ACCEPT_BACKLOG);
+            s = org.habla.net.BindAddress.of(bind).listen(requestedPort, ConnectionGuard.ACCEPT_BACKLOG).socket();
         } catch (IOException e) {
-            s.close();
             throw new IOException("cannot listen on " + bind + ":" + requestedPort + ": " + e.getMessage(), e);
         }
         server = s;

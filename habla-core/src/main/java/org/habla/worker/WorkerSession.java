@@ -14,7 +14,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.locks.ReentrantLock;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.graph.EngineClock;
 import org.habla.graph.HostedMethod;
 import org.habla.net.BlockBudget;

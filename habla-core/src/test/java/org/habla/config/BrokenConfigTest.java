@@ -25,7 +25,7 @@ class BrokenConfigTest {
         unknown-root-key                  | $.methds                        | unknown key 'methds' (allowed: $schema, bridges, description, interfaces, limits, methods, safety, security, status, system)
         socket-beyond-loopback-without-auth | $.methods[0].expose.bind      | socket 'action' binds 0.0.0.0, beyond loopback, without authentication
         status-beyond-loopback-without-auth | $.status.bind                 | the status endpoint binds 0.0.0.0, beyond loopback, without authentication
-        monitor-beyond-loopback           | $.status.monitorPort            | the monitor has no authentication, so it may not listen on 0.0.0.0
+        monitor-beyond-loopback           | $.status.monitorBind            | the monitor has no authentication, so it may not listen on 0.0.0.0
         tls-socket-without-certificate    | $.methods[0].expose.tls         | a TLS socket needs security.tls with a certificate and its key
         credentials-file-missing          | $.security.credentials          | no-such.credentials.json $: no such file
         security-loopback-unknown         | $.security.loopback             | must be "open" or "authenticated", was "closed"
@@ -54,7 +54,10 @@ class BrokenConfigTest {
         layer-not-supported-by-type       | $.methods[2].layer              | type 'nearest-distance' cannot be placed in the virtual layer (it belongs in: processing)
         params-unknown-key                | $.methods[0].params.maxRange    | unknown parameter 'maxRange' (known: maxRangeM, minRangeM, use)
         params-string-for-number          | $.methods[0].params.maxRangeM   | must be a number, not a string ("5")
-        params-rejected-naming-field      | $.methods[0].params.maxRangeM   | maxRangeM must be positive, was -1.0
+        params-rejected-naming-field      | $.methods[1].params.label       | label must not be blank
+        params-not-above-declared-bound   | $.methods[0].params.maxRangeM   | must be greater than 0, was -1
+        params-below-declared-minimum     | $.methods[0].params.minRangeM   | must be at least 0, was -0.5
+        params-list-element-outside-range | $.methods[0].params.use[2]      | must be within [0, 31], was 40
         params-rejected-as-a-whole        | $.methods[0].params             | the minimum range must be below the maximum
         params-given-to-no-params-type    | $.methods[1].params.window      | unknown parameter 'window' (this type takes no parameters)
         params-primitive-missing          | $.methods[2].params.trackM      | required parameter 'trackM' is missing
@@ -65,7 +68,7 @@ class BrokenConfigTest {
         params-number-for-boolean         | $.methods[1].params.verbose     | must be a boolean (true or false), not a number (1)
         params-not-an-object              | $.methods[0].params             | must be an object, not an array
         params-float-for-integer          | $.interfaces[0].params.sonarCount | must be an integer, not a number (8.5)
-        driver-params-rejected            | $.interfaces[0].params.sonarCount | sonarCount must be in 1..32, was 40
+        driver-params-rejected            | $.interfaces[0].params.sonarCount | must be within [1, 32], was 40
         driver-cannot-be-made             | $.interfaces[0]                 | driver 'robot-sim' cannot be made: host unreachable.invalid is refused
         method-ports-cannot-be-listed     | $.methods[1]                    | type 'broken-model' cannot list its ports for these params: the model file is missing
         input-not-declared                | $.methods[0].inputs.extra       | 'extra' is not an input of type 'sonar' (inputs: ranges)
@@ -87,6 +90,7 @@ class BrokenConfigTest {
         layer-rule-sensors-to-virtual     | $.methods[1].inputs.in          | 'sonar.ranges' breaks the layer rule: a method exchanges data only with methods of its own layer or a neighbouring layer
         exposed-without-output-or-control | $.methods[3].expose             | an exposed method needs an output or a 'control' input, and 'sink' has neither
         host-without-port                 | $.methods[1].host               | 'worker1' names no port: write host:port
+        worker-beyond-loopback-without-secret | $.methods[0].host           | worker 10.0.0.21:7600 is beyond loopback, where a worker requires the shared secret
         fallback-without-host             | $.methods[1].fallback           | a fallback needs a "host": it says what to do while that worker is lost
         fallback-unknown                  | $.methods[1].fallback           | 'remote' is not a fallback (write none or local)
         thread-unknown                    | $.methods[1].thread             | 'shared' is not a thread choice (write auto or own)

@@ -13,6 +13,8 @@ import java.util.Optional;
 import java.util.OptionalInt;
 import org.habla.driver.InterfaceAddress;
 import org.habla.method.Layer;
+import org.habla.net.Expose;
+import org.habla.net.Limits;
 import org.habla.plugin.NoParams;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -54,7 +56,7 @@ class ConfigLoaderTest {
         MethodConfig action = config.method("action").orElseThrow();
         assertThat(action.inputs()).containsEntry("action", new Source.Control());
         assertThat(action.expose()).contains(new Expose("action", "127.0.0.1", 7004));
-        assertThat(action.host()).contains("10.0.0.5:7600");
+        assertThat(action.host()).contains("127.0.0.1:7600");
         MethodConfig wheels = config.method("wheels").orElseThrow();
         assertThat(wheels.inputs()).containsEntry("velocity", new Source.MethodOutput("safety", "velocity"));
         assertThat(wheels.commands()).containsEntry("motion", new ChannelRef("robot", "motion"));

@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
+import org.habla.net.Limits;
 import org.habla.plugin.PluginRegistry;
 import org.junit.jupiter.api.Test;
 
@@ -19,7 +20,7 @@ class ConfigSchemaTest {
 
     @Test
     void everyKeyTheLoaderAcceptsIsInTheSchemaAndViceVersa() {
-        assertThat(ConfigLoader.KEYS_BY_OBJECT).hasSize(11);
+        assertThat(ConfigLoader.KEYS_BY_OBJECT).hasSize(12);
         ConfigLoader.KEYS_BY_OBJECT.forEach((where, keys) -> {
             JsonNode object = at(where);
             assertThat(names(object.get("properties"))).as("keys of %s", where).isEqualTo(new TreeSet<>(keys));
@@ -31,8 +32,8 @@ class ConfigSchemaTest {
     void everyFixedObjectOfTheSchemaIsOneTheLoaderKnows() {
         List<String> closed = new ArrayList<>();
         collectClosedObjects(schema, "", closed);
-        // the 11 fixed objects, plus one params object per method, driver and bridge type
-        assertThat(closed).hasSize(11 + registry.methods().size() + registry.drivers().size()
+        // the 12 fixed objects, plus one params object per method, driver and bridge type
+        assertThat(closed).hasSize(12 + registry.methods().size() + registry.drivers().size()
                 + registry.bridges().size());
     }
 

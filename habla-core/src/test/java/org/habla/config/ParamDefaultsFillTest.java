@@ -8,7 +8,6 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import java.util.List;
 import java.util.Objects;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 import org.junit.jupiter.api.Test;
 
 /**
@@ -91,16 +90,18 @@ class ParamDefaultsFillTest {
     }
 
     @Test
-    void javaCodeThatPassesANullGetsTheSameDefault() {
-        assertThat(ParamDefaults.or(Params.class, "periodMs", (Integer) null)).isEqualTo(1000);
-        assertThat(ParamDefaults.or(Params.class, "ports", (List<Port>) null)).containsExactly(new Port("a", 8));
-        assertThat(ParamDefaults.or(Params.class, "periodMs", 7)).isEqualTo(7);
+    void javaCodeBindsTheRecordAndGetsTheSameDefaults() {
+        Params p = ParamsJson.of(Params.class, "{\"gain\": 2}");
+
+        assertThat(p.periodMs()).isEqualTo(1000);
+        assertThat(p.ports()).containsExactly(new Port("a", 8));
     }
 
     @Test
-    void javaCodeThatPassesANullForAParameterWithoutDefaultIsRefused() {
-        assertThatThrownBy(() -> ParamDefaults.or(Params.class, "reachM", (Double) null))
-                .isInstanceOf(IllegalArgumentException.class).hasMessage("reachM is required");
+    void javaCodeThatLeavesOutARequiredParameterIsRefusedWithItsPath() {
+        assertThatThrownBy(() -> ParamsJson.defaults(Params.class))
+                .isInstanceOf(IllegalArgumentException.class)
+                .hasMessageContaining("$.params.gain: required parameter 'gain' is missing");
     }
 
     private static Params bind(String params) throws Exception {

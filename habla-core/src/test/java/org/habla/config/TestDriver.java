@@ -7,20 +7,14 @@ import org.habla.driver.Driver;
 import org.habla.driver.InterfaceAddress;
 import org.habla.plugin.DriverProvider;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 import org.habla.sample.PayloadKind;
 
 /** A small robot driver for config tests: sonar, battery and keyboard readings; motion and sonar-power commands. */
 record TestDriver(InterfaceAddress address, Params params) implements Driver {
 
     /** The driver's params. */
-    record Params(@Param(value = "Number of sonar transducers", defaultValue = "16") Integer sonarCount) {
-        Params {
-            sonarCount = ParamDefaults.or(Params.class, "sonarCount", sonarCount);
-            if (sonarCount < 1 || sonarCount > 32) {
-                throw new IllegalArgumentException("sonarCount must be in 1..32, was " + sonarCount);
-            }
-        }
+    record Params(
+            @Param(value = "Number of sonar transducers", defaultValue = "16", min = 1, max = 32) int sonarCount) {
     }
 
     @Override

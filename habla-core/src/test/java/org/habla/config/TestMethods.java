@@ -16,7 +16,6 @@ import org.habla.method.VirtualMethod;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.NoParams;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 import org.habla.sample.NumberValue;
 import org.habla.sample.Payload;
 import org.habla.sample.RecordValue;
@@ -32,18 +31,15 @@ final class TestMethods {
     private TestMethods() {
     }
 
-    /** The params of {@code sonar}. */
+    /** The params of {@code sonar}: declared ranges, one on each element of a list, and a rule across two. */
     record SonarParams(
-            @Param(value = "Ranges beyond this are reported as this", unit = "m", defaultValue = "5.0") Double maxRangeM,
-            @Param(value = "Ranges below this are ignored", unit = "m", defaultValue = "0.1") Double minRangeM,
-            @Param(value = "Which transducers to use; empty means all", defaultValue = "[]") List<Integer> use) {
+            @Param(value = "Ranges beyond this are reported as this", unit = "m", defaultValue = "5.0", greaterThan = 0)
+            double maxRangeM,
+            @Param(value = "Ranges below this are ignored", unit = "m", defaultValue = "0.1", min = 0) double minRangeM,
+            @Param(value = "Which transducers to use; empty means all", defaultValue = "[]", min = 0, max = 31)
+            List<Integer> use) {
         SonarParams {
-            maxRangeM = ParamDefaults.or(SonarParams.class, "maxRangeM", maxRangeM);
-            minRangeM = ParamDefaults.or(SonarParams.class, "minRangeM", minRangeM);
-            use = List.copyOf(ParamDefaults.or(SonarParams.class, "use", use));
-            if (!(maxRangeM > 0)) {
-                throw new IllegalArgumentException("maxRangeM must be positive, was " + maxRangeM);
-            }
+            use = List.copyOf(use);
             if (minRangeM >= maxRangeM) {
                 throw new IllegalArgumentException("the minimum range must be below the maximum");
             }
@@ -55,19 +51,16 @@ final class TestMethods {
             @Param(value = "Distance between the wheels", unit = "m") double trackM,
             @Param(value = "How a stop is made", defaultValue = "\"SOFT\"") Stop stop) {
         enum Stop { SOFT, HARD }
-
-        WheelsParams {
-            stop = ParamDefaults.or(WheelsParams.class, "stop", stop);
-        }
     }
 
-    /** The params of {@code step}: a text and a flag. */
+    /** The params of {@code step}: a text its constructor checks, and a flag. */
     record StepParams(
             @Param(value = "Label of the step", defaultValue = "\"step\"") String label,
-            @Param(value = "Whether to log each step", defaultValue = "false") Boolean verbose) {
+            @Param(value = "Whether to log each step", defaultValue = "false") boolean verbose) {
         StepParams {
-            label = ParamDefaults.or(StepParams.class, "label", label);
-            verbose = ParamDefaults.or(StepParams.class, "verbose", verbose);
+            if (label.isBlank()) {
+                throw new IllegalArgumentException("label must not be blank");
+            }
         }
     }
 
@@ -97,7 +90,8 @@ final class TestMethods {
 
     static final class Safety extends ProcessingMethod {
         static final InputPort<VectorValue> VELOCITY_IN = InputPort.of("velocity", VectorValue.class);
-        static final InputPort<NumberValue> NEAREST = InputPort.optional("nearest", NumberValue.class, Delivery.latest());
+        static final InputPort<NumberValue> NEAREST = InputPort.optional("nearest", NumberValue.class,
+                Delivery.latest());
         static final OutputPort<VectorValue> VELOCITY_OUT = OutputPort.of("velocity", VectorValue.class);
         static final Ports PORTS = Ports.of(VELOCITY_IN, NEAREST, VELOCITY_OUT);
         final Output<VectorValue> out = output(VELOCITY_OUT);

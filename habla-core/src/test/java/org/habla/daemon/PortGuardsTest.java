@@ -10,7 +10,7 @@ import org.junit.jupiter.api.Test;
 class PortGuardsTest {
 
     private static final String CONFIG = """
-            {"system": "t", "status": {"bind": "0.0.0.0", "port": 7099, "monitorPort": 7300}, %s
+            {"system": "t", "status": {"bind": "0.0.0.0", "port": 7099, "monitorPort": 7300, "monitorBind": "0.0.0.0"}, %s
              "interfaces": [{"id": "robot", "driver": "robot-sim", "address": "127.0.0.1:8101"}],
              "methods": [{"id": "action", "type": "action", "layer": "virtual", "inputs": {"action": "control"},
                           "expose": {"port": 7004, "bind": "0.0.0.0"}},

@@ -25,7 +25,9 @@ import org.habla.sample.PayloadKind;
 /**
  * A tiny text protocol for engine tests: the robot sends {@code "<channel> <number>\n"}, HABLA sends
  * {@code "cmd <channel> <number>\n"}, {@code "stop\n"} and {@code "ping\n"}; the handshake is
- * {@code "hello\n"} → {@code "ready\n"}.
+ * {@code "hello\n"} → {@code "ready\n"}. The robot tells of a device behind a channel with
+ * {@code "device <name> online|offline <channel>\n"}: a reading channel of an offline device is unavailable, and a
+ * command to a command channel of one is refused.
  */
 final class LineDriver implements Driver {
 
@@ -67,6 +69,10 @@ final class LineDriver implements Driver {
     }
 
     static final class Session implements LinkSession {
+
+        /** The offline device behind each command channel. */
+        private final java.util.Map<String, String> offline = new java.util.concurrent.ConcurrentHashMap<>();
+
         @Override
         public void handshake(InputStream in, OutputStream out, ReadingSink sink) throws IOException {
             out.write("hello\n".getBytes(StandardCharsets.UTF_8));
@@ -80,6 +86,20 @@ final class LineDriver implements Driver {
         @Override
         public void readNext(InputStream in, ReadingSink sink) throws IOException {
             String[] parts = readLine(in).split(" ");
+            if (parts[0].equals("device") && parts.length == 4) {
+                boolean online = parts[2].equals("online");
+                sink.device(parts[1], online, "the robot says " + parts[2]);
+                if (parts[3].equals("motor")) {
+                    if (online) {
+                        offline.remove(parts[3]);
+                    } else {
+                        offline.put(parts[3], parts[1]);
+                    }
+                } else {
+                    sink.availability(parts[3], online, parts[1] + " is " + parts[2]);
+                }
+                return;
+            }
             try {
                 sink.reading(parts[0], new NumberValue(Double.parseDouble(parts[1])));
             } catch (RuntimeException e) {
@@ -89,6 +109,10 @@ final class LineDriver implements Driver {
 
         @Override
         public void write(String channel, Payload command, OutputStream out) throws IOException {
+            String device = offline.get(channel);
+            if (device != null) {
+                throw new IllegalArgumentException("device " + device + " is offline");
+            }
             out.write(("cmd " + channel + " " + ((NumberValue) command).value() + "\n").getBytes(StandardCharsets.UTF_8));
         }
 

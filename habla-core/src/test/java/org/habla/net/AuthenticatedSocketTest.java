@@ -12,8 +12,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
-import org.habla.config.Expose;
-import org.habla.config.Limits;
 import org.habla.sample.NumberValue;
 import org.habla.security.AuditLog;
 import org.habla.security.Credentials;
@@ -98,6 +96,36 @@ class AuthenticatedSocketTest {
         assertThat(audit()).anySatisfy(e -> assertThat(e.toString())
                 .contains("\"client\":\"anonymous\"", "\"action\":\"write\"", "\"accepted\":false", "auth_required"));
     }
+
+    @Test
+    void nothingOvertakesTheHelloThatAnswersTheAuthLine() throws Exception {
+        serve();
+        java.util.concurrent.atomic.AtomicBoolean streaming = new java.util.concurrent.atomic.AtomicBoolean(true);
+        Thread emitter = Thread.ofPlatform().daemon().start(() -> {
+            for (int i = 0; streaming.get(); i++) {
+                point.emit("distance", new NumberValue(i));
+                if (i % 50 == 0) {
+                    point.stale(i % 100 == 0, "a link comes and goes"); // a stale line to every client
+                }
+            }
+        });
+        try {
+            for (int n = 0; n < AUTH_ROUNDS; n++) {
+                try (TestClient c = connect()) {
+                    c.send("{\"op\":\"auth\",\"client\":\"viewer\",\"token\":\"" + VIEWER_TOKEN + "\"}");
+                    Frame first = c.next();
+                    assertThat(first.type()).as("round %d: the first line after the auth line", n).isEqualTo("hello");
+                    assertThat(first.header().path("client").asText()).isEqualTo("viewer");
+                }
+            }
+        } finally {
+            streaming.set(false);
+            emitter.join(5_000);
+        }
+    }
+
+    /** Authentications raced against a stream of samples and stale lines. */
+    private static final int AUTH_ROUNDS = 300;
 
     @Test
     void aReadClientReadsButCannotWrite() throws Exception {

@@ -8,8 +8,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
-import org.habla.config.Expose;
-import org.habla.config.Limits;
 import org.habla.sample.TextValue;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -149,6 +147,50 @@ class ControlLeaseTest {
         }
         assertThat(told.path("holder").path("connection").asText()).isEqualTo("tracker#2");
         assertThat(told.path("why").asText()).contains("tracker#1", "was silent for");
+    }
+
+    @Test
+    void aClientWithAHoldOfItsOwnLosesControlAfterItEvenOnASocketWhoseControlNeverLapses() throws Exception {
+        long[] nowMicros = {1_000_000};
+        List<Frame> told = new ArrayList<>();
+        int[] stops = {0};
+        ControlLease lease = new ControlLease("action", 0, () -> nowMicros[0], () -> stops[0]++, told::add);
+        ClientId bridgeId = new ClientId("mqtt-bridge", "127.0.0.1:1883");
+        ControlLease.Client bridge = new ControlLease.Client() {
+            @Override
+            public ClientId id() {
+                return bridgeId;
+            }
+
+            @Override
+            public long holdMillis() {
+                return 500;
+            }
+        };
+        ClientId socketId = new ClientId("action#1", "127.0.0.1:50000");
+        ControlLease.Client socketClient = () -> socketId;
+        lease.write(bridge, () -> { });
+        nowMicros[0] += 400_000;
+        try {
+            lease.write(socketClient, () -> { });
+            throw new AssertionError("the socket client wrote while the bridge held control");
+        } catch (ControlPoint.Rejected e) {
+            assertThat(e.code()).isEqualTo("busy");
+        }
+        assertThat(lease.status().path("holder").path("connection").asText()).isEqualTo("mqtt-bridge");
+        nowMicros[0] += 200_000;
+        assertThat(lease.status().path("holder").isNull()).as("a lapsed hold shows nobody").isTrue();
+        lease.write(socketClient, () -> { });
+        assertThat(told.getLast().header().path("holder").path("connection").asText()).isEqualTo("action#1");
+        // The socket client has no hold of its own: on this socket it keeps control however long it is silent.
+        nowMicros[0] += 3_600_000_000L;
+        try {
+            lease.write(bridge, () -> { });
+            throw new AssertionError("the bridge wrote while the socket client held control");
+        } catch (ControlPoint.Rejected e) {
+            assertThat(e.code()).isEqualTo("busy");
+        }
+        assertThat(stops[0]).isZero();
     }
 
     @Test

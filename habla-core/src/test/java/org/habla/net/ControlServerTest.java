@@ -12,8 +12,6 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
-import org.habla.config.Expose;
-import org.habla.config.Limits;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.AudioFormat;
 import org.habla.sample.ImageFrame;

@@ -13,8 +13,6 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
-import org.habla.config.Expose;
-import org.habla.config.Limits;
 import org.habla.sample.TextValue;
 import org.habla.security.AuditEntry;
 import org.habla.security.AuditLog;

@@ -129,4 +129,43 @@ class LineFramerTest {
         assertThat(f.readText(ISO_8859_1)).isEqualTo("café");
         assertThat(f.readText(ISO_8859_1)).isNull();
     }
+
+    @Test
+    void aFramerKeepingCarriageReturnsHandsThemOutAndCountsThemInTheLimit() throws Exception {
+        LineFramer f = LineFramer.keepingCarriageReturns(
+                new ByteArrayInputStream("stop\r\nstop\nhalt\r\n".getBytes(UTF_8)), 4);
+        assertThatThrownBy(f::readLine).isInstanceOfSatisfying(FrameException.class, e -> {
+            assertThat(e.code()).isEqualTo("line_too_long");
+            assertThat(e.fatal()).isFalse();
+        });
+        assertThat(line(f)).isEqualTo("stop");
+        assertThatThrownBy(f::readLine).hasFieldOrPropertyWithValue("code", "line_too_long");
+
+        LineFramer wide = LineFramer.keepingCarriageReturns(
+                new TrickleInputStream("stop\r\nstop\n".getBytes(UTF_8)), 5);
+        assertThat(line(wide)).isEqualTo("stop\r");
+        assertThat(line(wide)).isEqualTo("stop");
+        assertThat(line(wide)).isNull();
+    }
+
+    @Test
+    void thePositionCountsTheBytesOfEveryLineBlockAndSkippedLineHandedOut() throws Exception {
+        byte[] bytes = ("one\r\n" + "x".repeat(40) + "\nhead\nBODY" + "two\n").getBytes(UTF_8);
+        // Read ahead into the framer's buffer at once, and one byte per read (a block then comes straight in).
+        positionsOf(new LineFramer(new ByteArrayInputStream(bytes), 8));
+        positionsOf(new LineFramer(new TrickleInputStream(bytes), 8));
+    }
+
+    private static void positionsOf(LineFramer f) throws Exception {
+        assertThat(f.position()).isZero();
+        assertThat(line(f)).isEqualTo("one");
+        assertThat(f.position()).isEqualTo(5);
+        assertThatThrownBy(f::readLine).hasFieldOrPropertyWithValue("code", "line_too_long");
+        assertThat(f.position()).isEqualTo(46);
+        assertThat(line(f)).isEqualTo("head");
+        assertThat(f.readBytes(4)).hasSize(4);
+        assertThat(f.position()).isEqualTo(55);
+        assertThat(line(f)).isEqualTo("two");
+        assertThat(f.position()).isEqualTo(59);
+    }
 }

@@ -11,14 +11,13 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
-import org.habla.config.Expose;
-import org.habla.config.Limits;
 import org.habla.security.AuditLog;
 import org.habla.security.Credentials;
 import org.habla.security.PortAccess;
 import org.habla.security.PortSecurity;
 import org.habla.security.Role;
 import org.habla.security.Tls;
+import org.habla.testing.LabCertificate;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
@@ -33,7 +32,7 @@ import org.junit.jupiter.api.io.TempDir;
 @Timeout(120)
 class TlsSocketTest {
 
-    private static final Path CLIENT = Paths.get("..", "examples", "control-python").toAbsolutePath().normalize();
+    private static final Path CLIENT = Paths.get("..", "clients", "python", "src").toAbsolutePath().normalize();
     private static final String TOKEN = "mdb-token-0123456789abcdef";
 
     @TempDir
@@ -45,15 +44,9 @@ class TlsSocketTest {
 
     @BeforeAll
     static void makeALabCertificate() throws Exception {
-        certificate = dir.resolve("lab.crt");
-        key = dir.resolve("lab.key");
-        Process p = new ProcessBuilder("openssl", "req", "-x509", "-newkey", "ec", "-pkeyopt",
-                "ec_paramgen_curve:prime256v1", "-nodes", "-keyout", key.toString(), "-out", certificate.toString(),
-                "-days", "2", "-subj", "/CN=localhost", "-addext", "subjectAltName=IP:127.0.0.1,DNS:localhost")
-                .redirectErrorStream(true).start();
-        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        assertThat(p.waitFor(60, TimeUnit.SECONDS)).isTrue();
-        assertThat(p.exitValue()).as("openssl: %s", out).isZero();
+        LabCertificate lab = LabCertificate.make(dir, "lab");
+        certificate = lab.certificate();
+        key = lab.key();
     }
 
     @AfterEach
@@ -81,11 +74,11 @@ class TlsSocketTest {
         point.emit("distance", new org.habla.sample.NumberValue(1.25));
         String script = """
                 import json, sys
-                from habla_client import ControlSocket
-                with ControlSocket("127.0.0.1", int(sys.argv[1]), client="mdb", token=sys.argv[2], tls=sys.argv[3]) as s:
-                    print(s._sock.version(), s.hello["socket"], s.hello["client"])
+                import habla
+                with habla.connect("127.0.0.1", int(sys.argv[1]), client="mdb", token=sys.argv[2], tls=sys.argv[3]) as s:
+                    print(s._sock.version(), s.hello.socket, s.hello.client)
                     s.send({"op": "latest"})
-                    print(json.dumps(s.next_sample(timeout=10)))
+                    print(json.dumps(s.next_sample(timeout=10).line))
                 """;
         ProcessBuilder pb = new ProcessBuilder("python3", "-c", script, "" + server.port(), TOKEN,
                 certificate.toString()).directory(CLIENT.toFile()).redirectErrorStream(true);
@@ -117,28 +110,5 @@ class TlsSocketTest {
             Thread.sleep(5);
         }
         assertThat(server.stats().path("plainClientsRefused").asLong()).isEqualTo(2);
-    }
-
-    @Test
-    void theStatusEndpointOverTlsAnswersHablaStatusWithTheLabCertificateAndTellsAPlainClient() throws Exception {
-        Credentials credentials = Credentials.of(Map.of("mdb", Map.entry(TOKEN, Map.of("@status", Role.READ))), null);
-        try (var status = new org.habla.status.StatusServer(new org.habla.config.StatusConfig("127.0.0.1", 7099),
-                Limits.DEFAULTS, () -> com.fasterxml.jackson.databind.node.JsonNodeFactory.instance.objectNode()
-                        .put("system", "over-tls"), PortAccess.authenticated("@status", credentials),
-                Tls.server(certificate, key))) {
-            status.startOnAnyPort();
-            Path token = Files.writeString(dir.resolve("mdb.token"), TOKEN + "\n");
-            java.io.StringWriter out = new java.io.StringWriter();
-            java.io.StringWriter err = new java.io.StringWriter();
-            int code = new picocli.CommandLine(new org.habla.cli.StatusCommand())
-                    .setOut(new java.io.PrintWriter(out)).setErr(new java.io.PrintWriter(err))
-                    .execute("--port", "" + status.port(), "--json", "--client", "mdb", "--token-file",
-                            token.toString(), "--tls-trust", certificate.toString());
-            assertThat(code).as(err.toString()).isZero();
-            assertThat(out.toString()).contains("\"system\" : \"over-tls\"");
-            try (TestClient plain = new TestClient(status.port())) {
-                assertThat(plain.next().header().path("code").asText()).isEqualTo("tls_required");
-            }
-        }
     }
 }

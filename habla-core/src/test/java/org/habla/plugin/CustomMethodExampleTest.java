@@ -3,19 +3,11 @@ package org.habla.plugin;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.IOException;
-import java.io.OutputStream;
 import java.net.URL;
 import java.net.URLClassLoader;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.Paths;
-import java.util.ArrayList;
-import java.util.List;
-import java.util.jar.JarEntry;
-import java.util.jar.JarOutputStream;
-import java.util.stream.Stream;
-import javax.tools.JavaCompiler;
-import javax.tools.ToolProvider;
+import org.habla.config.ParamsJson;
 import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.Method;
@@ -31,8 +23,6 @@ import org.junit.jupiter.api.io.TempDir;
  */
 class CustomMethodExampleTest {
 
-    private static final Path EXAMPLE = Paths.get("..", "examples", "custom-method").toAbsolutePath().normalize();
-
     @Test
     void theExamplePluginBuildsLoadsByNameAndRuns(@TempDir Path tmp) throws Exception {
         Path jar = buildExampleJar(tmp);
@@ -43,8 +33,7 @@ class CustomMethodExampleTest {
             @SuppressWarnings("unchecked")
             MethodProvider<Record> provider = (MethodProvider<Record>) registry.method("threshold").orElseThrow();
             assertThat(provider.layers()).containsExactly(Layer.PROCESSING);
-            Record params = provider.paramsType().getDeclaredConstructor(Double.class, Double.class)
-                    .newInstance(null, null);
+            Record params = ParamsJson.defaults(provider.paramsType());
             assertThat(provider.ports(Layer.PROCESSING, params).inputs()).extracting(InputPort::name)
                     .containsExactly("nearest");
             Method m = MethodProvider.make(provider, Layer.PROCESSING, params);
@@ -57,35 +46,8 @@ class CustomMethodExampleTest {
         }
     }
 
-    /** Compiles the example against the test class path and jars it with its resources. */
+    /** The example built as its author would, in a plugins folder. */
     static Path buildExampleJar(Path tmp) throws IOException {
-        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
-        assertThat(javac).as("a JDK compiler").isNotNull();
-        Path classes = Files.createDirectories(tmp.resolve("classes"));
-        List<String> args = new ArrayList<>(List.of("-d", classes.toString(), "--release", "21",
-                "-cp", System.getProperty("java.class.path")));
-        try (Stream<Path> files = Files.walk(EXAMPLE.resolve("src/main/java"))) {
-            files.filter(p -> p.toString().endsWith(".java")).forEach(p -> args.add(p.toString()));
-        }
-        int rc = javac.run(null, null, null, args.toArray(String[]::new));
-        assertThat(rc).as("javac exit code").isZero();
-        Path jar = Files.createDirectories(tmp.resolve("plugins")).resolve("threshold-method.jar");
-        try (JarOutputStream out = new JarOutputStream(Files.newOutputStream(jar))) {
-            add(out, classes);
-            add(out, EXAMPLE.resolve("src/main/resources"));
-        }
-        return jar;
-    }
-
-    private static void add(JarOutputStream out, Path base) throws IOException {
-        try (Stream<Path> files = Files.walk(base)) {
-            for (Path p : files.filter(Files::isRegularFile).sorted().toList()) {
-                out.putNextEntry(new JarEntry(base.relativize(p).toString().replace('\\', '/')));
-                try (var in = Files.newInputStream(p)) {
-                    in.transferTo((OutputStream) out);
-                }
-                out.closeEntry();
-            }
-        }
+        return ExamplePlugin.jar(tmp, Files.createDirectories(tmp.resolve("plugins")).resolve("threshold-method.jar"));
     }
 }

@@ -21,21 +21,40 @@ import org.junit.jupiter.api.Test;
 class RecordValueTest {
 
     /** A typed record that counts how often its JSON is made. */
-    @RecordForm.Fields({"xM", "note?"})
     record Point(double xM, String note, AtomicInteger madeJson) implements RecordForm {
+        static final RecordLayout<Point> LAYOUT = RecordLayout.of(Point.class)
+                .number("xM", Point::xM).unit("m").frame("robot frame: x forward").doc("how far ahead")
+                .text("note", Point::note).optional().doc("what is there")
+                .build();
+
+        @Override
+        public RecordLayout<Point> layout() {
+            return LAYOUT;
+        }
+
         @Override
         public ObjectNode toJson() {
             madeJson.incrementAndGet();
-            ObjectNode o = JsonNodeFactory.instance.objectNode().put("xM", xM);
-            return note == null ? o : o.put("note", note);
+            return LAYOUT.json(this);
+        }
+
+        @Override
+        public boolean equals(Object o) {
+            return o instanceof Point p && Double.compare(p.xM, xM) == 0 && java.util.Objects.equals(p.note, note);
+        }
+
+        @Override
+        public int hashCode() {
+            return java.util.Objects.hash(xM, note);
         }
     }
 
-    @RecordForm.Fields({"tiltRad"})
     record Tilt(double tiltRad) implements RecordForm {
+        static final RecordLayout<Tilt> LAYOUT = RecordLayout.of(Tilt.class).number("tiltRad", Tilt::tiltRad).build();
+
         @Override
-        public ObjectNode toJson() {
-            return JsonNodeFactory.instance.objectNode().put("tiltRad", tiltRad);
+        public RecordLayout<Tilt> layout() {
+            return LAYOUT;
         }
     }
 
@@ -51,6 +70,13 @@ class RecordValueTest {
         assertThat(made).hasValue(0);
 
         assertThat(r.number("xM")).isEqualTo(1.5);
+        assertThat(r.get("xM").doubleValue()).isEqualTo(1.5);
+        assertThat(r.has("note")).isFalse();
+        assertThat(r.get("note").isMissingNode()).isTrue();
+        assertThat(r).isEqualTo(RecordValue.of(new Point(1.5, null, made)));
+        assertThat(r.hashCode()).isEqualTo(RecordValue.of(new Point(1.5, null, made)).hashCode());
+        assertThat(made).as("accessors, equals and hashCode read the form, not its JSON").hasValue(0);
+
         assertThat(r.json().toString()).isEqualTo("{\"xM\":1.5}");
         assertThat(r.jsonView().toString()).isEqualTo("{\"xM\":1.5}");
         assertThat(made).as("the JSON is made once").hasValue(1);
@@ -86,25 +112,32 @@ class RecordValueTest {
     }
 
     @Test
-    void aShapeNamingAFormListsItsFieldsWithoutTheOptionalMark() {
-        Shape s = Shape.record("a point", Point.class);
+    void aTypedRecordAndTheSameRecordBuiltAsJsonAreEqualAndHashAlike() {
+        RecordValue typed = RecordValue.of(new Point(2.0, "door", new AtomicInteger()));
+        RecordValue json = RecordValue.builder().put("xM", 2.0).put("note", "door").build();
+        assertThat(typed).isEqualTo(json).hasSameHashCodeAs(json);
+        assertThat(json).isEqualTo(typed);
+        assertThat(typed).isNotEqualTo(RecordValue.builder().put("xM", 2.0).build());
+    }
+
+    @Test
+    void aShapeNamingALayoutListsItsFieldsWithUnitFrameAndMeaning() {
+        Shape s = Shape.record("a point", Point.LAYOUT);
         assertThat(s.fields()).containsExactly("xM", "note");
         assertThat(s.form()).isEqualTo(Point.class);
         assertThat(s.kind()).isEqualTo(PayloadKind.RECORD);
-        assertThatThrownBy(() -> Shape.record("no fields", Unnamed.class)).hasMessageContaining("@RecordForm.Fields");
-    }
-
-    record Unnamed() implements RecordForm {
-        @Override
-        public ObjectNode toJson() {
-            return JsonNodeFactory.instance.objectNode();
-        }
+        assertThat(s.recordFields()).extracting(Object::toString).containsExactly(
+                "xM (number, m; robot frame: x forward): how far ahead",
+                "note (text, optional): what is there");
+        assertThatThrownBy(() -> RecordLayout.of(Tilt.class).build()).hasMessageContaining("declares no fields");
+        assertThatThrownBy(() -> RecordLayout.of(Tilt.class).number("a", t -> 1).number("a", t -> 2).build())
+                .hasMessageContaining("declares field a twice");
     }
 
     /** Emits what it is given, as a typed record of whatever form the sample holds, on a {@code Point} port. */
     static final class PointSource extends ProcessingMethod {
         private final Output<RecordValue> out = output(OutputPort.of("out", RecordValue.class,
-                Shape.record("points", Point.class)));
+                Shape.record("points", Point.LAYOUT)));
 
         PointSource() {
             input(InputPort.of("in", RecordValue.class, Delivery.queue(4)), (value, sample) -> emit(out, value));
@@ -119,8 +152,9 @@ class RecordValueTest {
         assertThat(h.values("out")).hasSize(2);
         assertThat(h.state()).isEqualTo(MethodState.RUNNING);
 
-        h.push("in", RecordValue.of(new Tilt(0.1)));
+        h.expectFailure().push("in", RecordValue.of(new Tilt(0.1)));
         assertThat(h.values("out")).hasSize(2);
         assertThat(h.state()).isEqualTo(MethodState.FAILED);
+        assertThat(h.failure()).contains("carries Point records, not Tilt");
     }
 }

@@ -13,7 +13,7 @@ import java.io.OutputStream;
 import java.net.Socket;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.config.StatusConfig;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;

@@ -88,6 +88,16 @@ public final class DaemonProcess implements AutoCloseable {
         return ports;
     }
 
+    /** Whether ::1 can be bound here (a container may have IPv6 off). */
+    public static boolean ipv6Loopback() {
+        try (ServerSocket s = new ServerSocket()) {
+            s.bind(new InetSocketAddress(java.net.InetAddress.getByName("::1"), 0));
+            return true;
+        } catch (IOException e) {
+            return false;
+        }
+    }
+
     public boolean alive() {
         return process.isAlive();
     }

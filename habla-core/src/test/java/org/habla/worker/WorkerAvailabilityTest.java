@@ -19,7 +19,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.BooleanSupplier;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.graph.EngineClock;
 import org.habla.net.Frame;
 import org.habla.net.FrameReader;

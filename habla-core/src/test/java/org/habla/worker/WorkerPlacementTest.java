@@ -20,10 +20,10 @@ import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import java.util.function.BooleanSupplier;
 import java.util.zip.CRC32;
-import org.habla.config.Expose;
+import org.habla.net.Expose;
 import org.habla.config.Fallback;
 import org.habla.config.HablaConfig;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.config.MethodConfig;
 import org.habla.config.Safety;
 import org.habla.config.Source;
@@ -350,6 +350,43 @@ class WorkerPlacementTest {
     }
 
     @Test
+    void theDaemonRefusesToStartWhenAWorkerAtStartDoesNotTrustItsSecret() throws Exception {
+        WorkerServer worker = worker(WorkerTestMethods.all(), 0, org.habla.security.WorkerSecret.of(SECRET));
+        String host = "127.0.0.1:" + worker.port();
+        HablaConfig wrong = secured("not-the-lab-secret-0123", numbersOnFreePorts(host, Fallback.NONE));
+        assertThatThrownBy(() -> Daemon.start(wrong, WorkerTestMethods.all(), EngineClock.system()))
+                .isInstanceOf(PlacementRefusedException.class)
+                .hasMessageContaining("method 'p' is placed on worker " + host)
+                .hasMessageContaining("does not trust this daemon");
+
+        try (Daemon right = Daemon.start(secured(SECRET, numbersOnFreePorts(host, Fallback.NONE)),
+                WorkerTestMethods.all(), EngineClock.system())) {
+            await(() -> right.status().path("methods").findValues("placement").stream()
+                    .anyMatch(p -> p.path("up").asBoolean()), "the placement of a daemon with the secret comes up");
+        }
+    }
+
+    @Test
+    void aWorkerFullOfMethodsAtStartDoesNotStopTheDaemonItTrusts() throws Exception {
+        EngineClock clock = EngineClock.system();
+        toClose.add(clock::close);
+        WorkerServer worker = new WorkerServer(WorkerTestMethods.all(), "127.0.0.1", 0, clock,
+                WorkerCommand.limits(1), org.habla.security.WorkerSecret.of(SECRET), null);
+        toClose.add(worker);
+        worker.start();
+        String host = "127.0.0.1:" + worker.port();
+        MethodGraph first = graph(secured(SECRET, numbers(host, Fallback.NONE)));
+        await(() -> placement(first).path("up").asBoolean(), "the first daemon's placement takes the only place");
+
+        try (Daemon second = Daemon.start(secured(SECRET, numbersOnFreePorts(host, Fallback.LOCAL)),
+                WorkerTestMethods.all(), EngineClock.system())) {
+            await(() -> second.status().path("methods").findValues("placement").stream()
+                    .anyMatch(p -> p.path("lastError").asText().contains("--max-methods=1")),
+                    "the second daemon runs, its placement down with the worker's reason");
+        }
+    }
+
+    @Test
     void aWorkerWithASecretRefusesAPlaceLineThatCameWithoutTheProof() throws Exception {
         WorkerServer worker = worker(WorkerTestMethods.all(), 0, org.habla.security.WorkerSecret.of(SECRET));
         try (Socket s = new Socket("127.0.0.1", worker.port())) {
@@ -381,8 +418,25 @@ class WorkerPlacementTest {
         java.io.StringWriter err = new java.io.StringWriter();
         int code = new picocli.CommandLine(new WorkerCommand()).setErr(new java.io.PrintWriter(err))
                 .execute("--bind", "0.0.0.0", "--port", "0");
-        assertThat(code).isEqualTo(org.habla.cli.ExitCodes.USAGE_OR_CONFIG);
+        assertThat(code).isEqualTo(org.habla.command.ExitCodes.USAGE_OR_CONFIG);
         assertThat(err.toString()).contains("--bind 0.0.0.0 is beyond loopback", "--secret-file");
+    }
+
+    @Test
+    void aWorkerAskedForEveryIpv4AddressDoesNotListenOnIpv6() throws Exception {
+        org.junit.jupiter.api.Assumptions.assumeTrue(org.habla.testing.DaemonProcess.ipv6Loopback(),
+                "this computer has no IPv6 loopback");
+        EngineClock clock = EngineClock.system();
+        toClose.add(clock::close);
+        WorkerServer worker = new WorkerServer(WorkerTestMethods.all(), "0.0.0.0", 0, clock, Limits.DEFAULTS,
+                org.habla.security.WorkerSecret.of(SECRET), null);
+        toClose.add(worker);
+        worker.start();
+        try (Socket v4 = new Socket("127.0.0.1", worker.port())) {
+            v4.setSoTimeout(15_000);
+            assertThat(JSON.readTree(lines(v4).readLine()).path("type").asText()).isEqualTo("hello");
+        }
+        assertThatThrownBy(() -> new Socket("::1", worker.port()).close()).isInstanceOf(java.net.ConnectException.class);
     }
 
     @Test

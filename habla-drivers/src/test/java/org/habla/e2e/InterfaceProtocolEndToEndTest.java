@@ -32,7 +32,7 @@ class InterfaceProtocolEndToEndTest {
 
     private static final ObjectMapper JSON = new ObjectMapper();
     private static final Path CLIENT = Paths.get("src/test/resources/e2e/control_client.py").toAbsolutePath();
-    private static final Path CLIENT_LIB = Paths.get("..", "examples", "control-python").toAbsolutePath().normalize();
+    private static final Path CLIENT_LIB = Paths.get("..", "clients", "python", "src").toAbsolutePath().normalize();
 
     /** ir → channel → pass-through → pass-through (exposed "ranges"); control "wheels" → ... → @rover.wheels. */
     static ObjectNode config(int robotPort, int rangesPort, int wheelsPort, int statusPort, long watchdogMs) {

@@ -3,7 +3,6 @@ package org.habla.methods;
 import static java.nio.charset.StandardCharsets.UTF_8;
 import static org.assertj.core.api.Assertions.assertThat;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
 import java.io.BufferedReader;
 import java.io.InputStream;
 import java.io.InputStreamReader;
@@ -13,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.stream.Collectors;
+import org.habla.config.ParamsJson;
 import org.habla.method.Layer;
 import org.habla.method.Method;
 import org.habla.method.Ports;
@@ -52,7 +52,7 @@ class MethodProvidersTest {
             assertThat(typeByClass).as("discovered: " + className).containsKey(className);
             assertThat(names.add(typeByClass.get(className))).as("unique type name " + typeByClass.get(className)).isTrue();
         }
-        assertThat(names).contains("sonar", "infrared", "microphone", "keyboard", "odometry", "wheels",
+        assertThat(names).contains("sonar", "infrared", "laser", "microphone", "keyboard", "odometry", "wheels",
                 "nearest-distance", "motion-composition", "movement-safety", "distance-angle", "command", "reward",
                 "action", "robot-pose", "link-state");
     }
@@ -60,7 +60,6 @@ class MethodProvidersTest {
     @Test
     void everyTypeWithoutRequiredParamsMakesAMethodOfItsLayerThatBindsTheListedPortsFromAnEmptyParamsObject()
             throws Exception {
-        ObjectMapper json = new ObjectMapper();
         PluginRegistry registry = PluginRegistry.discover();
         int made = 0;
         for (String className : listedProviders()) {
@@ -68,7 +67,7 @@ class MethodProvidersTest {
                     .filter(p -> p.getClass().getName().equals(className)).findFirst().orElseThrow();
             Record params;
             try {
-                params = json.readValue("{}", provider.paramsType());
+                params = ParamsJson.defaults(provider.paramsType());
             } catch (Exception e) {
                 continue; // a type with a required parameter
             }

@@ -3,6 +3,7 @@ package org.habla.methods;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
+import org.habla.config.ParamsJson;
 import org.habla.method.Delivery;
 import org.habla.method.InputPort;
 import org.habla.method.Layer;
@@ -71,6 +72,8 @@ class PortsListedBTest {
                 List.of("ranges", "scan"));
         lists(new RangeSensor.InfraredProvider(), RangeSensorParams.defaults(), List.of("ranges", "head"),
                 List.of("ranges", "scan"));
+        lists(new RangeSensor.LaserProvider(), RangeSensorParams.defaults(), List.of("ranges", "head"),
+                List.of("ranges", "scan"));
         lists(new Speaker.Provider(), SpeakerParams.defaults(), List.of("audio", "text"), List.of("speaker"));
         lists(new Wheels.Provider(), WheelsParams.defaults(), List.of("motion"), List.of("motion", "limits"));
         lists(new Speech.Provider(), SpeechParams.defaults(), List.of("text", "emotion"), List.of("audio"));
@@ -79,18 +82,18 @@ class PortsListedBTest {
     @Test
     void theQueueParamSetsTheDeliveryOfTheInputItSizes() {
         assertThat(input(new Legs.Provider(), LegsParams.defaults(), "walk").delivery()).isEqualTo(Delivery.queue(8));
-        assertThat(input(new Legs.Provider(), new LegsParams(null, null, null, null, 3), "walk").delivery())
+        assertThat(input(new Legs.Provider(), ParamsJson.of(LegsParams.class, "{\"queue\": 3}"), "walk").delivery())
                 .isEqualTo(Delivery.queue(3));
 
         assertThat(input(new Microphone.Provider(), MicrophoneParams.defaults(), "audio").delivery())
                 .isEqualTo(Delivery.queue(64));
         assertThat(input(new Microphone.Provider(),
-                new MicrophoneParams(null, null, null, null, null, null, null, null, 5), "audio").delivery())
+                ParamsJson.of(MicrophoneParams.class, "{\"queue\": 5}"), "audio").delivery())
                 .isEqualTo(Delivery.queue(5));
 
         assertThat(input(new Speaker.Provider(), SpeakerParams.defaults(), "audio").delivery())
                 .isEqualTo(Delivery.queue(64));
-        InputPort<?> audio = input(new Speaker.Provider(), new SpeakerParams(null, null, null, null, 7), "audio");
+        InputPort<?> audio = input(new Speaker.Provider(), ParamsJson.of(SpeakerParams.class, "{\"queue\": 7}"), "audio");
         assertThat(audio.delivery()).isEqualTo(Delivery.queue(7));
         assertThat(audio.optional()).isTrue();
     }

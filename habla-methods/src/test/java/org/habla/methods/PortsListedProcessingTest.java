@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThatCode;
 
 import com.fasterxml.jackson.databind.ObjectMapper;
 import java.util.List;
+import org.habla.config.ParamsJson;
 import org.habla.method.Delivery;
 import org.habla.method.Layer;
 import org.habla.method.Ports;
@@ -55,8 +56,8 @@ class PortsListedProcessingTest {
         assertThat(names(ports.outputs())).containsExactlyInAnyOrderElementsOf(outputs);
     }
 
-    private static <P extends Record> P params(String json, Class<P> type) throws Exception {
-        return JSON.readValue(json, type);
+    private static <P extends Record> P params(String json, Class<P> type) {
+        return ParamsJson.of(type, json);
     }
 
     @Test

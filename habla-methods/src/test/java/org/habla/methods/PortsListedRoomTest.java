@@ -3,6 +3,7 @@ package org.habla.methods;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
+import org.habla.config.ParamsJson;
 import org.habla.method.InputPort;
 import org.habla.method.Layer;
 import org.habla.method.OutputPort;
@@ -38,19 +39,19 @@ class PortsListedRoomTest {
 
     @Test
     void roomTypesListTheirPortsWithDefaultParams() {
-        assertListed(new Blinds.Provider(), new Blinds.Params(null), List.of("open"), List.of("command"));
+        assertListed(new Blinds.Provider(), ParamsJson.of(Blinds.Params.class, "{}"), List.of("open"), List.of("command"));
         assertListed(new ClimateSensor.Provider(), new NoParams(), List.of("temperature", "humidity"),
                 List.of("climate"));
-        assertListed(new Comfort.Provider(), new Comfort.Params(null, null, null, null, null, null, null),
+        assertListed(new Comfort.Provider(), ParamsJson.of(Comfort.Params.class, "{}"),
                 List.of("climate", "lux", "sound"), List.of("comfort"));
-        assertListed(new Lamp.Provider(), new Lamp.Params(null, null, null), List.of("level"),
-                List.of("command", "level"));
-        assertListed(new LightSensor.Provider(), new LightSensor.Params(null, null), List.of("lux"), List.of("lux"));
-        assertListed(new Presence.Provider(), new Presence.Params(null, null), List.of("motion", "door"),
+        assertListed(new Lamp.Provider(), ParamsJson.of(Lamp.Params.class, "{}"), List.of("level", "state"),
+                List.of("command", "level", "reported"));
+        assertListed(new LightSensor.Provider(), ParamsJson.of(LightSensor.Params.class, "{}"), List.of("lux"), List.of("lux"));
+        assertListed(new Presence.Provider(), ParamsJson.of(Presence.Params.class, "{}"), List.of("motion", "door"),
                 List.of("present"));
-        assertListed(new RoomSpeaker.Provider(), new RoomSpeaker.Params(null, null), List.of("text"),
+        assertListed(new RoomSpeaker.Provider(), ParamsJson.of(RoomSpeaker.Params.class, "{}"), List.of("text"),
                 List.of("command"));
-        assertListed(new SoundLevel.Provider(), new SoundLevel.Params(null, null), List.of("audio", "level"),
+        assertListed(new SoundLevel.Provider(), ParamsJson.of(SoundLevel.Params.class, "{}"), List.of("audio", "level"),
                 List.of("levelDb"));
     }
 
@@ -69,17 +70,17 @@ class PortsListedRoomTest {
     void everyZoneIsAnInputOfOccupancyAndLightLevels() {
         List<String> one = List.of("desk");
         List<String> three = List.of("desk", "sofa", "kitchen");
-        assertListed(new Occupancy.Provider(), new Occupancy.Params(one, null), one, List.of("occupancy"));
+        assertListed(new Occupancy.Provider(), ParamsJson.of(Occupancy.Params.class, "{\"zones\": [\"desk\"]}"), one, List.of("occupancy"));
         assertListed(new Occupancy.Provider(), new Occupancy.Params(three, 0), three, List.of("occupancy"));
-        assertListed(new LightLevels.Provider(), new LightLevels.Params(one, null), one, List.of("light"));
+        assertListed(new LightLevels.Provider(), ParamsJson.of(LightLevels.Params.class, "{\"zones\": [\"desk\"]}"), one, List.of("light"));
         assertListed(new LightLevels.Provider(), new LightLevels.Params(three, 150.0), three, List.of("light"));
     }
 
     @Test
     void aRoomHasAnOutputPerLampAndBlindsAndOneForItsSpeaker() {
-        assertListed(new RoomAction.Provider(), new RoomAction.Params(List.of("desk"), null, null), List.of("action"),
+        assertListed(new RoomAction.Provider(), ParamsJson.of(RoomAction.Params.class, "{\"lamps\": [\"desk\"]}"), List.of("action"),
                 List.of("action", "lamps", "desk"));
-        assertListed(new RoomAction.Provider(), new RoomAction.Params(List.of("desk", "sofa"), List.of("window"), true),
+        assertListed(new RoomAction.Provider(), ParamsJson.of(RoomAction.Params.class, "{\"lamps\": [\"desk\", \"sofa\"], \"blinds\": [\"window\"], \"speaker\": true}"),
                 List.of("action"), List.of("action", "lamps", "desk", "sofa", "window", "say"));
     }
 

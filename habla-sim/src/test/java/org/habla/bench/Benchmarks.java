@@ -1,5 +1,6 @@
 package org.habla.bench;
 
+import java.nio.file.Path;
 import java.util.Arrays;
 import java.util.List;
 
@@ -9,7 +10,9 @@ import java.util.List;
  * reliability runs of docs/reliability.md with {@code bench/run chaos} (only when named: they take minutes), or
  * its parts {@code hostile} and {@code soak} ({@code --hostile N}, {@code --attack-seconds S},
  * {@code --soak-minutes M}); the daemon's start-up time and resident memory with {@code bench/run footprint}
- * (only when named: minutes; {@code aibo} or {@code pioneer} for one robot, {@code --runs N}, {@code --until S}).
+ * (only when named: minutes; {@code aibo} or {@code pioneer} for one robot, {@code --runs N}, {@code --until S});
+ * end of speech to phrase in the Aibo's daemon beside its vision with {@code bench/run aibo-speech} (only when named;
+ * {@code --voices N}, {@code --config FILE}, {@code --port-offset N}, {@code --nice N}).
  * {@code fanout --clients N --hz N} runs only the fan-out crowd round, with N readers at N Hz
  * ({@code --reader-threads}: a thread per reader instead of one selector).
  */
@@ -28,7 +31,7 @@ public final class Benchmarks {
         boolean all = list.stream().noneMatch(a -> a.equals("latency") || a.equals("throughput") || a.equals("fanout")
                 || a.equals("vision") || a.equals("worker") || a.equals("monitor") || a.equals("recording") || a.equals("mqtt")
                 || a.equals("chaos") || a.equals("hostile") || a.equals("soak") || a.equals("security")
-                || a.equals("isolation") || a.equals("footprint"));
+                || a.equals("isolation") || a.equals("footprint") || a.equals("aibo-speech"));
         System.out.printf("HABLA engine benchmarks: %d cores, %s %s, %s%n", Runtime.getRuntime().availableProcessors(),
                 System.getProperty("java.vm.name"), System.getProperty("java.version"), System.getProperty("os.name"));
         System.out.println("load average at start (1, 5, 15 min): " + loadAverage());
@@ -66,6 +69,11 @@ public final class Benchmarks {
             new IsolationBench(seconds, option(list, "--rounds", 3), list.contains("--without-heavy"),
                     option(list, "--realtime", -1), list.contains("--own-threads")).run();
         }
+        if (list.contains("aibo-speech")) {
+            int at2 = list.indexOf("--config");
+            new AiboSpeechBench(Path.of(at2 >= 0 ? list.get(at2 + 1) : "config/aibo.json"), option(list, "--voices", 2),
+                    option(list, "--port-offset", org.habla.sim.PortBlock.freeOffset()), option(list, "--nice", 0)).run();
+        }
         if (list.contains("footprint")) {
             List<String> robots = list.stream().filter(a -> a.equals("aibo") || a.equals("pioneer")).toList();
             new FootprintBench(option(list, "--until", 60), option(list, "--runs", 3),
@@ -93,7 +101,7 @@ public final class Benchmarks {
     }
 
     /** The first three fields of /proc/loadavg, or "unknown" off Linux. */
-    private static String loadAverage() {
+    static String loadAverage() {
         try {
             String[] f = java.nio.file.Files.readString(java.nio.file.Path.of("/proc/loadavg")).split(" ");
             return f[0] + " " + f[1] + " " + f[2];

@@ -39,7 +39,7 @@ final class MonitorBench {
             }, path -> {
                 Path profile = Files.createTempDirectory("habla-bench-chromium");
                 Browser b = new Browser(profile);
-                b.open("http://127.0.0.1:" + path.daemon().monitorPort() + "/");
+                b.open("http://127.0.0.1:" + path.daemon().extensionPort(org.habla.daemon.Daemon.MONITOR) + "/");
                 Browser.await("the page shows the graph", 20_000, () -> b.jsLong(
                         "return document.querySelectorAll('#graph g.node[id^=\"method:\"]').length") == 3);
                 b.js("document.getElementById('method:v').dispatchEvent(new MouseEvent('click'))");

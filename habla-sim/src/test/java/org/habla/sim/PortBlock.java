@@ -11,7 +11,7 @@ import java.util.concurrent.ThreadLocalRandom;
  */
 public final class PortBlock {
 
-    private static final int[] DEFAULTS = {7001, 7002, 7003, 7004, 7010, 7011, 7012, 7013, 7098, 7099, 7600, 8101, 8110,
+    private static final int[] DEFAULTS = {7001, 7002, 7003, 7004, 7010, 7011, 7012, 7013, 7098, 7099, 7600, 8101, 8110, 8120,
         8111, 8199, 10011, 10020, 10031, 10050, 10052, 10053, 10070, 10071, 10199};
 
     private PortBlock() {

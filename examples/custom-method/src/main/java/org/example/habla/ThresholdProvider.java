@@ -1,41 +1,16 @@
 package org.example.habla;
 
-import java.util.Set;
 import org.habla.method.Layer;
-import org.habla.method.Method;
-import org.habla.method.Ports;
-import org.habla.plugin.MethodProvider;
+import org.habla.plugin.SimpleMethodProvider;
 
-/** Registers {@link Threshold} under the type name {@code threshold}. */
-public final class ThresholdProvider implements MethodProvider<ThresholdParams> {
+/**
+ * Registers {@link Threshold} under the type name {@code threshold}, in the processing layer. Public and without
+ * arguments, so {@link java.util.ServiceLoader} can make it from the services file.
+ */
+public final class ThresholdProvider extends SimpleMethodProvider<ThresholdParams> {
 
-    @Override
-    public String name() {
-        return "threshold";
-    }
-
-    @Override
-    public String description() {
-        return "Labels the nearest obstacle near or far, with hysteresis";
-    }
-
-    @Override
-    public Set<Layer> layers() {
-        return Set.of(Layer.PROCESSING);
-    }
-
-    @Override
-    public Class<ThresholdParams> paramsType() {
-        return ThresholdParams.class;
-    }
-
-    @Override
-    public Ports ports(Layer layer, ThresholdParams params) {
-        return Threshold.PORTS;
-    }
-
-    @Override
-    public Method create(Layer layer, ThresholdParams params) {
-        return new Threshold(params);
+    public ThresholdProvider() {
+        super("threshold", "Labels the nearest obstacle near or far, with hysteresis", ThresholdParams.class,
+                Threshold.PORTS, (layer, params) -> new Threshold(params), Layer.PROCESSING);
     }
 }

@@ -3,6 +3,7 @@ package org.example.habla;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.sample.RecordValue;
 import org.habla.sample.TextValue;
@@ -16,7 +17,7 @@ class ThresholdTest {
 
     @Test
     void theLabelChangesOnlyWhenTheDistanceCrossesTheFarSideOfTheBand() {
-        MethodHarness h = MethodHarness.started("near", new Threshold(new ThresholdParams(null, null)));
+        MethodHarness h = MethodHarness.started("near", new Threshold(ParamsJson.defaults(ThresholdParams.class)));
 
         for (double d : new double[] {1.0, 0.7, 0.4, 0.6, 0.9}) {
             h.push("nearest", obstacleAt(d));

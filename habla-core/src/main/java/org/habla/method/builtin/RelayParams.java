@@ -1,9 +1,10 @@
 package org.habla.method.builtin;
 
 import java.util.Locale;
+import org.habla.config.ParamsJson;
 import org.habla.method.Delivery;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
+
 import org.habla.sample.PayloadKind;
 
 /**
@@ -11,18 +12,18 @@ import org.habla.sample.PayloadKind;
  * carry and how samples wait for them.
  */
 public record RelayParams(
-        @Param(value = "Payload kind carried: number, vector, text, record, audio, image or any", defaultValue = "\"any\"")
+        @Param(value = "Payload kind carried: number, vector, text, record, audio, image or any",
+                defaultValue = "\"any\"")
         String kind,
         @Param(value = "How samples wait: latest (newest wins) or queue (bounded first-in first-out)",
                 defaultValue = "\"latest\"")
         String delivery,
-        @Param(value = "Queue length when delivery is queue", defaultValue = "64")
-        Integer capacity) {
+        @Param(value = "Queue length when delivery is queue", defaultValue = "64", min = 1, max = Delivery.MAX_CAPACITY)
+        int capacity) {
 
     public RelayParams {
-        kind = ParamDefaults.or(RelayParams.class, "kind", kind).toLowerCase(Locale.ROOT);
-        delivery = ParamDefaults.or(RelayParams.class, "delivery", delivery).toLowerCase(Locale.ROOT);
-        capacity = ParamDefaults.or(RelayParams.class, "capacity", capacity);
+        kind = kind.toLowerCase(Locale.ROOT);
+        delivery = delivery.toLowerCase(Locale.ROOT);
         try {
             PayloadKind.fromWire(kind);
         } catch (IllegalArgumentException e) {
@@ -31,14 +32,11 @@ public record RelayParams(
         if (!delivery.equals("latest") && !delivery.equals("queue")) {
             throw new IllegalArgumentException("delivery must be latest or queue, was '" + delivery + "'");
         }
-        if (capacity < 1 || capacity > Delivery.MAX_CAPACITY) {
-            throw new IllegalArgumentException("capacity must be in 1.." + Delivery.MAX_CAPACITY + ", was " + capacity);
-        }
     }
 
     /** Every parameter at its default. */
     public static RelayParams defaults() {
-        return new RelayParams(null, null, null);
+        return ParamsJson.defaults(RelayParams.class);
     }
 
     public PayloadKind payloadKind() {

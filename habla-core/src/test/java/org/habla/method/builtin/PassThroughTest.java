@@ -3,8 +3,7 @@ package org.habla.method.builtin;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
-import com.fasterxml.jackson.databind.exc.UnrecognizedPropertyException;
+import org.habla.config.ParamsJson;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.method.Delivery;
 import org.habla.method.Layer;
@@ -44,23 +43,25 @@ class PassThroughTest {
 
     @Test
     void badParamsAreRejectedNamingTheParameter() {
-        assertThatThrownBy(() -> new RelayParams("sound", null, null)).hasMessageContaining("kind");
-        assertThatThrownBy(() -> new RelayParams(null, "stack", null)).hasMessageContaining("delivery");
-        assertThatThrownBy(() -> new RelayParams(null, "queue", 0)).hasMessageContaining("capacity");
+        assertThatThrownBy(() -> ParamsJson.of(RelayParams.class, "{\"kind\": \"sound\"}"))
+                .hasMessageContaining("$.params.kind");
+        assertThatThrownBy(() -> ParamsJson.of(RelayParams.class, "{\"delivery\": \"stack\"}"))
+                .hasMessageContaining("$.params.delivery");
+        assertThatThrownBy(() -> ParamsJson.of(RelayParams.class, "{\"capacity\": 0}"))
+                .hasMessageContaining("$.params.capacity: must be within [1, 65536], was 0");
     }
 
     @Test
-    void paramsBindStrictlyFromJson() throws Exception {
-        ObjectMapper json = new ObjectMapper();
-        RelayParams p = json.readValue("{\"kind\":\"text\",\"delivery\":\"queue\"}", RelayParams.class);
+    void paramsBindStrictlyFromJson() {
+        RelayParams p = ParamsJson.of(RelayParams.class, "{\"kind\":\"text\",\"delivery\":\"queue\"}");
         assertThat(p).isEqualTo(new RelayParams("text", "queue", 64));
-        assertThatThrownBy(() -> json.readValue("{\"kindd\":\"text\"}", RelayParams.class))
-                .isInstanceOf(UnrecognizedPropertyException.class);
+        assertThatThrownBy(() -> ParamsJson.of(RelayParams.class, "{\"kindd\":\"text\"}"))
+                .hasMessageContaining("$.params.kindd: unknown parameter 'kindd'");
     }
 
     @Test
     void theChannelMethodHandsReadingsOnFromItsChannel() {
-        ChannelReader m = new ChannelReader(new RelayParams("vector", null, null));
+        ChannelReader m = new ChannelReader(ParamsJson.of(RelayParams.class, "{\"kind\": \"vector\"}"));
         MethodHarness h = MethodHarness.of("sonarRaw", m)
                 .wireChannel("in", ChannelDescriptor.reading("sonar", PayloadKind.VECTOR, "m")).start();
         h.push("in", VectorValue.of(0.5, 4.0));

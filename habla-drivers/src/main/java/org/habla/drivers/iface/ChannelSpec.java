@@ -5,7 +5,6 @@ import java.util.Locale;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.driver.Driver;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 import org.habla.sample.PayloadKind;
 
 /**
@@ -18,13 +17,11 @@ public record ChannelSpec(
         @Param("the payload kind: number, vector, text, record, audio or image") String kind,
         @Param(value = "the SI unit of its numbers", defaultValue = "\"\"") String unit,
         @Param(value = "true for a command that moves the robot (dropped while the link is down, stopped by the watchdog)",
-                defaultValue = "false") Boolean motion,
+                defaultValue = "false") boolean motion,
         @Param(value = "facts general methods need, e.g. sensor poses", defaultValue = "{}") ObjectNode meta) {
 
     public ChannelSpec {
-        unit = ParamDefaults.or(ChannelSpec.class, "unit", unit);
-        motion = ParamDefaults.or(ChannelSpec.class, "motion", motion);
-        meta = ParamDefaults.or(ChannelSpec.class, "meta", meta).deepCopy();
+        meta = meta.deepCopy();
         if (name == null) {
             throw new IllegalArgumentException("name: every channel needs a name");
         }

@@ -1,6 +1,7 @@
 package org.habla.drivers.iface;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.util.ArrayList;
@@ -8,6 +9,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.habla.driver.ChannelDescriptor;
+import org.habla.plugin.ParamDefaults;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -34,12 +36,15 @@ record Hello(String robot, Map<String, ChannelDescriptor> channels) {
             throw new IOException("the interface program's hello has no \"channels\" array");
         }
         Map<String, ChannelDescriptor> channels = new LinkedHashMap<>();
-        for (JsonNode c : list) {
+        for (JsonNode announced : list) {
+            // What the program leaves out takes the defaults a config's channel spec takes.
+            JsonNode c = announced.isObject() ? ParamDefaults.filled(announced, ChannelSpec.class) : announced;
             ChannelDescriptor d;
             try {
                 d = new ChannelSpec(text(c, "name"), text(c, "direction"), text(c, "kind"), text(c, "unit"),
                         c.path("motion").asBoolean(false),
-                        c.get("meta") instanceof ObjectNode meta ? meta : null).descriptor();
+                        c.get("meta") instanceof ObjectNode meta ? meta : JsonNodeFactory.instance.objectNode())
+                        .descriptor();
             } catch (IllegalArgumentException e) {
                 throw new IOException("the interface program announces a bad channel " + abbreviate(c) + ": "
                         + e.getMessage());

@@ -5,7 +5,6 @@ import java.util.List;
 import java.util.Set;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 
 /**
  * The params of a {@code habla} interface: the channels the config expects the interface program to announce
@@ -27,8 +26,9 @@ import org.habla.plugin.ParamDefaults;
 public record InterfaceParams(
         @Param("the channels the interface program must announce (name, direction, kind, unit, motion, meta)")
         List<ChannelSpec> channels,
-        @Param(value = "how often HABLA pings the interface program", unit = "ms", defaultValue = "500")
-        Integer keepAliveMs) {
+        @Param(value = "how often HABLA pings the interface program", unit = "ms", defaultValue = "500",
+                min = 50, max = 60_000)
+        int keepAliveMs) {
 
     public InterfaceParams {
         if (channels == null || channels.isEmpty()) {
@@ -40,10 +40,6 @@ public record InterfaceParams(
             if (!names.add(c.name())) {
                 throw new IllegalArgumentException("channels: '" + c.name() + "' is listed twice");
             }
-        }
-        keepAliveMs = ParamDefaults.or(InterfaceParams.class, "keepAliveMs", keepAliveMs);
-        if (keepAliveMs < 50 || keepAliveMs > 60_000) {
-            throw new IllegalArgumentException("keepAliveMs must be within 50..60000, was " + keepAliveMs);
         }
     }
 

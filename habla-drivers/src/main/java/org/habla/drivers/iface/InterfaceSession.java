@@ -12,7 +12,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import org.habla.config.Limits;
+import org.habla.net.Limits;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.driver.LinkSession;
 import org.habla.driver.ReadingSink;

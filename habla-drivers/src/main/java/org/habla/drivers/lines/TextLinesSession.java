@@ -11,6 +11,7 @@ import java.nio.charset.CodingErrorAction;
 import java.nio.charset.StandardCharsets;
 import org.habla.driver.LinkSession;
 import org.habla.driver.ReadingSink;
+import org.habla.driver.SessionChannel;
 import org.habla.net.FrameException;
 import org.habla.net.LineFramer;
 import org.habla.sample.Payload;
@@ -25,6 +26,8 @@ import org.slf4j.LoggerFactory;
  * U+FFFD and reported, and the line still goes out.
  */
 final class TextLinesSession implements LinkSession {
+
+    private final SessionChannel linesChannel = new SessionChannel(TextLinesDriver.LINES);
 
     private static final Logger LOG = LoggerFactory.getLogger(TextLinesSession.class);
 
@@ -60,7 +63,7 @@ final class TextLinesSession implements LinkSession {
         if (line == null) {
             throw new EOFException("the line stream ended");
         }
-        sink.reading(TextLinesDriver.LINES, new TextValue(decode(line, sink)));
+        linesChannel.publish(sink, new TextValue(decode(line, sink)));
     }
 
     private String decode(byte[] bytes, ReadingSink sink) {

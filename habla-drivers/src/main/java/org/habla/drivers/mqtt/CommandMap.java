@@ -2,7 +2,6 @@ package org.habla.drivers.mqtt;
 
 import org.habla.driver.ChannelDescriptor;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 
 /**
  * One command channel of an {@code mqtt} interface: every command becomes one message on a topic, its payload
@@ -20,19 +19,13 @@ public record CommandMap(
                 + "vector's JSON), {{name}} a field of a record command", defaultValue = "\"{{value}}\"")
         String template,
         @Param(value = "the MQTT quality of service: 0 (at most once) or 1 (at least once)", defaultValue = "1")
-        Integer qos,
+        int qos,
         @Param(value = "the device (in \"devices\"): while it is offline its commands are dropped and counted; "
                 + "empty: none", defaultValue = "\"\"") String device,
         @Param(value = "true for a command that moves something (dropped while the link is down, stopped by the "
-                + "watchdog)", defaultValue = "false") Boolean motion) {
+                + "watchdog)", defaultValue = "false") boolean motion) {
 
     public CommandMap {
-        kind = ParamDefaults.or(CommandMap.class, "kind", kind);
-        unit = ParamDefaults.or(CommandMap.class, "unit", unit);
-        template = ParamDefaults.or(CommandMap.class, "template", template);
-        qos = ParamDefaults.or(CommandMap.class, "qos", qos);
-        device = ParamDefaults.or(CommandMap.class, "device", device);
-        motion = ParamDefaults.or(CommandMap.class, "motion", motion);
         if (channel == null || topic == null) {
             throw new IllegalArgumentException("commands: every command needs a \"channel\" and a \"topic\"");
         }

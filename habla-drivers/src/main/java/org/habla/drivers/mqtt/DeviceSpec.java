@@ -1,12 +1,13 @@
 package org.habla.drivers.mqtt;
 
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 
 /**
  * A device on the broker whose availability topic says whether it is there: Zigbee2MQTT's
  * {@code zigbee2mqtt/<name>/availability} ({@code online}/{@code offline}, or {@code {"state":"online"}}), or a
- * Home Assistant style {@code availability_topic} with its own payloads.
+ * Home Assistant style {@code availability_topic} with its own payloads. A device reached through another one
+ * names it in {@code via}: Zigbee2MQTT's devices are reached through its bridge, whose state topic
+ * ({@code zigbee2mqtt/bridge/state}) is the only one its last will covers.
  */
 public record DeviceSpec(
         @Param("the device's name, as the readings and commands name it") String name,
@@ -14,11 +15,11 @@ public record DeviceSpec(
         @Param(value = "the payload (or the JSON \"state\" field) that means it is there", defaultValue = "\"online\"")
         String online,
         @Param(value = "the payload (or the JSON \"state\" field) that means it is gone", defaultValue = "\"offline\"")
-        String offline) {
+        String offline,
+        @Param(value = "the device this one is reached through (a Zigbee2MQTT bridge, a hub): while it is offline, so "
+                + "is this one; empty: none", defaultValue = "\"\"") String via) {
 
     public DeviceSpec {
-        online = ParamDefaults.or(DeviceSpec.class, "online", online);
-        offline = ParamDefaults.or(DeviceSpec.class, "offline", offline);
         if (name == null || name.isBlank() || availabilityTopic == null) {
             throw new IllegalArgumentException("devices: every device needs a \"name\" and an \"availabilityTopic\"");
         }

@@ -27,7 +27,7 @@ final class Mqtt3Wire implements MqttWire {
     private final BrokerEndpoint endpoint;
     private final Mqtt3AsyncClient client;
     private final AtomicBoolean ended = new AtomicBoolean();
-    private volatile Listener listener = (topic, payload) -> { };
+    private volatile Listener listener = (topic, payload, retained) -> { };
 
     Mqtt3Wire(BrokerEndpoint endpoint, Consumer<Throwable> onLost) {
         this.endpoint = endpoint;
@@ -46,7 +46,8 @@ final class Mqtt3Wire implements MqttWire {
             b = ssl.applySslConfig();
         }
         this.client = b.buildAsync();
-        client.publishes(MqttGlobalPublishFilter.ALL, p -> listener.message(p.getTopic().toString(), p.getPayloadAsBytes()));
+        client.publishes(MqttGlobalPublishFilter.ALL, p -> listener.message(p.getTopic().toString(), p.getPayloadAsBytes(),
+                p.isRetain()));
     }
 
     @Override
@@ -78,8 +79,8 @@ final class Mqtt3Wire implements MqttWire {
     }
 
     @Override
-    public void publish(String topic, byte[] payload, int qos, boolean retain) {
-        client.publishWith().topic(topic).qos(MqttQos.fromCode(qos)).retain(retain).payload(payload).send()
+    public CompletableFuture<?> publish(String topic, byte[] payload, int qos, boolean retain) {
+        return client.publishWith().topic(topic).qos(MqttQos.fromCode(qos)).retain(retain).payload(payload).send()
                 .whenComplete((result, error) -> {
                     if (error != null) {
                         LOG.debug("publishing on {} failed: {}", topic, error.toString());

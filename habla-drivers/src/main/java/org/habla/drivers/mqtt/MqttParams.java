@@ -5,7 +5,6 @@ import java.util.List;
 import java.util.Set;
 import org.habla.driver.Driver;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 
 /**
  * The params of an {@code mqtt} interface: how to reach the broker, and the mapping of topics to channels.
@@ -29,14 +28,17 @@ public record MqttParams(
         String password,
         @Param(value = "a file whose first line is the password", defaultValue = "\"\"", file = true)
         String passwordFile,
-        @Param(value = "connect with TLS (the default port is then 8883)", defaultValue = "false") Boolean tls,
+        @Param(value = "connect with TLS (the default port is then 8883)", defaultValue = "false") boolean tls,
         @Param(value = "a PEM file of the certificate authorities that sign the broker's certificate; empty: the "
                 + "JVM's trust store", defaultValue = "\"\"", file = true) String caFile,
         @Param(value = "how often client and broker check each other when nothing flows; a silent broker is lost "
-                + "after about 1.5 times this", unit = "s", defaultValue = "5") Integer keepAliveS,
-        @Param(value = "the quality of service of the subscriptions: 0 or 1", defaultValue = "0") Integer subscribeQos,
-        @Param(value = "messages received and not yet decoded; more are dropped and counted", defaultValue = "1024")
-        Integer queueMessages,
+                + "after about 1.5 times this", unit = "s", defaultValue = "5",
+                min = 1, max = MAX_KEEP_ALIVE_S)
+        int keepAliveS,
+        @Param(value = "the quality of service of the subscriptions: 0 or 1", defaultValue = "0") int subscribeQos,
+        @Param(value = "messages received and not yet decoded; more are dropped and counted", defaultValue = "1024",
+                min = 1, max = MAX_QUEUE_MESSAGES)
+        int queueMessages,
         @Param(value = "devices with an availability topic (name, availabilityTopic, online, offline)",
                 defaultValue = "[]") List<DeviceSpec> devices,
         @Param(value = "reading channels (channel, topic, field, kind, unit, device, values)", defaultValue = "[]")
@@ -50,36 +52,19 @@ public record MqttParams(
     public static final int MAX_QUEUE_MESSAGES = 65_536;
 
     public MqttParams {
-        version = ParamDefaults.or(MqttParams.class, "version", version);
         BrokerEndpoint.MqttVersion.fromConfig(version);
-        clientId = ParamDefaults.or(MqttParams.class, "clientId", clientId);
-        username = ParamDefaults.or(MqttParams.class, "username", username);
-        password = ParamDefaults.or(MqttParams.class, "password", password);
-        passwordFile = ParamDefaults.or(MqttParams.class, "passwordFile", passwordFile);
         if (!password.isEmpty() && !passwordFile.isEmpty()) {
             throw new IllegalArgumentException("give password or passwordFile, not both");
         }
-        tls = ParamDefaults.or(MqttParams.class, "tls", tls);
-        caFile = ParamDefaults.or(MqttParams.class, "caFile", caFile);
         if (!caFile.isEmpty() && !tls) {
             throw new IllegalArgumentException("caFile is for TLS: set \"tls\": true as well");
         }
-        keepAliveS = ParamDefaults.or(MqttParams.class, "keepAliveS", keepAliveS);
-        if (keepAliveS < 1 || keepAliveS > MAX_KEEP_ALIVE_S) {
-            throw new IllegalArgumentException("keepAliveS must be within 1.." + MAX_KEEP_ALIVE_S + ", was " + keepAliveS);
-        }
-        subscribeQos = ParamDefaults.or(MqttParams.class, "subscribeQos", subscribeQos);
         if (subscribeQos != 0 && subscribeQos != 1) {
             throw new IllegalArgumentException("subscribeQos must be 0 or 1, was " + subscribeQos);
         }
-        queueMessages = ParamDefaults.or(MqttParams.class, "queueMessages", queueMessages);
-        if (queueMessages < 1 || queueMessages > MAX_QUEUE_MESSAGES) {
-            throw new IllegalArgumentException("queueMessages must be within 1.." + MAX_QUEUE_MESSAGES + ", was "
-                    + queueMessages);
-        }
-        devices = List.copyOf(ParamDefaults.or(MqttParams.class, "devices", devices));
-        readings = List.copyOf(ParamDefaults.or(MqttParams.class, "readings", readings));
-        commands = List.copyOf(ParamDefaults.or(MqttParams.class, "commands", commands));
+        devices = List.copyOf(devices);
+        readings = List.copyOf(readings);
+        commands = List.copyOf(commands);
         if (readings.isEmpty() && commands.isEmpty()) {
             throw new IllegalArgumentException("readings, commands: map at least one topic to a channel");
         }
@@ -89,6 +74,9 @@ public record MqttParams(
                 throw new IllegalArgumentException("devices: '" + d.name() + "' is listed twice");
             }
         }
+        for (DeviceSpec d : devices) {
+            through(devices, d);
+        }
         Set<String> channels = new HashSet<>();
         for (ReadingMap r : readings) {
             unique(channels, r.channel());
@@ -97,6 +85,23 @@ public record MqttParams(
         for (CommandMap c : commands) {
             unique(channels, c.channel());
             known(deviceNames, c.device(), c.channel());
+        }
+    }
+
+    /** A device's via names a listed device, and following via never comes back to it. */
+    private static void through(List<DeviceSpec> devices, DeviceSpec d) {
+        String name = d.via();
+        for (int hops = 0; !name.isEmpty(); hops++) {
+            String current = name;
+            DeviceSpec next = devices.stream().filter(x -> x.name().equals(current)).findFirst().orElse(null);
+            if (next == null) {
+                throw new IllegalArgumentException("devices: '" + d.name() + "' is reached via '" + current
+                        + "', which is not in \"devices\"");
+            }
+            if (next.name().equals(d.name()) || hops > devices.size()) {
+                throw new IllegalArgumentException("devices: the via chain of '" + d.name() + "' goes round in a circle");
+            }
+            name = next.via();
         }
     }
 

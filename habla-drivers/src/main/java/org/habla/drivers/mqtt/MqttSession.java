@@ -5,9 +5,8 @@ import java.io.InterruptedIOException;
 import java.nio.charset.StandardCharsets;
 import java.time.Duration;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.LinkedHashSet;
-import java.util.Map;
+import java.util.List;
 import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ArrayBlockingQueue;
@@ -16,6 +15,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import org.habla.driver.ClientSession;
 import org.habla.driver.ReadingSink;
+import org.habla.driver.SessionChannel;
 import org.habla.sample.Payload;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -35,6 +35,9 @@ import org.slf4j.LoggerFactory;
  */
 final class MqttSession implements ClientSession {
 
+    /** The reading channel of each of the driver's decoders, in their order. */
+    private final List<SessionChannel> channels;
+
     private static final Logger LOG = LoggerFactory.getLogger(MqttSession.class);
     /** How often a reader waiting for a message looks whether the connection was lost. */
     private static final long POLL_MILLIS = 100;
@@ -43,7 +46,7 @@ final class MqttSession implements ClientSession {
     private final MqttDriver driver;
     private final BlockingQueue<Message> queue;
     private final AtomicLong overflow = new AtomicLong();
-    private final Map<String, String> offlineDevices = new HashMap<>();
+    private final DeviceAvailability devices;
     private volatile MqttWire wire;
     private volatile Throwable lost;
     private volatile boolean closed;
@@ -54,6 +57,8 @@ final class MqttSession implements ClientSession {
     MqttSession(MqttDriver driver) {
         this.driver = driver;
         this.queue = new ArrayBlockingQueue<>(driver.params().queueMessages());
+        this.devices = new DeviceAvailability(driver.devices());
+        this.channels = driver.decoders().stream().map(d -> new SessionChannel(d.map().channel())).toList();
     }
 
     @Override
@@ -81,7 +86,7 @@ final class MqttSession implements ClientSession {
     }
 
     /** Called on the client library's threads: hand the message to the reader, or count it if the queue is full. */
-    private void arrived(String topic, byte[] payload) {
+    private void arrived(String topic, byte[] payload, boolean retained) {
         if (!queue.offer(new Message(topic, payload))) {
             overflow.incrementAndGet();
         }
@@ -118,15 +123,23 @@ final class MqttSession implements ClientSession {
                 availability(d, new String(m.payload(), StandardCharsets.UTF_8).strip(), sink);
             }
         }
-        for (ReadingDecoder d : driver.decoders()) {
+        List<String> unreadable = new ArrayList<>();
+        List<ReadingDecoder> decoders = driver.decoders();
+        for (int i = 0; i < decoders.size(); i++) {
+            ReadingDecoder d = decoders.get(i);
             if (!d.map().filter().matches(m.topic())) {
                 continue;
             }
+            SessionChannel channel = channels.get(i);
             try {
-                d.decode(m.payload()).ifPresent(v -> sink.reading(d.map().channel(), v));
+                d.decode(m.payload()).ifPresent(v -> channel.publish(sink, v));
             } catch (IllegalArgumentException e) {
-                sink.malformed("message on " + m.topic() + " for channel " + d.map().channel() + ": " + e.getMessage());
+                unreadable.add("channel " + d.map().channel() + ": " + e.getMessage());
             }
+        }
+        if (!unreadable.isEmpty()) {
+            // One malformed message counts once, however many channels it feeds.
+            sink.malformed("message on " + m.topic() + " for " + String.join("; ", unreadable));
         }
     }
 
@@ -150,17 +163,14 @@ final class MqttSession implements ClientSession {
                     + ReadingDecoder.abbreviate(payload) + "', neither '" + d.online() + "' nor '" + d.offline() + "'");
             return;
         }
-        synchronized (offlineDevices) {
-            if (online) {
-                offlineDevices.remove(d.name());
-            } else {
-                offlineDevices.put(d.name(), d.availabilityTopic() + " says " + state);
-            }
-        }
-        String why = d.name() + (online ? " is online" : " is offline (" + d.availabilityTopic() + ")");
+        sink.device(d.name(), online, d.availabilityTopic() + " says " + state);
+        devices.said(d, online, d.name() + " is offline (" + d.availabilityTopic() + " says " + state + ")");
+        // A device's word changes what every device reached through it can do, so every channel is told again.
         for (ReadingDecoder r : driver.decoders()) {
-            if (r.map().device().equals(d.name())) {
-                sink.availability(r.map().channel(), online, why);
+            String device = r.map().device();
+            if (!device.isEmpty()) {
+                String why = devices.unreachable(device);
+                sink.availability(r.map().channel(), why == null, why == null ? device + " is online" : why);
             }
         }
     }
@@ -172,12 +182,9 @@ final class MqttSession implements ClientSession {
             throw new IOException("the broker connection carries no command channel '" + channel + "'");
         }
         if (!c.device().isEmpty()) {
-            String offline;
-            synchronized (offlineDevices) {
-                offline = offlineDevices.get(c.device());
-            }
+            String offline = devices.unreachable(c.device());
             if (offline != null) {
-                throw new IllegalArgumentException("device " + c.device() + " is offline: " + offline);
+                throw new IllegalArgumentException("device " + c.device() + " cannot be reached: " + offline);
             }
         }
         String text = new PayloadTemplate(c.template()).render(command);

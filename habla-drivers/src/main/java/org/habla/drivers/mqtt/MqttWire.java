@@ -18,10 +18,13 @@ import java.util.function.Consumer;
  */
 interface MqttWire {
 
-    /** What arrives on a subscription: the topic and the raw payload. Called on the client library's threads. */
+    /**
+     * What arrives on a subscription: the topic, the raw payload, and whether the broker kept it (a retained message
+     * handed to a new subscriber). Called on the client library's threads.
+     */
     @FunctionalInterface
     interface Listener {
-        void message(String topic, byte[] payload);
+        void message(String topic, byte[] payload, boolean retained);
     }
 
     /** Connects and logs in. */
@@ -30,8 +33,11 @@ interface MqttWire {
     /** Subscribes to every filter and waits for the broker's acknowledgement. */
     void subscribe(List<String> filters, int qos, Listener listener, Duration timeout) throws IOException;
 
-    /** Sends a message without waiting for the broker's acknowledgement; failures are logged by the wire. */
-    void publish(String topic, byte[] payload, int qos, boolean retain);
+    /**
+     * Sends a message without waiting for the broker's acknowledgement; failures are logged by the wire. The future
+     * completes when the message is sent (QoS 0) or acknowledged, or fails.
+     */
+    CompletableFuture<?> publish(String topic, byte[] payload, int qos, boolean retain);
 
     /** Disconnects politely (the broker then does not publish the will); safe to call twice. */
     void disconnect();

@@ -3,7 +3,6 @@ package org.habla.drivers.mqtt;
 import java.util.Map;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 import org.habla.sample.PayloadKind;
 
 /**
@@ -26,11 +25,7 @@ public record ReadingMap(
                 defaultValue = "{}") Map<String, Double> values) {
 
     public ReadingMap {
-        field = ParamDefaults.or(ReadingMap.class, "field", field);
-        kind = ParamDefaults.or(ReadingMap.class, "kind", kind);
-        unit = ParamDefaults.or(ReadingMap.class, "unit", unit);
-        device = ParamDefaults.or(ReadingMap.class, "device", device);
-        values = Map.copyOf(ParamDefaults.or(ReadingMap.class, "values", values));
+        values = Map.copyOf(values);
         if (channel == null || topic == null) {
             throw new IllegalArgumentException("readings: every reading needs a \"channel\" and a \"topic\"");
         }

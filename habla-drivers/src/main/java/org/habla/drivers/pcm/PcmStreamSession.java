@@ -6,6 +6,7 @@ import java.io.InputStream;
 import java.util.Arrays;
 import org.habla.driver.LinkSession;
 import org.habla.driver.ReadingSink;
+import org.habla.driver.SessionChannel;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.AudioFormat;
 
@@ -16,6 +17,8 @@ import org.habla.sample.AudioFormat;
  * partial frame cannot be played and is dropped with a report).
  */
 final class PcmStreamSession implements LinkSession {
+
+    private final SessionChannel audioChannel = new SessionChannel(PcmStreamDriver.AUDIO);
 
     private final AudioFormat format;
     private final byte[] chunk;
@@ -39,7 +42,7 @@ final class PcmStreamSession implements LinkSession {
         }
         // the chunk's source time is when its first frame was captured: one chunk before it completed
         long nowMicros = System.currentTimeMillis() * 1_000L;
-        sink.reading(PcmStreamDriver.AUDIO, AudioChunk.wrap(format, chunk.clone()), nowMicros - chunkMicros);
+        audioChannel.publish(sink, AudioChunk.wrap(format, chunk.clone()), nowMicros - chunkMicros);
         filled = 0;
     }
 
@@ -49,7 +52,7 @@ final class PcmStreamSession implements LinkSession {
         if (whole > 0) {
             long frames = whole / frameBytes;
             long nowMicros = System.currentTimeMillis() * 1_000L;
-            sink.reading(PcmStreamDriver.AUDIO, AudioChunk.wrap(format, Arrays.copyOf(chunk, whole)),
+            audioChannel.publish(sink, AudioChunk.wrap(format, Arrays.copyOf(chunk, whole)),
                     nowMicros - frames * 1_000_000L / format.sampleRateHz());
         }
         if (filled % frameBytes != 0) {

@@ -1,8 +1,8 @@
 package org.habla.drivers.pioneer;
 
 import java.util.List;
+import org.habla.config.ParamsJson;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 
 /**
  * The params of a {@code pioneer} interface: the session's behaviour, the robot's conversion factors
@@ -11,44 +11,48 @@ import org.habla.plugin.ParamDefaults;
  */
 public record PioneerParams(
         @Param(value = "Send ENABLE 1 after OPEN, so the motors obey motion commands", defaultValue = "true")
-        Boolean enableMotors,
+        boolean enableMotors,
         @Param(value = "Period of the PULSE keep-alive, well inside the robot's 2 s watchdog", unit = "ms",
-                defaultValue = "500")
-        Integer keepAlivePeriodMs,
-        @Param(value = "Millimetres per SIP position unit (DistConvFactor)", unit = "mm", defaultValue = "0.840")
-        Double distConvFactor,
+                defaultValue = "500", min = 50, max = 1500)
+        int keepAlivePeriodMs,
+        @Param(value = "Millimetres per SIP position unit (DistConvFactor)", unit = "mm", defaultValue = "0.840",
+                greaterThan = 0)
+        double distConvFactor,
         @Param(value = "Radians per SIP heading unit (AngleConvFactor; 2π/4096)", unit = "rad",
-                defaultValue = "0.001534")
-        Double angleConvFactor,
-        @Param(value = "mm/s per SIP wheel-velocity unit (VelConvFactor)", unit = "mm/s", defaultValue = "1.0")
-        Double velConvFactor,
+                defaultValue = "0.001534", greaterThan = 0)
+        double angleConvFactor,
+        @Param(value = "mm/s per SIP wheel-velocity unit (VelConvFactor)", unit = "mm/s", defaultValue = "1.0",
+                greaterThan = 0)
+        double velConvFactor,
         @Param(value = "Millimetres per sonar range unit (RangeConvFactor; 1.0 on ARCOS robots)", unit = "mm",
-                defaultValue = "0.268")
-        Double rangeConvFactor,
+                defaultValue = "0.268", greaterThan = 0)
+        double rangeConvFactor,
         @Param(value = "rad/s of rotation per mm/s of half the wheel-speed difference, used when the SIP has no ROTVEL"
-                + " (DiffConvFactor)", unit = "rad/mm", defaultValue = "0.0056")
-        Double diffConvFactor,
-        @Param(value = "Highest translational speed a motion command may ask for", unit = "m/s", defaultValue = "0.75")
-        Double maxVelMps,
-        @Param(value = "Highest rotational speed a motion command may ask for", unit = "rad/s", defaultValue = "1.74")
-        Double maxRotVelRadps,
-        @Param(value = "Robot radius for obstacle checks", unit = "m", defaultValue = "0.25")
-        Double radiusM,
-        @Param(value = "Robot width", unit = "m", defaultValue = "0.425")
-        Double widthM,
-        @Param(value = "Robot length", unit = "m", defaultValue = "0.511")
-        Double lengthM,
-        @Param(value = "Front bumper switches reported in the SIP", defaultValue = "5")
-        Integer frontBumpers,
-        @Param(value = "Rear bumper switches reported in the SIP", defaultValue = "5")
-        Integer rearBumpers,
-        @Param(value = "Shortest range a sonar reports", unit = "m", defaultValue = "0.1")
-        Double minRangeM,
+                + " (DiffConvFactor)", unit = "rad/mm", defaultValue = "0.0056", greaterThan = 0)
+        double diffConvFactor,
+        @Param(value = "Highest translational speed a motion command may ask for", unit = "m/s", defaultValue = "0.75",
+                greaterThan = 0, max = 32.767)
+        double maxVelMps,
+        @Param(value = "Highest rotational speed a motion command may ask for", unit = "rad/s", defaultValue = "1.74",
+                greaterThan = 0)
+        double maxRotVelRadps,
+        @Param(value = "Robot radius for obstacle checks", unit = "m", defaultValue = "0.25", greaterThan = 0)
+        double radiusM,
+        @Param(value = "Robot width", unit = "m", defaultValue = "0.425", greaterThan = 0)
+        double widthM,
+        @Param(value = "Robot length", unit = "m", defaultValue = "0.511", greaterThan = 0)
+        double lengthM,
+        @Param(value = "Front bumper switches reported in the SIP", defaultValue = "5", min = 0, max = 7)
+        int frontBumpers,
+        @Param(value = "Rear bumper switches reported in the SIP", defaultValue = "5", min = 0, max = 7)
+        int rearBumpers,
+        @Param(value = "Shortest range a sonar reports", unit = "m", defaultValue = "0.1", min = 0)
+        double minRangeM,
         @Param(value = "Longest range a sonar reports (also its reading when nothing is in view)", unit = "m",
-                defaultValue = "5.0")
-        Double maxRangeM,
-        @Param(value = "Full width of a sonar beam", unit = "rad", defaultValue = "0.5235987755982988")
-        Double beamWidthRad,
+                defaultValue = "5.0", greaterThan = 0)
+        double maxRangeM,
+        @Param(value = "Full width of a sonar beam", unit = "rad", defaultValue = "0.5235987755982988", greaterThan = 0)
+        double beamWidthRad,
         @Param(value = "Sonar transducer poses [{xM, yM, thetaRad}], one per transducer in index order",
                 unit = "m, rad", defaultNote = "the 16 P2DX poses")
         List<SonarPose> sonarPoses) {
@@ -66,40 +70,10 @@ public record PioneerParams(
     public static final int MAX_SONARS = 32;
 
     public PioneerParams {
-        enableMotors = ParamDefaults.or(PioneerParams.class, "enableMotors", enableMotors);
-        keepAlivePeriodMs = ParamDefaults.or(PioneerParams.class, "keepAlivePeriodMs", keepAlivePeriodMs);
-        distConvFactor = positive("distConvFactor", distConvFactor);
-        angleConvFactor = positive("angleConvFactor", angleConvFactor);
-        velConvFactor = positive("velConvFactor", velConvFactor);
-        rangeConvFactor = positive("rangeConvFactor", rangeConvFactor);
-        diffConvFactor = positive("diffConvFactor", diffConvFactor);
-        maxVelMps = positive("maxVelMps", maxVelMps);
-        maxRotVelRadps = positive("maxRotVelRadps", maxRotVelRadps);
-        radiusM = positive("radiusM", radiusM);
-        widthM = positive("widthM", widthM);
-        lengthM = positive("lengthM", lengthM);
-        frontBumpers = ParamDefaults.or(PioneerParams.class, "frontBumpers", frontBumpers);
-        rearBumpers = ParamDefaults.or(PioneerParams.class, "rearBumpers", rearBumpers);
-        minRangeM = ParamDefaults.or(PioneerParams.class, "minRangeM", minRangeM);
-        maxRangeM = positive("maxRangeM", maxRangeM);
-        beamWidthRad = positive("beamWidthRad", beamWidthRad);
         sonarPoses = sonarPoses == null ? P2DX_SONAR_POSES : List.copyOf(sonarPoses);
 
-        if (keepAlivePeriodMs < 50 || keepAlivePeriodMs > 1500) {
-            throw new IllegalArgumentException("keepAlivePeriodMs must be in 50..1500 (inside the 2 s watchdog), was "
-                    + keepAlivePeriodMs);
-        }
-        if (frontBumpers < 0 || frontBumpers > 7) {
-            throw new IllegalArgumentException("frontBumpers must be in 0..7, was " + frontBumpers);
-        }
-        if (rearBumpers < 0 || rearBumpers > 7) {
-            throw new IllegalArgumentException("rearBumpers must be in 0..7, was " + rearBumpers);
-        }
-        if (!(minRangeM >= 0 && minRangeM < maxRangeM)) {
-            throw new IllegalArgumentException("minRangeM must be in [0, maxRangeM), was " + minRangeM);
-        }
-        if (maxVelMps * 1000 > Short.MAX_VALUE) {
-            throw new IllegalArgumentException("maxVelMps must be at most 32.767, was " + maxVelMps);
+        if (!(minRangeM < maxRangeM)) {
+            throw new IllegalArgumentException("minRangeM must be below maxRangeM, was " + minRangeM);
         }
         if (Math.toDegrees(maxRotVelRadps) > Short.MAX_VALUE) {
             throw new IllegalArgumentException("maxRotVelRadps is too large: " + maxRotVelRadps);
@@ -111,20 +85,11 @@ public record PioneerParams(
 
     /** Every parameter at its default. */
     public static PioneerParams defaults() {
-        return new PioneerParams(null, null, null, null, null, null, null, null, null, null, null, null, null, null,
-                null, null, null, null);
+        return ParamsJson.defaults(PioneerParams.class);
     }
 
     /** Sonar transducers on the robot. */
     public int sonarCount() {
         return sonarPoses.size();
-    }
-
-    private static Double positive(String name, Double value) {
-        double v = ParamDefaults.or(PioneerParams.class, name, value);
-        if (!(v > 0) || !Double.isFinite(v)) {
-            throw new IllegalArgumentException(name + " must be a positive number, was " + value);
-        }
-        return v;
     }
 }

@@ -3,6 +3,7 @@ package org.habla.drivers.pioneer;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import org.habla.driver.ReadingSink;
+import org.habla.driver.SessionChannel;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
 import org.habla.sample.VectorValue;
@@ -18,6 +19,12 @@ final class SipTranslator {
     private final RollingPosition x = new RollingPosition();
     private final RollingPosition y = new RollingPosition();
     private final SonarRing sonar;
+    private final SessionChannel odometry = new SessionChannel(PioneerChannels.ODOMETRY);
+    private final SessionChannel battery = new SessionChannel(PioneerChannels.BATTERY);
+    private final SessionChannel bumpers = new SessionChannel(PioneerChannels.BUMPERS);
+    private final SessionChannel stall = new SessionChannel(PioneerChannels.STALL);
+    private final SessionChannel status = new SessionChannel(PioneerChannels.STATUS);
+    private final SessionChannel sonarRing = new SessionChannel(PioneerChannels.SONAR);
     private volatile RobotIdentity identity = RobotIdentity.UNKNOWN;
     private long ignoredPackets;
 
@@ -38,12 +45,12 @@ final class SipTranslator {
 
     /** Emits every reading {@code sip} carries. */
     void translate(StandardSip sip, ReadingSink sink) {
-        sink.reading(PioneerChannels.ODOMETRY, odometry(sip));
-        sink.reading(PioneerChannels.BATTERY, new NumberValue(batteryV(sip)));
-        sink.reading(PioneerChannels.BUMPERS, bumpers(sip));
-        sink.reading(PioneerChannels.STALL, RecordValue.builder()
+        odometry.publish(sink, odometry(sip));
+        battery.publish(sink, new NumberValue(batteryV(sip)));
+        bumpers.publish(sink, bumpers(sip));
+        stall.publish(sink, RecordValue.builder()
                 .put("left", sip.leftStalled()).put("right", sip.rightStalled()).build());
-        sink.reading(PioneerChannels.STATUS, status(sip));
+        status.publish(sink, status(sip));
         if (!sip.sonar().isEmpty()) {
             for (StandardSip.SonarReading r : sip.sonar()) {
                 if (!sonar.put(r.index(), r.range() * params.rangeConvFactor() / 1000.0)) {
@@ -52,7 +59,7 @@ final class SipTranslator {
             }
             sonar.endUpdate();
             if (sonar.ready()) {
-                sink.reading(PioneerChannels.SONAR, VectorValue.wrap(sonar.snapshot()));
+                sonarRing.publish(sink, VectorValue.wrap(sonar.snapshot()));
             }
         }
     }
@@ -64,15 +71,9 @@ final class SipTranslator {
         double wRadps = sip.rotVelDdegps().isPresent()
                 ? Math.toRadians(sip.rotVelDdegps().getAsInt() / 10.0)
                 : (sip.rightVel() - sip.leftVel()) / 2.0 * params.velConvFactor() * params.diffConvFactor();
-        return RecordValue.builder()
-                .put("xM", x.update(sip.xPos()) * mPerUnit)
-                .put("yM", y.update(sip.yPos()) * mPerUnit)
-                .put("thetaRad", normalise(sip.thPos() * params.angleConvFactor()))
-                .put("vMps", (leftMps + rightMps) / 2.0)
-                .put("wRadps", wRadps)
-                .put("leftMps", leftMps)
-                .put("rightMps", rightMps)
-                .build();
+        return RecordValue.of(new OdometryReading(x.update(sip.xPos()) * mPerUnit, y.update(sip.yPos()) * mPerUnit,
+                normalise(sip.thPos() * params.angleConvFactor()), (leftMps + rightMps) / 2.0, wRadps, leftMps,
+                rightMps));
     }
 
     private static double batteryV(StandardSip sip) {

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.InputStream;
 import org.habla.driver.LinkSession;
 import org.habla.driver.ReadingSink;
+import org.habla.driver.SessionChannel;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.AudioFormat;
 
@@ -19,6 +20,8 @@ import org.habla.sample.AudioFormat;
  * </pre>
  */
 final class MicrophoneSession implements LinkSession {
+
+    private final SessionChannel audioChannel = new SessionChannel(TekkotsuChannels.AUDIO);
 
     static final int PCM = 0;
 
@@ -53,7 +56,7 @@ final class MicrophoneSession implements LinkSession {
             return;
         }
         if (samples.length > 0) {
-            sink.reading(TekkotsuChannels.AUDIO, AudioChunk.wrap(format, samples));
+            audioChannel.publish(sink, AudioChunk.wrap(format, samples));
         }
     }
 }

@@ -5,6 +5,7 @@ import java.io.InputStream;
 import java.util.List;
 import org.habla.driver.LinkSession;
 import org.habla.driver.ReadingSink;
+import org.habla.driver.SessionChannel;
 import org.habla.sample.ImageFrame;
 
 /**
@@ -19,6 +20,8 @@ import org.habla.sample.ImageFrame;
  * link.
  */
 final class RawCamSession implements LinkSession {
+
+    private final SessionChannel cameraChannel = new SessionChannel(TekkotsuChannels.CAMERA);
 
     static final int RESYNC_LIMIT_BYTES = 1 << 20;
     /** Sensor strings are under 1000 bytes; anything longer here is not a packet type. */
@@ -51,13 +54,13 @@ final class RawCamSession implements LinkSession {
         }
     }
 
-    private static void frame(CameraPacket p, ReadingSink sink) {
+    private void frame(CameraPacket p, ReadingSink sink) {
         List<CameraPacket.Section> s = p.sections();
         CameraPacket.Section first = s.get(0);
         if (first.format().startsWith("JPEG")) {
-            sink.reading(TekkotsuChannels.CAMERA, ImageFrame.wrap(p.width(), p.height(), "jpeg", first.data()));
+            cameraChannel.publish(sink, ImageFrame.wrap(p.width(), p.height(), "jpeg", first.data()));
         } else if (s.size() == 1) {
-            sink.reading(TekkotsuChannels.CAMERA, ImageFrame.wrap(first.width(), first.height(), "gray8",
+            cameraChannel.publish(sink, ImageFrame.wrap(first.width(), first.height(), "gray8",
                     first.data()));
         } else {
             String problem = yuvProblem(s);
@@ -65,7 +68,7 @@ final class RawCamSession implements LinkSession {
                 sink.malformed("colour camera packet " + p.frame() + " skipped: " + problem);
                 return;
             }
-            sink.reading(TekkotsuChannels.CAMERA, ImageFrame.wrap(first.width(), first.height(), "bgr8",
+            cameraChannel.publish(sink, ImageFrame.wrap(first.width(), first.height(), "bgr8",
                     YuvToBgr.convert(s.get(0), s.get(1), s.get(2))));
         }
     }

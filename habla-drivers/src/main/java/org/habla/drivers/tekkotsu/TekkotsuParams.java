@@ -4,8 +4,8 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import org.habla.config.ParamsJson;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 
 /**
  * The params of a {@code tekkotsu} interface: which of the Aibo's Tekkotsu servers to open and on
@@ -13,100 +13,66 @@ import org.habla.plugin.ParamDefaults;
  */
 public record TekkotsuParams(
         @Param(value = "Open the World State Serializer (joints, ir, accel, buttons, head).", defaultValue = "true")
-        Boolean worldState,
-        @Param(value = "Port of the World State Serializer.", defaultValue = "10031")
-        Integer worldStatePort,
+        boolean worldState,
+        @Param(value = "Port of the World State Serializer.", defaultValue = "10031", min = 1, max = 65_535)
+        int worldStatePort,
         @Param(value = "Open the walk remote control (the walk command channel).", defaultValue = "true")
-        Boolean walk,
-        @Param(value = "Port of the walk remote control.", defaultValue = "10050")
-        Integer walkPort,
+        boolean walk,
+        @Param(value = "Port of the walk remote control.", defaultValue = "10050", min = 1, max = 65_535)
+        int walkPort,
         @Param(value = "Open the head remote control (the head command channel).", defaultValue = "true")
-        Boolean head,
-        @Param(value = "Port of the head remote control.", defaultValue = "10052")
-        Integer headPort,
+        boolean head,
+        @Param(value = "Port of the head remote control.", defaultValue = "10052", min = 1, max = 65_535)
+        int headPort,
         @Param(value = "Open the emergency-stop control.", defaultValue = "true")
-        Boolean eStop,
-        @Param(value = "Port of the emergency-stop control.", defaultValue = "10053")
-        Integer eStopPort,
+        boolean eStop,
+        @Param(value = "Port of the emergency-stop control.", defaultValue = "10053", min = 1, max = 65_535)
+        int eStopPort,
         @Param(value = "Send 'start' to the emergency-stop control on connecting (the robot boots stopped).",
                 defaultValue = "true")
-        Boolean releaseEStop,
+        boolean releaseEStop,
         @Param(value = "Open the microphone server (the audio channel).", defaultValue = "true")
-        Boolean microphone,
-        @Param(value = "Port of the microphone server.", defaultValue = "10070")
-        Integer microphonePort,
+        boolean microphone,
+        @Param(value = "Port of the microphone server.", defaultValue = "10070", min = 1, max = 65_535)
+        int microphonePort,
         @Param(value = "Open the speaker server (the speaker command channel).", defaultValue = "true")
-        Boolean speaker,
-        @Param(value = "Port of the speaker server.", defaultValue = "10071")
-        Integer speakerPort,
+        boolean speaker,
+        @Param(value = "Port of the speaker server.", defaultValue = "10071", min = 1, max = 65_535)
+        int speakerPort,
         @Param(value = "Sample rate sent to the speaker server; other rates are resampled.", unit = "Hz",
-                defaultValue = "16000")
-        Integer speakerRateHz,
+                defaultValue = "16000", min = 1_000, max = 65_535)
+        int speakerRateHz,
         @Param(value = "Open the raw camera server over TCP (the camera channel).", defaultValue = "true")
-        Boolean camera,
-        @Param(value = "Port of the raw camera server.", defaultValue = "10011")
-        Integer cameraPort,
+        boolean camera,
+        @Param(value = "Port of the raw camera server.", defaultValue = "10011", min = 1, max = 65_535)
+        int cameraPort,
         @Param(value = "Resolution skip the raw camera is set to "
                 + "(0 = 416x320, 1 = 208x160, 2 = 104x80, 3 = 52x40, 4 = 26x20).",
-                defaultValue = "2")
-        Integer cameraSkip,
-        @Param(value = "Height of the camera above the floor when standing.", unit = "m", defaultValue = "0.2")
-        Double cameraHeightM,
+                defaultValue = "2", min = 0, max = 4)
+        int cameraSkip,
+        @Param(value = "Height of the camera above the floor when standing.", unit = "m", defaultValue = "0.2",
+                greaterThan = 0)
+        double cameraHeightM,
         @Param(value = "Open the controller (menu) server to switch the other servers on.", defaultValue = "true")
-        Boolean controller,
-        @Param(value = "Port of the controller (menu) server.", defaultValue = "10020")
-        Integer controllerPort,
+        boolean controller,
+        @Param(value = "Port of the controller (menu) server.", defaultValue = "10020", min = 1, max = 65_535)
+        int controllerPort,
         @Param(value = "Menu items to switch on through the controller",
                 defaultNote = "the items of the servers opened above, under their Tekkotsu 4.0 and 5.x names")
         List<String> startServers,
-        @Param(value = "Walk speed at forward fraction 1.", unit = "m/s", defaultValue = "0.18")
-        Double maxForwardMps,
-        @Param(value = "Walk speed at forward fraction -1.", unit = "m/s", defaultValue = "0.18")
-        Double maxReverseMps,
-        @Param(value = "Walk speed at strafe fraction 1.", unit = "m/s", defaultValue = "0.14")
-        Double maxStrafeMps,
-        @Param(value = "Turn rate at rotate fraction 1.", unit = "rad/s", defaultValue = "1.8")
-        Double maxRotateRadps,
+        @Param(value = "Walk speed at forward fraction 1.", unit = "m/s", defaultValue = "0.18", greaterThan = 0)
+        double maxForwardMps,
+        @Param(value = "Walk speed at forward fraction -1.", unit = "m/s", defaultValue = "0.18", greaterThan = 0)
+        double maxReverseMps,
+        @Param(value = "Walk speed at strafe fraction 1.", unit = "m/s", defaultValue = "0.14", greaterThan = 0)
+        double maxStrafeMps,
+        @Param(value = "Turn rate at rotate fraction 1.", unit = "rad/s", defaultValue = "1.8", greaterThan = 0)
+        double maxRotateRadps,
         @Param(value = "How often the standing walk command is re-sent (the robot stops after 3 s without one).",
-                unit = "ms", defaultValue = "1000")
-        Integer walkResendMs) {
+                unit = "ms", defaultValue = "1000", min = 100, max = 2_500)
+        int walkResendMs) {
 
     public TekkotsuParams {
-        worldState = ParamDefaults.or(TekkotsuParams.class, "worldState", worldState);
-        worldStatePort = port("worldStatePort", worldStatePort);
-        walk = ParamDefaults.or(TekkotsuParams.class, "walk", walk);
-        walkPort = port("walkPort", walkPort);
-        head = ParamDefaults.or(TekkotsuParams.class, "head", head);
-        headPort = port("headPort", headPort);
-        eStop = ParamDefaults.or(TekkotsuParams.class, "eStop", eStop);
-        eStopPort = port("eStopPort", eStopPort);
-        releaseEStop = ParamDefaults.or(TekkotsuParams.class, "releaseEStop", releaseEStop);
-        microphone = ParamDefaults.or(TekkotsuParams.class, "microphone", microphone);
-        microphonePort = port("microphonePort", microphonePort);
-        speaker = ParamDefaults.or(TekkotsuParams.class, "speaker", speaker);
-        speakerPort = port("speakerPort", speakerPort);
-        speakerRateHz = ParamDefaults.or(TekkotsuParams.class, "speakerRateHz", speakerRateHz);
-        if (speakerRateHz < 1_000 || speakerRateHz > 65_535) {
-            throw new IllegalArgumentException("speakerRateHz must be in 1000..65535 Hz, was " + speakerRateHz);
-        }
-        camera = ParamDefaults.or(TekkotsuParams.class, "camera", camera);
-        cameraPort = port("cameraPort", cameraPort);
-        cameraSkip = ParamDefaults.or(TekkotsuParams.class, "cameraSkip", cameraSkip);
-        if (cameraSkip < 0 || cameraSkip > 4) {
-            throw new IllegalArgumentException("cameraSkip must be in 0..4, was " + cameraSkip);
-        }
-        cameraHeightM = positive("cameraHeightM", cameraHeightM);
-        controller = ParamDefaults.or(TekkotsuParams.class, "controller", controller);
-        controllerPort = port("controllerPort", controllerPort);
-        maxForwardMps = positive("maxForwardMps", maxForwardMps);
-        maxReverseMps = positive("maxReverseMps", maxReverseMps);
-        maxStrafeMps = positive("maxStrafeMps", maxStrafeMps);
-        maxRotateRadps = positive("maxRotateRadps", maxRotateRadps);
-        walkResendMs = ParamDefaults.or(TekkotsuParams.class, "walkResendMs", walkResendMs);
-        if (walkResendMs < 100 || walkResendMs > 2_500) {
-            throw new IllegalArgumentException("walkResendMs must be in 100..2500 ms (below the robot's 3 s "
-                    + "dead-man time-out), was " + walkResendMs);
-        }
         if (startServers != null && startServers.contains(null)) {
             throw new IllegalArgumentException("startServers must not contain null");
         }
@@ -128,8 +94,7 @@ public record TekkotsuParams(
 
     /** Every default. */
     public static TekkotsuParams defaults() {
-        return new TekkotsuParams(null, null, null, null, null, null, null, null, null, null, null, null, null,
-                null, null, null, null, null, null, null, null, null, null, null, null, null);
+        return ParamsJson.defaults(TekkotsuParams.class);
     }
 
     /** The menu items of the enabled servers: Tekkotsu 4.0 names, then the 5.x names where they differ. */
@@ -169,21 +134,5 @@ public record TekkotsuParams(
                         + "; each server needs its own port");
             }
         }
-    }
-
-    private static int port(String name, Integer value) {
-        int p = ParamDefaults.or(TekkotsuParams.class, name, value);
-        if (p < 1 || p > 65_535) {
-            throw new IllegalArgumentException(name + " must be in 1..65535, was " + p);
-        }
-        return p;
-    }
-
-    private static double positive(String name, Double value) {
-        double v = ParamDefaults.or(TekkotsuParams.class, name, value);
-        if (!(v > 0) || Double.isInfinite(v)) {
-            throw new IllegalArgumentException(name + " must be a positive number, was " + v);
-        }
-        return v;
     }
 }

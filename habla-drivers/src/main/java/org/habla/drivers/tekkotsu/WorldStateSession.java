@@ -9,6 +9,7 @@ import java.util.HexFormat;
 import java.util.Optional;
 import org.habla.driver.LinkSession;
 import org.habla.driver.ReadingSink;
+import org.habla.driver.SessionChannel;
 import org.habla.sample.RecordValue;
 import org.habla.sample.VectorValue;
 
@@ -22,6 +23,12 @@ import org.habla.sample.VectorValue;
  * decoded at all and ends the link with a message that says so.
  */
 final class WorldStateSession implements LinkSession {
+
+    private final SessionChannel accelChannel = new SessionChannel(TekkotsuChannels.ACCEL);
+    private final SessionChannel buttonsChannel = new SessionChannel(TekkotsuChannels.BUTTONS);
+    private final SessionChannel headPoseChannel = new SessionChannel(TekkotsuChannels.HEAD_POSE);
+    private final SessionChannel irChannel = new SessionChannel(TekkotsuChannels.IR);
+    private final SessionChannel jointsChannel = new SessionChannel(TekkotsuChannels.JOINTS);
 
     /** How far to look for the next packet start in garbage before giving up on the stream. */
     static final int RESYNC_LIMIT_BYTES = 4_096;
@@ -95,28 +102,28 @@ final class WorldStateSession implements LinkSession {
         }
     }
 
-    static void publish(WorldStatePacket p, ReadingSink sink) {
+    void publish(WorldStatePacket p, ReadingSink sink) {
         float[] out = p.outputs();
         double[] joints = new double[Ers7.NUM_PID_JOINTS];
         for (int i = 0; i < joints.length; i++) {
             joints[i] = out[i];
         }
-        sink.reading(TekkotsuChannels.JOINTS, VectorValue.wrap(joints));
-        sink.reading(TekkotsuChannels.HEAD_POSE, RecordValue.builder()
+        jointsChannel.publish(sink, VectorValue.wrap(joints));
+        headPoseChannel.publish(sink, RecordValue.builder()
                 .put("tiltRad", (double) out[Ers7.HEAD_TILT])
                 .put("panRad", (double) out[Ers7.HEAD_PAN])
                 .put("nodRad", (double) out[Ers7.HEAD_NOD])
                 .build());
         float[] s = p.sensors();
-        sink.reading(TekkotsuChannels.IR, VectorValue.of(
+        irChannel.publish(sink, VectorValue.of(
                 s[Ers7.NEAR_IR] / 1000.0, s[Ers7.FAR_IR] / 1000.0, s[Ers7.CHEST_IR] / 1000.0));
-        sink.reading(TekkotsuChannels.ACCEL, VectorValue.of(s[Ers7.B_ACCEL], s[Ers7.L_ACCEL], s[Ers7.D_ACCEL]));
+        accelChannel.publish(sink, VectorValue.of(s[Ers7.B_ACCEL], s[Ers7.L_ACCEL], s[Ers7.D_ACCEL]));
         RecordValue.Builder buttons = RecordValue.builder();
         float[] b = p.buttons();
         for (int i = 0; i < b.length; i++) {
             buttons.put(Ers7.BUTTON_NAMES.get(i), unit(b[i]));
         }
-        sink.reading(TekkotsuChannels.BUTTONS, buttons.build());
+        buttonsChannel.publish(sink, buttons.build());
     }
 
     /** A button value clamped to 0..1; NaN reads as not pressed. */

@@ -13,6 +13,7 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.time.Duration;
 import java.util.List;
+import org.habla.config.ParamsJson;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.InterfaceAddress;
@@ -64,9 +65,9 @@ class InterfaceSessionTest {
     @BeforeEach
     void connect() throws IOException {
         program = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
-        InterfaceParams params = new ObjectMapper().readValue(PARAMS, InterfaceParams.class);
-        Driver driver = new InterfaceDriverProvider().create(InterfaceAddress.parse("127.0.0.1:" + program.getLocalPort()),
-                params);
+        InterfaceParams params = ParamsJson.of(InterfaceParams.class, PARAMS);
+        Driver driver = new InterfaceProtocolDriverProvider().create(
+                InterfaceAddress.parse("127.0.0.1:" + program.getLocalPort()), params);
         Connection connection = driver.connections().get(0);
         assertThat(connection.port()).isEqualTo(program.getLocalPort());
         assertThat(connection.commandChannels()).containsExactlyInAnyOrder("wheels", "lamp");
@@ -122,8 +123,8 @@ class InterfaceSessionTest {
         robotSends("{\"type\":\"hello\",\"protocol\":\"habla-interface/9\",\"channels\":[]}\n");
         assertThatThrownBy(() -> session.handshake(hablaIn, hablaOut, sink))
                 .hasMessageContaining("speaks protocol \"habla-interface/9\"");
-        LinkSession fresh = new InterfaceDriverProvider().create(InterfaceAddress.parse("localhost"),
-                new ObjectMapper().readValue(PARAMS, InterfaceParams.class)).connections().get(0).sessions().get();
+        LinkSession fresh = new InterfaceProtocolDriverProvider().create(InterfaceAddress.parse("localhost"),
+                ParamsJson.of(InterfaceParams.class, PARAMS)).connections().get(0).sessions().get();
         robotSends("{\"type\":\"reading\",\"channel\":\"ir\",\"value\":[1]}\n");
         assertThatThrownBy(() -> fresh.handshake(hablaIn, hablaOut, sink)).hasMessageContaining("must be a hello");
     }
@@ -203,7 +204,7 @@ class InterfaceSessionTest {
     @Test
     void theDriverIsFoundByItsNameThroughServiceDiscovery() {
         PluginRegistry registry = PluginRegistry.discover();
-        assertThat(registry.driver("habla")).get().isInstanceOf(InterfaceDriverProvider.class);
+        assertThat(registry.driver("habla")).get().isInstanceOf(InterfaceProtocolDriverProvider.class);
         assertThat(registry.driver("habla").get().paramsType()).isEqualTo(InterfaceParams.class);
     }
 
@@ -215,17 +216,17 @@ class InterfaceSessionTest {
     @Test
     void paramsRequireChannelsAndCheckThem() {
         ObjectMapper json = new ObjectMapper();
-        assertThatThrownBy(() -> json.readValue("{}", InterfaceParams.class)).hasMessageContaining("channels:");
-        assertThatThrownBy(() -> json.readValue("{\"channels\":[{\"name\":\"ir\",\"direction\":\"up\",\"kind\":\"vector\"}]}",
-                InterfaceParams.class)).hasMessageContaining("direction: channel 'ir' has direction 'up'");
-        assertThatThrownBy(() -> json.readValue("{\"channels\":[{\"name\":\"link\",\"direction\":\"reading\","
-                + "\"kind\":\"record\"}]}", InterfaceParams.class)).hasMessageContaining("'link' is the engine's");
-        assertThatThrownBy(() -> json.readValue("{\"channels\":[{\"name\":\"a\",\"direction\":\"reading\","
-                + "\"kind\":\"number\",\"motion\":true}]}", InterfaceParams.class)).hasMessageContaining("motion");
-        assertThatThrownBy(() -> json.readValue(PARAMS.replace("250", "5"), InterfaceParams.class))
-                .hasMessageContaining("keepAliveMs must be within 50..60000");
-        List<String> names = new InterfaceParams(List.of(new ChannelSpec("ir", "reading", "vector", null, null, null)),
-                null).descriptors().stream().map(d -> d.name() + ":" + d.unit()).toList();
+        assertThatThrownBy(() -> ParamsJson.of(InterfaceParams.class, "{}")).hasMessageContaining("channels:");
+        assertThatThrownBy(() -> ParamsJson.of(InterfaceParams.class, "{\"channels\":[{\"name\":\"ir\",\"direction\":\"up\",\"kind\":\"vector\"}]}")).hasMessageContaining("direction: channel 'ir' has direction 'up'");
+        assertThatThrownBy(() -> ParamsJson.of(InterfaceParams.class, "{\"channels\":[{\"name\":\"link\",\"direction\":\"reading\","
+                + "\"kind\":\"record\"}]}")).hasMessageContaining("'link' is the engine's");
+        assertThatThrownBy(() -> ParamsJson.of(InterfaceParams.class, "{\"channels\":[{\"name\":\"a\",\"direction\":\"reading\","
+                + "\"kind\":\"number\",\"motion\":true}]}")).hasMessageContaining("motion");
+        assertThatThrownBy(() -> ParamsJson.of(InterfaceParams.class, PARAMS.replace("250", "5")))
+                .hasMessageContaining("$.params.keepAliveMs: must be within [50, 60000], was 5");
+        List<String> names = ParamsJson.of(InterfaceParams.class,
+                "{\"channels\":[{\"name\":\"ir\",\"direction\":\"reading\",\"kind\":\"vector\"}]}")
+                .descriptors().stream().map(d -> d.name() + ":" + d.unit()).toList();
         assertThat(names).containsExactly("ir:");
     }
 }

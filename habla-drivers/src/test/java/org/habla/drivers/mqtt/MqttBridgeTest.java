@@ -78,7 +78,7 @@ class MqttBridgeTest {
                 String discovery = broker.client(15_000, "mosquitto_sub", "-t", "homeassistant/#", "-v", "-C", "4",
                         "-W", "10");
                 assertThat(discovery).contains("homeassistant/sensor/habla_bridge-test_level_out/config",
-                        "\"state_topic\":\"habla/bridge-test/level\"", "homeassistant/text/habla_bridge-test_say/config");
+                        "\"state_topic\":\"habla/bridge-test/level/out/state\"", "homeassistant/text/habla_bridge-test_say/config");
 
                 // A reading on the device topic comes out of the bridge as the socket's sample line.
                 Process sub = broker.subscriber("-t", "habla/bridge-test/level", "-C", "1", "-W", "20");

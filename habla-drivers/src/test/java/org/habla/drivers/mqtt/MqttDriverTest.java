@@ -42,10 +42,12 @@ class MqttDriverTest {
              "interfaces": [{"id": "room", "driver": "mqtt", "address": "%s",
                "reconnect": {"initialMs": 100, "maxMs": 400},
                "params": {"version": "%s", "keepAliveS": 2,
-                 "devices": [{"name": "hall_motion", "availabilityTopic": "z2m/hall_motion/availability"},
-                             {"name": "hall_lamp", "availabilityTopic": "z2m/hall_lamp/availability"}],
+                 "devices": [{"name": "z2m", "availabilityTopic": "z2m/bridge/state"},
+                             {"name": "hall_motion", "availabilityTopic": "z2m/hall_motion/availability", "via": "z2m"},
+                             {"name": "hall_lamp", "availabilityTopic": "z2m/hall_lamp/availability", "via": "z2m"}],
                  "readings": [
                    {"channel": "motion", "topic": "z2m/hall_motion", "field": "occupancy", "device": "hall_motion"},
+                   {"channel": "hall_lux", "topic": "z2m/hall_motion", "field": "illuminance", "unit": "lx", "device": "hall_motion"},
                    {"channel": "temperature", "topic": "tele/kitchen/SENSOR", "field": "AM2301.Temperature", "unit": "degC"},
                    {"channel": "lux", "topic": "sensors/+/lux"},
                    {"channel": "words", "topic": "words/#", "kind": "text"}],
@@ -103,7 +105,8 @@ class MqttDriverTest {
             assertThat(lux.nextOfType("sample").path("value").asDouble()).isEqualTo(412.5);
             assertThat(words.nextOfType("sample").path("value").asText()).isEqualTo("lights on");
 
-            // A state without the field is no reading; a payload that is not JSON is counted as malformed.
+            // A state without the field is no reading; a payload that is not JSON is counted as malformed, once
+            // although it feeds two channels (motion and hall_lux).
             broker.publish("z2m/hall_motion", "{\"battery\":96}", false);
             broker.publish("z2m/hall_motion", "not json", false);
             broker.publish("z2m/hall_motion", "{\"occupancy\":false}", false);
@@ -134,6 +137,33 @@ class MqttDriverTest {
             motion.staleness(false);
             broker.publish("z2m/hall_motion", "{\"occupancy\":true}", false);
             assertThat(motion.nextOfType("sample").path("stale").asBoolean()).isFalse();
+        }
+    }
+
+    @Test
+    void aZigbee2MqttBridgeLeavingByItsLastWillMakesEveryDeviceReachedThroughItStale(@TempDir Path tmp)
+            throws Exception {
+        int[] ports = DaemonProcess.freePorts(5);
+        try (Mosquitto broker = Mosquitto.start(tmp); Daemon daemon = daemon(broker, "5", ports);
+                ControlLines motion = new ControlLines(ports[0]); ControlLines lux = new ControlLines(ports[2])) {
+            motion.staleness(false);
+            // Zigbee2MQTT as a real client: its bridge says online and leaves a last will; its devices say online.
+            broker.publish("z2m/bridge/request/health", "{}", true);
+            Process z2m = broker.subscriber("-i", "zigbee2mqtt", "-t", "z2m/bridge/request/#", "--will-topic",
+                    "z2m/bridge/state", "--will-payload", "{\"state\":\"offline\"}", "--will-retain");
+            try (BufferedReader said = new BufferedReader(new InputStreamReader(z2m.getInputStream(), UTF_8))) {
+                assertThat(said.readLine()).as("connected, with its will").isEqualTo("{}");
+                broker.publish("z2m/bridge/state", "{\"state\":\"online\"}", true);
+                broker.publish("z2m/hall_motion/availability", "{\"state\":\"online\"}", true);
+            } finally {
+                z2m.destroyForcibly().waitFor(); // dies without a goodbye: the broker publishes its will
+            }
+            JsonNode notice = motion.staleness(true);
+            assertThat(notice.path("why").asText()).contains("z2m is offline", "hall_motion is reached through z2m");
+            broker.publish("sensors/desk/lux", "100", false);
+            assertThat(lux.nextOfType("sample").path("stale").asBoolean()).as("no device: not stale").isFalse();
+            broker.publish("z2m/bridge/state", "{\"state\":\"online\"}", true);
+            motion.staleness(false);
         }
     }
 

@@ -6,6 +6,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.Map;
 import java.util.Optional;
+import org.habla.config.ParamsJson;
 import org.habla.sample.NumberValue;
 import org.habla.sample.Payload;
 import org.habla.sample.RecordValue;
@@ -20,6 +21,22 @@ class MqttMappingTest {
         return new ReadingDecoder(new ReadingMap("ch", "t/#", field, kind, null, null,
                 kind.equals("number") ? Map.of("Open", 2.0) : Map.of()))
                 .decode(payload.getBytes(UTF_8));
+    }
+
+    @Test
+    void aDeviceIsReachedThroughAListedDeviceAndNeverThroughItself() {
+        String devices = "{\"readings\": [{\"channel\": \"m\", \"topic\": \"z/m\", \"device\": \"m\"}], \"devices\": [%s]}";
+        String ok = devices.formatted("{\"name\": \"z\", \"availabilityTopic\": \"z/bridge/state\"},"
+                + "{\"name\": \"m\", \"availabilityTopic\": \"z/m/availability\", \"via\": \"z\"}");
+        var mapper = new com.fasterxml.jackson.databind.ObjectMapper();
+        org.assertj.core.api.Assertions.assertThatCode(() -> ParamsJson.of(MqttParams.class, ok))
+                .doesNotThrowAnyException();
+        assertThatThrownBy(() -> ParamsJson.of(MqttParams.class, devices.formatted(
+                "{\"name\": \"m\", \"availabilityTopic\": \"z/m/availability\", \"via\": \"hub\"}"))).hasStackTraceContaining("'m' is reached via 'hub', which is not in \"devices\"");
+        assertThatThrownBy(() -> ParamsJson.of(MqttParams.class, devices.formatted(
+                "{\"name\": \"a\", \"availabilityTopic\": \"a/s\", \"via\": \"m\"},"
+                + "{\"name\": \"m\", \"availabilityTopic\": \"m/s\", \"via\": \"a\"}")))
+                .hasStackTraceContaining("goes round in a circle");
     }
 
     @Test

@@ -90,6 +90,11 @@ class PcmStreamSessionTest {
         long[] source = new long[1];
         org.habla.driver.ReadingSink timing = new org.habla.driver.ReadingSink() {
             @Override
+            public Channel channel(String name) {
+                return Channel.of(value -> reading(name, value), (value, micros) -> reading(name, value, micros));
+            }
+
+            @Override
             public void reading(String channel, Payload value) {
                 throw new AssertionError("audio must carry its source time");
             }

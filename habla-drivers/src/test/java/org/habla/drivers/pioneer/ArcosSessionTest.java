@@ -14,6 +14,7 @@ import java.net.InetAddress;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
 import java.time.Duration;
+import org.habla.config.ParamsJson;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
 import org.habla.sample.TextValue;
@@ -49,7 +50,7 @@ class ArcosSessionTest {
     }
 
     private static ArcosSession session(String paramsJson) throws IOException {
-        return new ArcosSession(new com.fasterxml.jackson.databind.ObjectMapper().readValue(paramsJson, PioneerParams.class));
+        return new ArcosSession(ParamsJson.of(PioneerParams.class, paramsJson));
     }
 
     @Test

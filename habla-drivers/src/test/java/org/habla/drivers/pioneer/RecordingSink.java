@@ -19,6 +19,11 @@ public final class RecordingSink implements ReadingSink {
     private final List<ObjectNode> robotInfo = new CopyOnWriteArrayList<>();
 
     @Override
+    public Channel channel(String name) {
+        return Channel.of(value -> reading(name, value), (value, micros) -> reading(name, value, micros));
+    }
+
+    @Override
     public void reading(String channel, Payload value) {
         readings.add(new Reading(channel, value));
     }

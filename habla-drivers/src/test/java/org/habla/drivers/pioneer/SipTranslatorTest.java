@@ -3,6 +3,7 @@ package org.habla.drivers.pioneer;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
+import org.habla.config.ParamsJson;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
 import org.habla.sample.VectorValue;
@@ -126,8 +127,8 @@ class SipTranslatorTest {
     @Test
     void aP3dxNeedsBothConversionFactorsForTrueMetresOfSonarAndOdometry() throws Exception {
         com.fasterxml.jackson.databind.ObjectMapper json = new com.fasterxml.jackson.databind.ObjectMapper();
-        PioneerParams p3dx = json.readValue("{\"distConvFactor\": 0.485, \"rangeConvFactor\": 1.0}", PioneerParams.class);
-        PioneerParams distOnly = json.readValue("{\"distConvFactor\": 0.485}", PioneerParams.class);
+        PioneerParams p3dx = ParamsJson.of(PioneerParams.class, "{\"distConvFactor\": 0.485, \"rangeConvFactor\": 1.0}");
+        PioneerParams distOnly = ParamsJson.of(PioneerParams.class, "{\"distConvFactor\": 0.485}");
         // An ARCOS P3-DX (and AMRISim's p3dx) reports sonar in millimetres and positions in 0.485 mm units.
         SipBytes b = new SipBytes();
         b.xPos = 2000;

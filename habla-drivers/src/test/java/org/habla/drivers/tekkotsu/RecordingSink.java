@@ -17,6 +17,11 @@ final class RecordingSink implements ReadingSink {
     final List<ObjectNode> info = new CopyOnWriteArrayList<>();
 
     @Override
+    public Channel channel(String name) {
+        return Channel.of(value -> reading(name, value), (value, micros) -> reading(name, value, micros));
+    }
+
+    @Override
     public void reading(String channel, Payload value) {
         readings.add(new Reading(channel, value));
     }

@@ -3,8 +3,9 @@ package org.habla.drivers.tekkotsu;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
-import org.habla.driver.ChannelDescriptor;
+import org.habla.config.ParamsJson;
 import org.habla.driver.ChannelDescriptor.Direction;
+import org.habla.driver.ChannelDescriptor;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.InterfaceAddress;
@@ -84,8 +85,7 @@ class TekkotsuDriverTest {
 
     @Test
     void aServerSwitchedOffOffersNeitherItsConnectionNorItsChannels() throws Exception {
-        TekkotsuParams p = new com.fasterxml.jackson.databind.ObjectMapper().readValue(
-                "{\"head\": false, \"microphone\": false, \"camera\": false}", TekkotsuParams.class);
+        TekkotsuParams p = ParamsJson.of(TekkotsuParams.class, "{\"head\": false, \"microphone\": false, \"camera\": false}");
         Driver d = new TekkotsuDriver(p);
 
         assertThat(d.connections()).extracting(Connection::name).containsExactly("worldstate", "walk", "speaker",

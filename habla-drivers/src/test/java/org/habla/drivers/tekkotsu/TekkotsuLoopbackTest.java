@@ -15,6 +15,7 @@ import java.util.HexFormat;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import org.habla.config.ParamsJson;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.InterfaceAddress;
@@ -84,7 +85,7 @@ class TekkotsuLoopbackTest {
                 .formatted(port("worldstate"), port("microphone"), port("camera"), port("walk"), port("head"),
                         port("speaker"), port("estop"), port("controller"));
         Driver driver = new TekkotsuDriverProvider().create(InterfaceAddress.parse("127.0.0.1"),
-                new ObjectMapper().readValue(params, TekkotsuParams.class));
+                ParamsJson.of(TekkotsuParams.class, params));
         Map<String, LoopbackLink> byName = new LinkedHashMap<>();
         for (Connection c : driver.connections()) {
             LoopbackLink link = new LoopbackLink(c.port(), c, sink);
@@ -140,10 +141,10 @@ class TekkotsuLoopbackTest {
         }));
         servers.put("walk", new TinyServer((out, s) -> s.holdOpen()));
         Driver driver = new TekkotsuDriverProvider().create(InterfaceAddress.parse("127.0.0.1"),
-                new ObjectMapper().readValue("""
+                ParamsJson.of(TekkotsuParams.class, """
                         {"worldStatePort": %d, "walkPort": %d, "head": false, "eStop": false, "microphone": false,
                          "speaker": false, "camera": false, "controller": false}"""
-                        .formatted(port("worldstate"), port("walk")), TekkotsuParams.class));
+                        .formatted(port("worldstate"), port("walk"))));
         LoopbackLink world = new LoopbackLink(port("worldstate"), driver.connections().get(0), sink);
         LoopbackLink walk = new LoopbackLink(port("walk"), driver.connections().get(1), sink);
         links.add(world);

@@ -36,7 +36,7 @@ public final class Wheels extends SensorActuatorMethod {
     private static final OutputPort<VectorValue> MOTION_OUT = OutputPort.of("motion", VectorValue.class,
             new Shape(PayloadKind.VECTOR, "m/s, rad/s", List.of("vMps", "wRadps"), "the motion sent to the base"));
     private static final OutputPort<RecordValue> LIMITS = OutputPort.of("limits", RecordValue.class,
-            Shape.record("the base's top speeds in force", MotionLimits.class));
+            Shape.record("the base's top speeds in force", MotionLimits.LAYOUT));
     private static final InputPort<VectorValue> MOTION_IN = InputPort.of("motion", VectorValue.class,
             Delivery.latest());
     static final Ports PORTS = Ports.of(MOTION_OUT, LIMITS, MOTION_IN);

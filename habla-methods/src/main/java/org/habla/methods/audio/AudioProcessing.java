@@ -31,7 +31,7 @@ public final class AudioProcessing extends ProcessingMethod {
     static final int MIN_RATE_HZ = 4000;
 
     private static final OutputPort<RecordValue> FEATURES = OutputPort.of("features", RecordValue.class,
-            Shape.record("level, pitch and band spectrum of one frame", "rms", "db", "pitchHz", "voiced", "spectrum"));
+            Shape.record("level, pitch and band spectrum of one frame", FrameFeatures.LAYOUT));
     private static final OutputPort<AudioChunk> SEGMENTS = OutputPort.of("segments", AudioChunk.class,
             new Shape(PayloadKind.AUDIO, "", java.util.List.of(), "one utterance or tone, mono 16-bit"));
 

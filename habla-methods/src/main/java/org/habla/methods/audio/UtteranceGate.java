@@ -80,6 +80,11 @@ public final class UtteranceGate {
         return isOpen ? loudMs : 0;
     }
 
+    /** How long the open segment has been open, in ms (0 when the gate is shut). */
+    public double openMs() {
+        return isOpen ? openMs : 0;
+    }
+
     /** How long the open segment has been without speech, in ms (0 while speech goes on or the gate is shut). */
     public double quietMs() {
         return isOpen ? quietMs : 0;

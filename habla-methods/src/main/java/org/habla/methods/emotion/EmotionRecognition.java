@@ -1,12 +1,10 @@
 package org.habla.methods.emotion;
 
-import com.fasterxml.jackson.databind.JsonNode;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
 import java.util.Locale;
-import java.util.Map;
 import org.habla.method.Delivery;
 import org.habla.method.InputPort;
 import org.habla.method.Layer;
@@ -15,6 +13,7 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
+import org.habla.methods.audio.FrameFeatures;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
@@ -62,8 +61,7 @@ public final class EmotionRecognition extends VirtualMethod {
     private static final InputPort<NumberValue> REWARD = InputPort.optional("reward", NumberValue.class,
             Delivery.queue(16));
     private static final OutputPort<RecordValue> EMOTION = OutputPort.of("emotion", RecordValue.class,
-            Shape.record("the teacher's attitude at each word, touch or reward",
-                    "emotion", "valence", "arousal", "words", "intensity", "source"));
+            Shape.record("the teacher's attitude at each word, touch or reward", TeacherEmotion.LAYOUT));
     static final Ports PORTS = Ports.of(WORDS, FEATURES, TOUCH, REWARD, EMOTION);
 
     private record Frame(long micros, double db, double pitchHz, boolean voiced) {
@@ -103,15 +101,14 @@ public final class EmotionRecognition extends VirtualMethod {
     }
 
     private void onFeatures(RecordValue f, Sample sample) {
-        JsonNode db = f.get("db");
-        if (!db.isNumber() || !Double.isFinite(db.doubleValue())) {
+        FrameFeatures features = FrameFeatures.fromRecord(f);
+        if (!Double.isFinite(features.db())) {
             ignored++;
             return;
         }
-        JsonNode pitch = f.get("pitchHz");
-        double hz = pitch.isNumber() && Double.isFinite(pitch.doubleValue()) ? pitch.doubleValue() : 0;
-        boolean voiced = f.get("voiced").asBoolean(false) && hz > 0;
-        frames.addLast(new Frame(sample.sourceMicros(), db.doubleValue(), hz, voiced));
+        double hz = Double.isFinite(features.pitchHz()) ? features.pitchHz() : 0;
+        boolean voiced = features.voiced() && hz > 0;
+        frames.addLast(new Frame(sample.sourceMicros(), features.db(), hz, voiced));
         long oldest = sample.sourceMicros() - params.utteranceWindowMs() * 1000L;
         while (frames.size() > MAX_FRAMES || (!frames.isEmpty() && frames.peekFirst().micros() < oldest)) {
             frames.removeFirst();
@@ -222,8 +219,8 @@ public final class EmotionRecognition extends VirtualMethod {
     }
 
     private void report(double valence, double arousal, String words, double intensityDb, String source) {
-        emit(emotion, RecordValue.builder().put("emotion", classify(valence, arousal)).put("valence", valence)
-                .put("arousal", arousal).put("words", words).put("intensity", intensityDb).put("source", source).build());
+        emit(emotion, RecordValue.of(new TeacherEmotion(classify(valence, arousal), valence, arousal, words, intensityDb,
+                source)));
     }
 
     /** The rule that names the emotion of a valence and an arousal. */

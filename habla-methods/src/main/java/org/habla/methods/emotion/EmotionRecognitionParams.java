@@ -3,9 +3,8 @@ package org.habla.methods.emotion;
 import java.util.Locale;
 import java.util.Map;
 import java.util.TreeMap;
-import org.habla.methods.ParamRules;
+import org.habla.config.ParamsJson;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code emotion-recognition} method: the word lists, the touch meanings and the rule thresholds. */
 public record EmotionRecognitionParams(
@@ -16,43 +15,43 @@ public record EmotionRecognitionParams(
         @Param(value = "Valence in [-1, 1] of a touch event, by button name",
                 defaultValue = "{\"backMiddle\":1,\"backFront\":0.6,\"backRear\":0.6,\"chin\":0.5,\"headTouch\":-1}")
         Map<String, Double> touchValence,
-        @Param(value = "How long before the words the voice's frames count for them", unit = "ms", defaultValue = "3000")
-        Integer utteranceWindowMs,
-        @Param(value = "Share of each utterance's level and pitch that moves the running baseline", defaultValue = "0.2")
-        Double baselineWeight,
-        @Param(value = "How many speakers get a baseline of their own, told apart by pitch", defaultValue = "1")
-        Integer voices,
+        @Param(value = "How long before the words the voice's frames count for them", unit = "ms",
+                defaultValue = "3000", min = 100, max = 60_000)
+        int utteranceWindowMs,
+        @Param(value = "Share of each utterance's level and pitch that moves the running baseline",
+                defaultValue = "0.2", min = 0, max = 1)
+        double baselineWeight,
+        @Param(value = "How many speakers get a baseline of their own, told apart by pitch", defaultValue = "1",
+                min = 1, max = 8)
+        int voices,
         @Param(value = "An utterance this far in pitch from every baseline starts a new one (while fewer than voices)",
-                unit = "octaves", defaultValue = "0.35")
-        Double voiceSplitOctaves,
-        @Param(value = "Level above the baseline that counts as fully loud", unit = "dB", defaultValue = "12")
-        Double loudRangeDb,
-        @Param(value = "Pitch rise above the baseline that counts as fully high", unit = "octaves", defaultValue = "0.5")
-        Double pitchRangeOctaves,
-        @Param(value = "Valence from which the emotion is positive (happy or excited)", defaultValue = "0.3")
-        Double positiveValence,
-        @Param(value = "Arousal from which a positive emotion is excited", defaultValue = "0.7") Double excitedArousal,
-        @Param(value = "Arousal from which a negative emotion is angry rather than sad", defaultValue = "0.5")
-        Double angryArousal) {
+                unit = "octaves", defaultValue = "0.35", min = 0.05, max = 4)
+        double voiceSplitOctaves,
+        @Param(value = "Level above the baseline that counts as fully loud", unit = "dB", defaultValue = "12",
+                min = 0.1, max = 100)
+        double loudRangeDb,
+        @Param(value = "Pitch rise above the baseline that counts as fully high", unit = "octaves",
+                defaultValue = "0.5", min = 0.01, max = 4)
+        double pitchRangeOctaves,
+        @Param(value = "Valence from which the emotion is positive (happy or excited)", defaultValue = "0.3",
+                min = 0, max = 1)
+        double positiveValence,
+        @Param(value = "Arousal from which a positive emotion is excited", defaultValue = "0.7",
+                min = 0, max = 1)
+        double excitedArousal,
+        @Param(value = "Arousal from which a negative emotion is angry rather than sad", defaultValue = "0.5",
+                min = 0, max = 1)
+        double angryArousal) {
 
     public EmotionRecognitionParams {
-        valence = lowerCased(ParamDefaults.or(EmotionRecognitionParams.class, "valence", valence), "valence");
-        touchValence = checked(ParamDefaults.or(EmotionRecognitionParams.class, "touchValence", touchValence),
+        valence = lowerCased(valence, "valence");
+        touchValence = checked(touchValence,
                 "touchValence");
-        utteranceWindowMs = ParamRules.within(EmotionRecognitionParams.class, "utteranceWindowMs", utteranceWindowMs, 100, 60_000);
-        baselineWeight = ParamRules.within(EmotionRecognitionParams.class, "baselineWeight", baselineWeight, 0, 1);
-        voices = ParamRules.within(EmotionRecognitionParams.class, "voices", voices, 1, 8);
-        voiceSplitOctaves = ParamRules.within(EmotionRecognitionParams.class, "voiceSplitOctaves", voiceSplitOctaves, 0.05, 4);
-        loudRangeDb = ParamRules.within(EmotionRecognitionParams.class, "loudRangeDb", loudRangeDb, 0.1, 100);
-        pitchRangeOctaves = ParamRules.within(EmotionRecognitionParams.class, "pitchRangeOctaves", pitchRangeOctaves, 0.01, 4);
-        positiveValence = ParamRules.within(EmotionRecognitionParams.class, "positiveValence", positiveValence, 0, 1);
-        excitedArousal = ParamRules.within(EmotionRecognitionParams.class, "excitedArousal", excitedArousal, 0, 1);
-        angryArousal = ParamRules.within(EmotionRecognitionParams.class, "angryArousal", angryArousal, 0, 1);
     }
 
     /** Every parameter at its default. */
     public static EmotionRecognitionParams defaults() {
-        return new EmotionRecognitionParams(null, null, null, null, null, null, null, null, null, null, null);
+        return ParamsJson.defaults(EmotionRecognitionParams.class);
     }
 
     private static Map<String, Double> lowerCased(Map<String, Double> in, String name) {

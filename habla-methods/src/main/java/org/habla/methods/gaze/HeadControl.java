@@ -1,6 +1,5 @@
 package org.habla.methods.gaze;
 
-import com.fasterxml.jackson.databind.JsonNode;
 import java.time.Duration;
 import org.habla.method.Delivery;
 import org.habla.method.InputPort;
@@ -11,6 +10,7 @@ import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
 import org.habla.methods.geometry.CameraModel;
+import org.habla.methods.vision.BlobList;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
@@ -54,7 +54,7 @@ public final class HeadControl extends ProcessingMethod {
 
     HeadControl(HeadControlParams params) {
         this.params = params;
-        this.limits = HeadLimits.resolve(params, null);
+        this.limits = params.limits();
         this.commanded = limits.clamp(new HeadPose(params.scanTiltRad(), 0, params.nodRad()));
         input(BLOBS, this::onBlobs);
         input(CAMERA, this::onCamera);
@@ -81,13 +81,12 @@ public final class HeadControl extends ProcessingMethod {
     }
 
     private void onBlobs(RecordValue record, Sample sample) {
-        JsonNode blob = target(record.get("blobs"));
+        BlobList list = BlobList.fromRecord(record).orElse(null);
+        BlobList.Entry blob = list == null ? null : list.largest(params.label(), BlobList.Entry::centred).orElse(null);
         if (blob == null) {
             return;
         }
-        JsonNode w = record.get("width");
-        JsonNode h = record.get("height");
-        if (camera == null || !w.isInt() || !h.isInt() || w.intValue() <= 0 || h.intValue() <= 0) {
+        if (camera == null || list.width() <= 0 || list.height() <= 0) {
             if (!warnedNoCamera) {
                 warnedNoCamera = true;
                 log().warn("{}: cannot aim without the image size and field of view; wire input camera or set "
@@ -95,8 +94,8 @@ public final class HeadControl extends ProcessingMethod {
             }
             return;
         }
-        CameraModel cam = camera.withSize(w.intValue(), h.intValue());
-        double[] ray = cam.ray(blob.get("cx").doubleValue(), blob.get("cy").doubleValue());
+        CameraModel cam = camera.withSize(list.width(), list.height());
+        double[] ray = cam.ray(blob.cx(), blob.cy());
         double left = Math.atan(ray[1]);
         double up = Math.atan(ray[2]);
         HeadPose then = measured.at(sample.sourceMicros());
@@ -131,19 +130,6 @@ public final class HeadControl extends ProcessingMethod {
         emit(head, commanded.toVector());
     }
 
-    private JsonNode target(JsonNode blobs) {
-        if (!blobs.isArray()) {
-            return null;
-        }
-        for (JsonNode b : blobs) {
-            boolean labelled = params.label().isEmpty() || params.label().equals(b.path("label").asText());
-            if (labelled && b.path("cx").isNumber() && b.path("cy").isNumber()
-                    && Double.isFinite(b.get("cx").doubleValue()) && Double.isFinite(b.get("cy").doubleValue())) {
-                return b;
-            }
-        }
-        return null;
-    }
 
     /** Whether the head is scanning for a lost target. */
     public boolean scanning() {

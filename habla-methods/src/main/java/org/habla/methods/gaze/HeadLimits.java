@@ -1,7 +1,7 @@
 package org.habla.methods.gaze;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import org.habla.methods.ParamRules;
+import org.habla.config.ParamsJson;
 import org.habla.plugin.Param;
 
 /**
@@ -10,28 +10,36 @@ import org.habla.plugin.Param;
  * Left out, a limit takes the value of a Sony ERS-7's head (tilt −1.31..0.05, pan ±1.62, nod −0.26..0.79).
  */
 public record HeadLimits(
-        @Param(value = "Lowest neck tilt (looking down)", unit = "rad", defaultValue = "-1.31") Double tiltMinRad,
-        @Param(value = "Highest neck tilt", unit = "rad", defaultValue = "0.05") Double tiltMaxRad,
-        @Param(value = "Pan furthest to the right", unit = "rad", defaultValue = "-1.62") Double panMinRad,
-        @Param(value = "Pan furthest to the left", unit = "rad", defaultValue = "1.62") Double panMaxRad,
-        @Param(value = "Lowest nod (looking down)", unit = "rad", defaultValue = "-0.26") Double nodMinRad,
-        @Param(value = "Highest nod (looking up)", unit = "rad", defaultValue = "0.79") Double nodMaxRad) {
+        @Param(value = "Lowest neck tilt (looking down)", unit = "rad", defaultValue = "-1.31",
+                min = -Math.PI, max = Math.PI)
+        double tiltMinRad,
+        @Param(value = "Highest neck tilt", unit = "rad", defaultValue = "0.05",
+                min = -Math.PI, max = Math.PI)
+        double tiltMaxRad,
+        @Param(value = "Pan furthest to the right", unit = "rad", defaultValue = "-1.62",
+                min = -Math.PI, max = Math.PI)
+        double panMinRad,
+        @Param(value = "Pan furthest to the left", unit = "rad", defaultValue = "1.62",
+                min = -Math.PI, max = Math.PI)
+        double panMaxRad,
+        @Param(value = "Lowest nod (looking down)", unit = "rad", defaultValue = "-0.26",
+                min = -Math.PI, max = Math.PI)
+        double nodMinRad,
+        @Param(value = "Highest nod (looking up)", unit = "rad", defaultValue = "0.79",
+                min = -Math.PI, max = Math.PI)
+        double nodMaxRad) {
 
     public HeadLimits {
-        tiltMinRad = ParamRules.within(HeadLimits.class, "tiltMinRad", tiltMinRad, -Math.PI, Math.PI);
-        tiltMaxRad = ParamRules.within(HeadLimits.class, "tiltMaxRad", tiltMaxRad, -Math.PI, Math.PI);
-        panMinRad = ParamRules.within(HeadLimits.class, "panMinRad", panMinRad, -Math.PI, Math.PI);
-        panMaxRad = ParamRules.within(HeadLimits.class, "panMaxRad", panMaxRad, -Math.PI, Math.PI);
-        nodMinRad = ParamRules.within(HeadLimits.class, "nodMinRad", nodMinRad, -Math.PI, Math.PI);
-        nodMaxRad = ParamRules.within(HeadLimits.class, "nodMaxRad", nodMaxRad, -Math.PI, Math.PI);
         if (tiltMinRad > tiltMaxRad || panMinRad > panMaxRad || nodMinRad > nodMaxRad) {
             throw new IllegalArgumentException("each head joint's minimum must not exceed its maximum");
         }
     }
 
+    private static final HeadLimits ERS7 = ParamsJson.defaults(HeadLimits.class);
+
     /** The default (ERS-7) limits. */
     public static HeadLimits defaults() {
-        return new HeadLimits(null, null, null, null, null, null);
+        return ERS7;
     }
 
     /** The pose brought within the limits. */
@@ -41,14 +49,29 @@ public record HeadLimits(
     }
 
     /**
-     * These limits with every limit that {@code given} (a params record whose unset values are null)
-     * leaves out taken from a channel's metadata, then from the defaults.
+     * The limits {@code given} (a params record whose unset values are null) says, every limit it leaves out
+     * taken from a channel's metadata, then from the defaults.
      */
     public static HeadLimits resolve(HeadLimitsOverride given, JsonNode metadata) {
-        return new HeadLimits(
-                pick(given.tiltMinRad(), metadata, "tiltMinRad"), pick(given.tiltMaxRad(), metadata, "tiltMaxRad"),
+        return ofGiven(pick(given.tiltMinRad(), metadata, "tiltMinRad"), pick(given.tiltMaxRad(), metadata, "tiltMaxRad"),
                 pick(given.panMinRad(), metadata, "panMinRad"), pick(given.panMaxRad(), metadata, "panMaxRad"),
                 pick(given.nodMinRad(), metadata, "nodMinRad"), pick(given.nodMaxRad(), metadata, "nodMaxRad"));
+    }
+
+    /**
+     * The limits given, each null one taken from the defaults.
+     *
+     * @throws IllegalArgumentException when a joint's minimum exceeds its maximum
+     */
+    public static HeadLimits ofGiven(Double tiltMinRad, Double tiltMaxRad, Double panMinRad, Double panMaxRad,
+            Double nodMinRad, Double nodMaxRad) {
+        HeadLimits d = ERS7;
+        return new HeadLimits(or(tiltMinRad, d.tiltMinRad), or(tiltMaxRad, d.tiltMaxRad), or(panMinRad, d.panMinRad),
+                or(panMaxRad, d.panMaxRad), or(nodMinRad, d.nodMinRad), or(nodMaxRad, d.nodMaxRad));
+    }
+
+    private static double or(Double given, double fallback) {
+        return given == null ? fallback : given;
     }
 
     private static Double pick(Double given, JsonNode metadata, String field) {

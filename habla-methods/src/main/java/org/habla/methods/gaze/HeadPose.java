@@ -2,9 +2,8 @@ package org.habla.methods.gaze;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import java.util.Optional;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.habla.sample.RecordForm;
+import org.habla.sample.RecordLayout;
 import org.habla.sample.RecordValue;
 import org.habla.sample.VectorValue;
 
@@ -13,8 +12,17 @@ import org.habla.sample.VectorValue;
  * the left) and the head's nod (positive looks up). It travels as the {@code head-pose} record
  * {@code {"tiltRad","panRad","nodRad"}} and, as a command, as the vector {@code [tiltRad, panRad, nodRad]}.
  */
-@RecordForm.Fields({"tiltRad", "panRad", "nodRad"})
 public record HeadPose(double tiltRad, double panRad, double nodRad) implements RecordForm {
+
+    /** The fields of a head-pose record. */
+    public static final RecordLayout<HeadPose> LAYOUT = RecordLayout.of(HeadPose.class)
+            .number("tiltRad", HeadPose::tiltRad).unit("rad").frame("from the body; negative looks down")
+            .doc("the neck's tilt")
+            .number("panRad", HeadPose::panRad).unit("rad").frame("from the body; positive turns to the left")
+            .doc("the pan")
+            .number("nodRad", HeadPose::nodRad).unit("rad").frame("from the neck; positive looks up")
+            .doc("the head's nod")
+            .build();
 
     public static final HeadPose STRAIGHT = new HeadPose(0, 0, 0);
 
@@ -34,8 +42,8 @@ public record HeadPose(double tiltRad, double panRad, double nodRad) implements 
     }
 
     @Override
-    public ObjectNode toJson() {
-        return JsonNodeFactory.instance.objectNode().put("tiltRad", tiltRad).put("panRad", panRad).put("nodRad", nodRad);
+    public RecordLayout<HeadPose> layout() {
+        return LAYOUT;
     }
 
     public VectorValue toVector() {

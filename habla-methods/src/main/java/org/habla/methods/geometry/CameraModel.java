@@ -1,10 +1,9 @@
 package org.habla.methods.geometry;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Optional;
 import org.habla.sample.RecordForm;
+import org.habla.sample.RecordLayout;
 import org.habla.sample.RecordValue;
 
 /**
@@ -25,9 +24,17 @@ import org.habla.sample.RecordValue;
  * @param height  image height, pixels
  * @param heightM height of the lens above the floor, metres
  */
-@RecordForm.Fields({"hfovRad", "vfovRad", "width", "height", "heightM"})
 public record CameraModel(double hfovRad, double vfovRad, int width, int height, double heightM)
         implements RecordForm {
+
+    /** The fields of a camera record. */
+    public static final RecordLayout<CameraModel> LAYOUT = RecordLayout.of(CameraModel.class)
+            .number("hfovRad", CameraModel::hfovRad).unit("rad").doc("horizontal field of view")
+            .number("vfovRad", CameraModel::vfovRad).unit("rad").doc("vertical field of view")
+            .integer("width", CameraModel::width).unit("px").doc("image width")
+            .integer("height", CameraModel::height).unit("px").doc("image height")
+            .number("heightM", CameraModel::heightM).unit("m").frame("above the floor").doc("height of the lens")
+            .build();
 
     public CameraModel {
         if (!(hfovRad > 0 && hfovRad < Math.PI) || !(vfovRad > 0 && vfovRad < Math.PI)) {
@@ -81,9 +88,8 @@ public record CameraModel(double hfovRad, double vfovRad, int width, int height,
     }
 
     @Override
-    public ObjectNode toJson() {
-        return JsonNodeFactory.instance.objectNode().put("hfovRad", hfovRad).put("vfovRad", vfovRad)
-                .put("width", width).put("height", height).put("heightM", heightM);
+    public RecordLayout<CameraModel> layout() {
+        return LAYOUT;
     }
 
     /**

@@ -1,10 +1,9 @@
 package org.habla.methods.geometry;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.Optional;
 import org.habla.sample.RecordForm;
+import org.habla.sample.RecordLayout;
 import org.habla.sample.RecordValue;
 
 /**
@@ -15,8 +14,15 @@ import org.habla.sample.RecordValue;
  * @param yM       to the left, in metres
  * @param thetaRad heading, in radians, within (-π, π]
  */
-@RecordForm.Fields({"xM", "yM", "thetaRad"})
 public record PlanarPose(double xM, double yM, double thetaRad) implements RecordForm {
+
+    /** The fields of a pose record. */
+    public static final RecordLayout<PlanarPose> LAYOUT = RecordLayout.of(PlanarPose.class)
+            .number("xM", PlanarPose::xM).unit("m").frame("the pose's frame: x forward, y to the left").doc("forward")
+            .number("yM", PlanarPose::yM).unit("m").frame("the pose's frame: x forward, y to the left").doc("to the left")
+            .number("thetaRad", PlanarPose::thetaRad).unit("rad").frame("counter-clockwise from x, within (-π, π]")
+            .doc("heading")
+            .build();
 
     public static final PlanarPose ORIGIN = new PlanarPose(0, 0, 0);
 
@@ -48,9 +54,10 @@ public record PlanarPose(double xM, double yM, double thetaRad) implements Recor
 
     /** Reads {@code {"xM","yM","thetaRad"}}; empty if a field is missing or not a finite number. */
     public static Optional<PlanarPose> fromJson(JsonNode node) {
-        JsonNode x = node.path("xM");
-        JsonNode y = node.path("yM");
-        JsonNode t = node.path("thetaRad");
+        return fromFields(node.path("xM"), node.path("yM"), node.path("thetaRad"));
+    }
+
+    private static Optional<PlanarPose> fromFields(JsonNode x, JsonNode y, JsonNode t) {
         if (!x.isNumber() || !y.isNumber() || !t.isNumber()) {
             return Optional.empty();
         }
@@ -63,10 +70,13 @@ public record PlanarPose(double xM, double yM, double thetaRad) implements Recor
         return Optional.of(new PlanarPose(xv, yv, tv));
     }
 
-    /** The pose a record carries (itself, or read from its fields as {@link #fromJson} does). */
+    /**
+     * The pose a record carries: itself, or read from its fields as {@link #fromJson} does (through the record's
+     * accessors, so a reading typed by a driver makes no JSON).
+     */
     public static Optional<PlanarPose> fromRecord(RecordValue record) {
         Optional<PlanarPose> typed = record.form(PlanarPose.class);
-        return typed.isPresent() ? typed : fromJson(record.jsonView());
+        return typed.isPresent() ? typed : fromFields(record.get("xM"), record.get("yM"), record.get("thetaRad"));
     }
 
     /** A {@code pose} record carrying this pose. */
@@ -75,7 +85,7 @@ public record PlanarPose(double xM, double yM, double thetaRad) implements Recor
     }
 
     @Override
-    public ObjectNode toJson() {
-        return JsonNodeFactory.instance.objectNode().put("xM", xM).put("yM", yM).put("thetaRad", thetaRad);
+    public RecordLayout<PlanarPose> layout() {
+        return LAYOUT;
     }
 }

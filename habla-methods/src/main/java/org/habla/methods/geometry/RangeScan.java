@@ -3,11 +3,12 @@ package org.habla.methods.geometry;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.List;
 import java.util.Optional;
 import org.habla.sample.RecordForm;
+import org.habla.sample.RecordLayout;
 import org.habla.sample.RecordValue;
 
 /**
@@ -20,11 +21,20 @@ import org.habla.sample.RecordValue;
  *  "poses": [{"xM": 0.069, "yM": 0.136, "thetaRad": 1.5708}, ...]}      // "poses" absent when unknown
  * }</pre>
  */
-@RecordForm.Fields({"rangesM", "valid", "maxRangesM", "poses?"})
 public final class RangeScan implements RecordForm {
 
     /** The most sensors a scan may hold. */
     public static final int MAX_SENSORS = 256;
+
+    /** The fields of a scan record. */
+    public static final RecordLayout<RangeScan> LAYOUT = RecordLayout.of(RangeScan.class)
+            .numbers("rangesM", s -> s.rangesM).unit("m").frame("from each sensor, in index order")
+            .doc("each sensor's range; its reach when it saw nothing")
+            .flags("valid", s -> s.valid).doc("whether each sensor saw something within its reach")
+            .numbers("maxRangesM", s -> s.maxRangesM).unit("m").frame("from each sensor").doc("each sensor's reach")
+            .array("poses", s -> s.poses.isEmpty() ? null : s.posesJson()).optional().unit("m, rad")
+            .frame("robot frame: x forward, y to the left").doc("each sensor's pose {xM, yM, thetaRad}, when known")
+            .build();
 
     private final double[] rangesM;
     private final boolean[] valid;
@@ -90,21 +100,25 @@ public final class RangeScan implements RecordForm {
     }
 
     @Override
-    public ObjectNode toJson() {
-        ObjectNode o = JsonNodeFactory.instance.objectNode();
-        ArrayNode r = o.putArray("rangesM");
-        ArrayNode v = o.putArray("valid");
-        ArrayNode m = o.putArray("maxRangesM");
-        for (int i = 0; i < rangesM.length; i++) {
-            r.add(rangesM[i]);
-            v.add(valid[i]);
-            m.add(maxRangesM[i]);
-        }
-        if (!poses.isEmpty()) {
-            ArrayNode p = o.putArray("poses");
-            poses.forEach(pose -> p.add(pose.toJson()));
-        }
-        return o;
+    public RecordLayout<RangeScan> layout() {
+        return LAYOUT;
+    }
+
+    private ArrayNode posesJson() {
+        ArrayNode a = JsonNodeFactory.instance.arrayNode(poses.size());
+        poses.forEach(pose -> a.add(pose.toJson()));
+        return a;
+    }
+
+    @Override
+    public boolean equals(Object o) {
+        return o instanceof RangeScan s && Arrays.equals(rangesM, s.rangesM) && Arrays.equals(valid, s.valid)
+                && Arrays.equals(maxRangesM, s.maxRangesM) && poses.equals(s.poses);
+    }
+
+    @Override
+    public int hashCode() {
+        return Arrays.hashCode(rangesM) * 31 + poses.hashCode();
     }
 
     /** Reads a {@code scan} record; throws {@link IllegalArgumentException} saying what is wrong with it. */

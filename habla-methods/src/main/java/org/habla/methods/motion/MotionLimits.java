@@ -2,9 +2,8 @@ package org.habla.methods.motion;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import java.util.Optional;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.habla.sample.RecordForm;
+import org.habla.sample.RecordLayout;
 import org.habla.sample.RecordValue;
 import org.habla.sample.VectorValue;
 
@@ -16,8 +15,15 @@ import org.habla.sample.VectorValue;
  * @param maxVelMps      highest |v|, m/s; infinite when unknown
  * @param maxRotVelRadps highest |w|, rad/s; infinite when unknown
  */
-@RecordForm.Fields({"maxVelMps?", "maxRotVelRadps?"})
 public record MotionLimits(double maxVelMps, double maxRotVelRadps) implements RecordForm {
+
+    /** The fields of a limits record; an unknown limit is left out. */
+    public static final RecordLayout<MotionLimits> LAYOUT = RecordLayout.of(MotionLimits.class)
+            .optionalNumber("maxVelMps", l -> Double.isFinite(l.maxVelMps) ? l.maxVelMps : null).unit("m/s")
+            .doc("highest forward or backward speed; absent when unknown")
+            .optionalNumber("maxRotVelRadps", l -> Double.isFinite(l.maxRotVelRadps) ? l.maxRotVelRadps : null)
+            .unit("rad/s").doc("highest turn rate; absent when unknown")
+            .build();
 
     /** No limit known. */
     public static final MotionLimits NONE = new MotionLimits(Double.POSITIVE_INFINITY, Double.POSITIVE_INFINITY);
@@ -65,15 +71,8 @@ public record MotionLimits(double maxVelMps, double maxRotVelRadps) implements R
     }
 
     @Override
-    public ObjectNode toJson() {
-        ObjectNode o = JsonNodeFactory.instance.objectNode();
-        if (Double.isFinite(maxVelMps)) {
-            o.put("maxVelMps", maxVelMps);
-        }
-        if (Double.isFinite(maxRotVelRadps)) {
-            o.put("maxRotVelRadps", maxRotVelRadps);
-        }
-        return o;
+    public RecordLayout<MotionLimits> layout() {
+        return LAYOUT;
     }
 
     /** The limits a {@code limits} record carries; {@link #NONE} when it gives none. */

@@ -1,6 +1,5 @@
 package org.habla.methods.motion;
 
-import com.fasterxml.jackson.databind.JsonNode;
 import java.time.Duration;
 import java.util.List;
 import java.util.Locale;
@@ -13,6 +12,7 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
+import org.habla.methods.perception.NearestObstacle;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.PayloadKind;
 import org.habla.sample.RecordValue;
@@ -94,12 +94,12 @@ public final class MovementSafety extends ProcessingMethod {
     }
 
     private void onNearest(RecordValue value, Sample sample) {
-        double ahead = finite(value.get("aheadM"));
-        double behind = finite(value.get("behindM"));
+        NearestObstacle nearest = NearestObstacle.fromRecord(value);
+        double ahead = nearest.aheadM();
+        double behind = nearest.behindM();
         if (Double.isNaN(ahead) || Double.isNaN(behind) || ahead < 0 || behind < 0) {
-            double d = finite(value.get("distanceM"));
-            double a = finite(value.get("angleRad"));
-            JsonNode valid = value.get("valid");
+            double d = nearest.distanceM();
+            double a = nearest.angleRad();
             if (Double.isNaN(d) || Double.isNaN(a) || d < 0) {
                 if (malformed++ == 0) {
                     log().warn("{}: a nearest record without finite aheadM/behindM or distanceM/angleRad was ignored",
@@ -107,7 +107,7 @@ public final class MovementSafety extends ProcessingMethod {
                 }
                 return;
             }
-            boolean real = !valid.isBoolean() || valid.booleanValue();
+            boolean real = nearest.valid();
             ahead = real && Math.abs(a) <= params.coneRad() ? d : Double.POSITIVE_INFINITY;
             behind = real && Math.PI - Math.abs(a) <= params.coneRad() ? d : Double.POSITIVE_INFINITY;
         }
@@ -195,10 +195,6 @@ public final class MovementSafety extends ProcessingMethod {
     /** Vetoes begun since start. */
     public long vetoes() {
         return vetoes;
-    }
-
-    private static double finite(JsonNode n) {
-        return n.isNumber() && Double.isFinite(n.doubleValue()) ? n.doubleValue() : Double.NaN;
     }
 
     /** Makes {@code movement-safety} methods. */

@@ -18,20 +18,13 @@ import org.habla.sample.Sample;
 /**
  * The nearest-distance method, type {@code nearest-distance}: the nearest thing the range sensors see.
  * It reads one to four {@code scan} records (inputs {@code scan}, {@code scan2}, {@code scan3}, {@code scan4},
- * e.g. sonar and infrared) and, on each new scan, emits the {@code nearest} record in the robot frame:
- *
- * <pre>{@code
- * {"distanceM": 0.42, "angleRad": 0.52, "xM": 0.41, "yM": 0.27, "sensor": 2, "input": "scan",
- *  "valid": true, "aheadM": 0.42, "behindM": 5.0}
- * }</pre>
- *
- * {@code distanceM} is the sensor's own reading (the gap between the robot's body and the obstacle),
- * {@code xM}, {@code yM} the obstacle's point and {@code angleRad} its bearing from the robot's centre
- * (positive to the left). {@code aheadM} and {@code behindM} are the nearest readings whose bearing is
- * within {@code coneRad} of straight ahead and straight behind, for movement safety. Readings that are
- * not valid (nothing seen) or shorter than {@code minValidM} are ignored; when no reading is left the
- * record says {@code "valid": false}, {@code sensor} −1, and the distances are the longest reach.
- * Without sensor poses the bearing is taken as zero (logged once).
+ * e.g. sonar and infrared) and, on each new scan, emits the {@code nearest} record ({@link NearestObstacle}):
+ * the nearest reading, measured from the sensor that read it, and the obstacle's point and bearing in the robot
+ * frame. {@code aheadM} and {@code behindM} are the nearest readings whose bearing is within {@code coneRad} of
+ * straight ahead and straight behind, for movement safety. Readings that are not valid (nothing seen) or shorter
+ * than {@code minValidM} are ignored; when no reading is left the record says {@code "valid": false},
+ * {@code sensor} −1, and the distances are the longest reach. Without sensor poses the bearing is taken as zero
+ * (logged once).
  */
 public final class NearestDistance extends ProcessingMethod {
 
@@ -42,8 +35,7 @@ public final class NearestDistance extends ProcessingMethod {
             InputPort.optional("scan3", RecordValue.class, Delivery.latest()),
             InputPort.optional("scan4", RecordValue.class, Delivery.latest()));
     static final OutputPort<RecordValue> NEAREST = OutputPort.of("nearest", RecordValue.class, Shape.record(
-            "the nearest obstacle in the robot frame, and the nearest ahead and behind",
-            "distanceM", "angleRad", "xM", "yM", "sensor", "input", "valid", "aheadM", "behindM"));
+            "the nearest obstacle in the robot frame, and the nearest ahead and behind", NearestObstacle.LAYOUT));
     static final Ports PORTS = Ports.of(NEAREST).plus(SCANS);
 
     private final NearestDistanceParams params;
@@ -109,16 +101,12 @@ public final class NearestDistance extends ProcessingMethod {
         if (best.found()) {
             spread(best);
         }
-        RecordValue.Builder b = RecordValue.builder();
-        if (best.found()) {
-            b.put("distanceM", best.rangeM).put("angleRad", best.bearingRad).put("xM", best.xM).put("yM", best.yM)
-                    .put("sensor", best.sensor).put("input", SCANS.get(best.input).name()).put("valid", true);
-        } else {
-            b.put("distanceM", reach).put("angleRad", 0.0).put("xM", 0.0).put("yM", 0.0)
-                    .put("sensor", -1).put("input", "").put("valid", false);
-        }
-        b.put("aheadM", ahead.found() ? ahead.rangeM : reach).put("behindM", behind.found() ? behind.rangeM : reach);
-        emit(nearest, b.build());
+        double aheadM = ahead.found() ? ahead.rangeM : reach;
+        double behindM = behind.found() ? behind.rangeM : reach;
+        emit(nearest, RecordValue.of(best.found()
+                ? new NearestObstacle(best.rangeM, best.bearingRad, best.xM, best.yM, best.sensor,
+                        SCANS.get(best.input).name(), true, aheadM, behindM)
+                : new NearestObstacle(reach, 0.0, 0.0, 0.0, -1, "", false, aheadM, behindM)));
     }
 
     /**

@@ -1,6 +1,6 @@
 package org.habla.methods.position;
 
-import com.fasterxml.jackson.databind.JsonNode;
+import java.util.Optional;
 import org.habla.method.Delivery;
 import org.habla.method.InputPort;
 import org.habla.method.Layer;
@@ -13,6 +13,8 @@ import org.habla.methods.gaze.HeadPose;
 import org.habla.methods.gaze.PoseHistory;
 import org.habla.methods.geometry.CameraModel;
 import org.habla.methods.geometry.PlanarPose;
+import org.habla.methods.perception.NearestObstacle;
+import org.habla.methods.vision.BlobList;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
@@ -50,7 +52,7 @@ public final class CoordinateTranslation extends ProcessingMethod {
             Delivery.latest());
     private static final OutputPort<RecordValue> POSITION = OutputPort.of("position", RecordValue.class,
             Shape.record("the target in the robot frame (distance to its near surface); seen false keeps the last sighting",
-                    "xM", "yM", "distanceM", "angleRad", "seen"));
+                    TargetPosition.LAYOUT));
     static final Ports PORTS = Ports.of(NEAREST, BLOBS, HEAD, CAMERA, ODOMETRY, POSITION);
 
     private final CoordinateTranslationParams params;
@@ -103,28 +105,29 @@ public final class CoordinateTranslation extends ProcessingMethod {
     }
 
     private void onNearest(RecordValue record, Sample sample) {
-        JsonNode x = record.get("xM");
-        JsonNode y = record.get("yM");
-        JsonNode seenField = record.get("seen");
-        boolean numbers = x.isNumber() && y.isNumber() && Double.isFinite(x.doubleValue()) && Double.isFinite(y.doubleValue());
-        boolean seen = numbers && (!seenField.isBoolean() || seenField.booleanValue());
+        NearestObstacle nearest = NearestObstacle.fromRecord(record);
+        double x = nearest.xM();
+        double y = nearest.yM();
+        boolean numbers = Double.isFinite(x) && Double.isFinite(y);
         if (numbers) {
-            double d = record.get("distanceM").isNumber() ? record.get("distanceM").doubleValue()
-                    : Math.hypot(x.doubleValue(), y.doubleValue());
-            remember(x.doubleValue(), y.doubleValue(), d);
+            remember(x, y, Double.isNaN(nearest.distanceM()) ? Math.hypot(x, y) : nearest.distanceM());
         } else {
             rejected++;
         }
-        emitPosition(seen, null);
+        emitPosition(numbers, null);
     }
 
     private void onBlobs(RecordValue record, Sample sample) {
-        JsonNode blob = largest(record.get("blobs"));
+        Optional<BlobList> list = BlobList.fromRecord(record);
+        if (list.isEmpty() && record.has("blobs")) {
+            rejected++;
+        }
+        BlobList.Entry blob = list.flatMap(l -> l.largest(params.label(), BlobList.Entry::boxed)).orElse(null);
         if (blob == null) {
             emitPosition(false, null);
             return;
         }
-        CameraModel cam = cameraFor(record);
+        CameraModel cam = cameraFor(list.get());
         if (cam == null) {
             if (!warnedNoCamera) {
                 warnedNoCamera = true;
@@ -136,8 +139,8 @@ public final class CoordinateTranslation extends ProcessingMethod {
         }
         BlobFix fix = new BlobFix(cam, params.targetRadiusM(), params.cameraXM(), params.lensForwardM(),
                 params.minRadiusPx());
-        BlobFix.Fix found = fix.locate(num(blob, "cx"), num(blob, "cy"), num(blob, "x"), num(blob, "y"),
-                num(blob, "w"), num(blob, "h"), headAt(sample.sourceMicros())).orElse(null);
+        BlobFix.Fix found = fix.locate(blob.cx(), blob.cy(), blob.x(), blob.y(), blob.w(), blob.h(),
+                headAt(sample.sourceMicros())).orElse(null);
         if (found == null) {
             emitPosition(false, null);
             return;
@@ -154,33 +157,14 @@ public final class CoordinateTranslation extends ProcessingMethod {
     }
 
     /** The camera with this image's size, from the blobs record's width and height. */
-    private CameraModel cameraFor(RecordValue blobs) {
+    private CameraModel cameraFor(BlobList blobs) {
         if (camera == null) {
             return null;
         }
-        JsonNode w = blobs.get("width");
-        JsonNode h = blobs.get("height");
-        if (w.isInt() && h.isInt() && w.intValue() > 0 && h.intValue() > 0) {
-            return camera.withSize(w.intValue(), h.intValue());
+        if (blobs.width() > 0 && blobs.height() > 0) {
+            return camera.withSize(blobs.width(), blobs.height());
         }
         return camera.width() > 1 ? camera : null;
-    }
-
-    /** The first blob of the label (the list is largest first) with finite numbers, or null. */
-    private JsonNode largest(JsonNode blobs) {
-        if (!blobs.isArray()) {
-            if (!blobs.isMissingNode()) {
-                rejected++;
-            }
-            return null;
-        }
-        for (JsonNode b : blobs) {
-            boolean labelled = params.label().isEmpty() || params.label().equals(b.path("label").asText());
-            if (labelled && finite(b, "cx", "cy", "x", "y", "w", "h")) {
-                return b;
-            }
-        }
-        return null;
     }
 
     private void remember(double x, double y, double distance) {
@@ -191,35 +175,17 @@ public final class CoordinateTranslation extends ProcessingMethod {
     }
 
     private void emitPosition(boolean seen, BlobFix.Fix fix) {
-        RecordValue.Builder b = RecordValue.builder()
-                .put("xM", lastX).put("yM", lastY).put("distanceM", lastDistance)
-                .put("angleRad", everSeen ? Math.atan2(lastY, lastX) : 0.0).put("seen", seen);
-        if (fix != null) {
-            b.put("method", fix.method());
-            if (fix.groundRangeM() != null) {
-                b.put("groundRangeM", fix.groundRangeM());
-            }
-        }
+        Double xWorld = null;
+        Double yWorld = null;
         if (odometry != null && everSeen) {
             double c = Math.cos(odometry.thetaRad());
             double s = Math.sin(odometry.thetaRad());
-            b.put("xWorldM", odometry.xM() + c * lastX - s * lastY).put("yWorldM", odometry.yM() + s * lastX + c * lastY);
+            xWorld = odometry.xM() + c * lastX - s * lastY;
+            yWorld = odometry.yM() + s * lastX + c * lastY;
         }
-        emit(position, b.build());
-    }
-
-    private static boolean finite(JsonNode node, String... fields) {
-        for (String f : fields) {
-            JsonNode n = node.get(f);
-            if (n == null || !n.isNumber() || !Double.isFinite(n.doubleValue())) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    private static double num(JsonNode node, String field) {
-        return node.get(field).doubleValue();
+        emit(position, RecordValue.of(new TargetPosition(lastX, lastY, lastDistance,
+                everSeen ? Math.atan2(lastY, lastX) : 0.0, seen, fix == null ? null : fix.method(),
+                fix == null ? null : fix.groundRangeM(), xWorld, yWorld)));
     }
 
     /** Inputs that were not what their record should be, since start. */

@@ -9,7 +9,6 @@ import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
@@ -33,11 +32,8 @@ public final class Blinds extends SensorActuatorMethod {
 
     /** The params of a {@code blinds} method. */
     public record Params(
-            @Param(value = "the cover counts percent closed instead of open", defaultValue = "false") Boolean invert) {
+            @Param(value = "the cover counts percent closed instead of open", defaultValue = "false") boolean invert) {
 
-        public Params {
-            invert = ParamDefaults.or(Params.class, "invert", invert);
-        }
     }
 
     Blinds(Params params) {

@@ -27,7 +27,7 @@ public final class ClimateSensor extends SensorActuatorMethod {
     private static final InputPort<NumberValue> HUMIDITY = InputPort.optional("humidity", NumberValue.class,
             Delivery.latest());
     private static final OutputPort<RecordValue> CLIMATE = OutputPort.of("climate", RecordValue.class,
-            Shape.record("air temperature (°C) and relative humidity (%)", "temperatureC", "humidityPct"));
+            Shape.record("air temperature (°C) and relative humidity (%)", Climate.LAYOUT));
     static final Ports PORTS = Ports.of(TEMPERATURE, HUMIDITY, CLIMATE);
 
     private final Output<RecordValue> climate = output(CLIMATE);
@@ -66,14 +66,7 @@ public final class ClimateSensor extends SensorActuatorMethod {
     }
 
     private void publish() {
-        RecordValue.Builder b = RecordValue.builder();
-        if (temperatureC != null) {
-            b.put("temperatureC", temperatureC);
-        }
-        if (humidityPct != null) {
-            b.put("humidityPct", humidityPct);
-        }
-        emit(climate, b.build());
+        emit(climate, RecordValue.of(new Climate(temperatureC, humidityPct)));
     }
 
     /** Readings dropped since start. */

@@ -1,7 +1,7 @@
 package org.habla.methods.room;
 
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
+import java.util.ArrayList;
+import java.util.List;
 import org.habla.method.Delivery;
 import org.habla.method.InputPort;
 import org.habla.method.Layer;
@@ -10,7 +10,6 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
-import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
@@ -33,8 +32,7 @@ public final class Comfort extends VirtualMethod {
     private static final InputPort<NumberValue> SOUND = InputPort.optional("sound", NumberValue.class,
             Delivery.latest());
     private static final OutputPort<RecordValue> COMFORT = OutputPort.of("comfort", RecordValue.class,
-            Shape.record("the readings, a score 0..1 and what is wrong", "temperatureC", "humidityPct", "lux",
-                    "soundDb", "score", "complaints"));
+            Shape.record("the readings, a score 0..1 and what is wrong", ComfortReport.LAYOUT));
     static final Ports PORTS = Ports.of(CLIMATE, LUX, SOUND, COMFORT);
 
     private final Params params;
@@ -46,22 +44,38 @@ public final class Comfort extends VirtualMethod {
 
     /** The params of a {@code comfort} method: the comfortable ranges. */
     public record Params(
-            @Param(value = "coldest comfortable air", unit = "degC", defaultValue = "20") Double minTemperatureC,
-            @Param(value = "warmest comfortable air", unit = "degC", defaultValue = "25") Double maxTemperatureC,
-            @Param(value = "driest comfortable air", unit = "%", defaultValue = "30") Double minHumidityPct,
-            @Param(value = "most humid comfortable air", unit = "%", defaultValue = "60") Double maxHumidityPct,
-            @Param(value = "least light to read or work by", unit = "lx", defaultValue = "200") Double minLux,
-            @Param(value = "most light before it glares", unit = "lx", defaultValue = "2000") Double maxLux,
-            @Param(value = "loudest comfortable sound", unit = "dB", defaultValue = "-20") Double maxSoundDb) {
+            @Param(value = "coldest comfortable air", unit = "degC", defaultValue = "20",
+                    min = -40, max = 85)
+            double minTemperatureC,
+            @Param(value = "warmest comfortable air", unit = "degC", defaultValue = "25",
+                    min = -40, max = 85)
+            double maxTemperatureC,
+            @Param(value = "driest comfortable air", unit = "%", defaultValue = "30",
+                    min = 0, max = 100)
+            double minHumidityPct,
+            @Param(value = "most humid comfortable air", unit = "%", defaultValue = "60",
+                    min = 0, max = 100)
+            double maxHumidityPct,
+            @Param(value = "least light to read or work by", unit = "lx", defaultValue = "200",
+                    min = 0, max = 1e6)
+            double minLux,
+            @Param(value = "most light before it glares", unit = "lx", defaultValue = "2000",
+                    min = 0, max = 1e6)
+            double maxLux,
+            @Param(value = "loudest comfortable sound", unit = "dB", defaultValue = "-20",
+                    min = -200, max = 200)
+            double maxSoundDb) {
 
         public Params {
-            minTemperatureC = ParamRules.within(Params.class, "minTemperatureC", minTemperatureC, -40, 85);
-            maxTemperatureC = ParamRules.within(Params.class, "maxTemperatureC", maxTemperatureC, minTemperatureC, 85);
-            minHumidityPct = ParamRules.within(Params.class, "minHumidityPct", minHumidityPct, 0, 100);
-            maxHumidityPct = ParamRules.within(Params.class, "maxHumidityPct", maxHumidityPct, minHumidityPct, 100);
-            minLux = ParamRules.within(Params.class, "minLux", minLux, 0, 1e6);
-            maxLux = ParamRules.within(Params.class, "maxLux", maxLux, minLux, 1e6);
-            maxSoundDb = ParamRules.within(Params.class, "maxSoundDb", maxSoundDb, -200, 200);
+            atLeast("maxTemperatureC", maxTemperatureC, "minTemperatureC", minTemperatureC);
+            atLeast("maxHumidityPct", maxHumidityPct, "minHumidityPct", minHumidityPct);
+            atLeast("maxLux", maxLux, "minLux", minLux);
+        }
+
+        private static void atLeast(String name, double value, String lowName, double low) {
+            if (value < low) {
+                throw new IllegalArgumentException(name + " must be at least " + lowName + " (" + low + "), was " + value);
+            }
         }
     }
 
@@ -79,32 +93,28 @@ public final class Comfort extends VirtualMethod {
     }
 
     private void onClimate(RecordValue value, Sample sample) {
-        if (value.has("temperatureC") && value.get("temperatureC").isNumber()) {
-            temperatureC = value.number("temperatureC");
+        Climate climate = Climate.fromRecord(value);
+        if (climate.temperatureC() != null) {
+            temperatureC = climate.temperatureC();
         }
-        if (value.has("humidityPct") && value.get("humidityPct").isNumber()) {
-            humidityPct = value.number("humidityPct");
+        if (climate.humidityPct() != null) {
+            humidityPct = climate.humidityPct();
         }
         publish();
     }
 
     private void publish() {
-        ArrayNode complaints = JsonNodeFactory.instance.arrayNode();
+        List<String> complaints = new ArrayList<>();
         int heard = 0;
         heard += check(temperatureC, params.minTemperatureC(), params.maxTemperatureC(), "cold", "warm", complaints);
         heard += check(humidityPct, params.minHumidityPct(), params.maxHumidityPct(), "dry", "humid", complaints);
         heard += check(lux, params.minLux(), params.maxLux(), "dark", "glaring", complaints);
         heard += check(soundDb, Double.NEGATIVE_INFINITY, params.maxSoundDb(), "", "noisy", complaints);
-        RecordValue.Builder b = RecordValue.builder();
-        put(b, "temperatureC", temperatureC);
-        put(b, "humidityPct", humidityPct);
-        put(b, "lux", lux);
-        put(b, "soundDb", soundDb);
-        b.put("score", heard == 0 ? 1 : 1 - complaints.size() / (double) heard);
-        emit(comfort, b.set("complaints", complaints).build());
+        emit(comfort, RecordValue.of(new ComfortReport(temperatureC, humidityPct, lux, soundDb,
+                heard == 0 ? 1 : 1 - complaints.size() / (double) heard, complaints)));
     }
 
-    private static int check(Double v, double min, double max, String low, String high, ArrayNode complaints) {
+    private static int check(Double v, double min, double max, String low, String high, List<String> complaints) {
         if (v == null) {
             return 0;
         }
@@ -114,12 +124,6 @@ public final class Comfort extends VirtualMethod {
             complaints.add(high);
         }
         return 1;
-    }
-
-    private static void put(RecordValue.Builder b, String name, Double v) {
-        if (v != null) {
-            b.put(name, v);
-        }
     }
 
     /** Makes {@code comfort} methods. */

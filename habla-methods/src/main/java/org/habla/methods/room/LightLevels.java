@@ -1,8 +1,6 @@
 package org.habla.methods.room;
 
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
-import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -14,7 +12,6 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
-import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
@@ -30,7 +27,8 @@ import org.habla.sample.Sample;
 public final class LightLevels extends VirtualMethod {
 
     private static final OutputPort<RecordValue> LIGHT = OutputPort.of("light", RecordValue.class,
-            Shape.record("every zone's illuminance (lx) and the zones darker than darkLux", "lux", "dark"));
+            Shape.record("every zone's illuminance (lx) and the zones darker than darkLux",
+                    ZoneStates.Light.LAYOUT));
 
     private final Params params;
     private final Output<RecordValue> light = output(LIGHT);
@@ -39,11 +37,12 @@ public final class LightLevels extends VirtualMethod {
     /** The params of a {@code light-levels} method. */
     public record Params(
             @Param("the zones, each an input of the method (letters, digits, '_', '-')") List<String> zones,
-            @Param(value = "a zone is dark below this", unit = "lx", defaultValue = "200") Double darkLux) {
+            @Param(value = "a zone is dark below this", unit = "lx", defaultValue = "200",
+                    min = 0, max = 1e6)
+            double darkLux) {
 
         public Params {
             zones = new Occupancy.Params(zones, 0).zones();
-            darkLux = ParamRules.within(Params.class, "darkLux", darkLux, 0, 1e6);
         }
     }
 
@@ -68,8 +67,8 @@ public final class LightLevels extends VirtualMethod {
             return;
         }
         lux.put(zone, value.value());
-        ObjectNode levels = JsonNodeFactory.instance.objectNode();
-        ArrayNode dark = JsonNodeFactory.instance.arrayNode();
+        Map<String, Double> levels = new LinkedHashMap<>();
+        List<String> dark = new ArrayList<>();
         for (String z : params.zones()) {
             Double v = lux.get(z);
             if (v != null) {
@@ -79,7 +78,7 @@ public final class LightLevels extends VirtualMethod {
                 }
             }
         }
-        emit(light, RecordValue.builder().set("lux", levels).set("dark", dark).build());
+        emit(light, RecordValue.of(new ZoneStates.Light(levels, dark)));
     }
 
     /** Makes {@code light-levels} methods. */

@@ -8,7 +8,6 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
-import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
@@ -39,14 +38,12 @@ public final class LightSensor extends SensorActuatorMethod {
      * @param smoothing the weight of the previous output, 0 (none) to below 1
      */
     public record Params(
-            @Param(value = "readings above this are clipped to it", unit = "lx", defaultValue = "100000") Double maxLux,
+            @Param(value = "readings above this are clipped to it", unit = "lx", defaultValue = "100000",
+                    greaterThan = 0)
+            double maxLux,
             @Param(value = "the weight of the previous output in each new one: 0 (none) to 0.99",
-                    defaultValue = "0") Double smoothing) {
+                    defaultValue = "0", min = 0, max = 0.99) double smoothing) {
 
-        public Params {
-            maxLux = ParamRules.positive(Params.class, "maxLux", maxLux);
-            smoothing = ParamRules.within(Params.class, "smoothing", smoothing, 0, 0.99);
-        }
     }
 
     LightSensor(Params params) {

@@ -1,8 +1,6 @@
 package org.habla.methods.room;
 
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
-import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -15,7 +13,6 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
-import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
@@ -33,8 +30,7 @@ public final class Occupancy extends VirtualMethod {
 
     private static final Pattern ZONE = Pattern.compile("[A-Za-z][A-Za-z0-9_-]{0,31}");
     private static final OutputPort<RecordValue> OCCUPANCY = OutputPort.of("occupancy", RecordValue.class,
-            Shape.record("the presence of every zone, the occupied zones and their count", "zones", "occupied",
-                    "count"));
+            Shape.record("the presence of every zone, the occupied zones and their count", ZoneStates.Occupied.LAYOUT));
 
     private final Output<RecordValue> occupancy = output(OCCUPANCY);
     private final Map<String, Boolean> present = new LinkedHashMap<>();
@@ -44,15 +40,9 @@ public final class Occupancy extends VirtualMethod {
     public record Params(
             @Param("the zones, each an input of the method (letters, digits, '_', '-')") List<String> zones,
             @Param(value = "the state is sent again this often; 0: only when a presence comes", unit = "ms",
-                    defaultValue = "1000") Integer periodMs) {
-
-        /** The zones, sent again every second. */
-        public Params(List<String> zones) {
-            this(zones, null);
-        }
+                    defaultValue = "1000", min = 0, max = 3_600_000) int periodMs) {
 
         public Params {
-            periodMs = ParamRules.within(Params.class, "periodMs", periodMs, 0, 3_600_000);
             if (zones == null || zones.isEmpty()) {
                 throw new IllegalArgumentException("zones: name at least one zone");
             }
@@ -105,16 +95,15 @@ public final class Occupancy extends VirtualMethod {
     }
 
     private void publish() {
-        ObjectNode zones = JsonNodeFactory.instance.objectNode();
-        ArrayNode occupied = JsonNodeFactory.instance.arrayNode();
+        Map<String, Integer> zones = new LinkedHashMap<>();
+        List<String> occupied = new ArrayList<>();
         present.forEach((z, p) -> {
             zones.put(z, p ? 1 : 0);
             if (p) {
                 occupied.add(z);
             }
         });
-        emit(occupancy, RecordValue.builder().set("zones", zones).set("occupied", occupied)
-                .put("count", occupied.size()).build());
+        emit(occupancy, RecordValue.of(new ZoneStates.Occupied(zones, occupied)));
     }
 
     /** Makes {@code occupancy} methods. */

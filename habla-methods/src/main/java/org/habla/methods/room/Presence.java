@@ -9,7 +9,6 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.ProcessingMethod;
 import org.habla.method.Shape;
-import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
@@ -49,15 +48,12 @@ public final class Presence extends ProcessingMethod {
      * @param doorHoldMs how long presence lasts after the door opened or closed
      */
     public record Params(
-            @Param(value = "presence lasts this long after the last motion", unit = "ms", defaultValue = "30000")
-            Integer holdMs,
+            @Param(value = "presence lasts this long after the last motion", unit = "ms", defaultValue = "30000",
+                    min = 0, max = 86_400_000)
+            int holdMs,
             @Param(value = "presence lasts this long after the door opened or closed", unit = "ms",
-                    defaultValue = "10000") Integer doorHoldMs) {
+                    defaultValue = "10000", min = 0, max = 86_400_000) int doorHoldMs) {
 
-        public Params {
-            holdMs = ParamRules.within(Params.class, "holdMs", holdMs, 0, 86_400_000);
-            doorHoldMs = ParamRules.within(Params.class, "doorHoldMs", doorHoldMs, 0, 86_400_000);
-        }
     }
 
     Presence(Params params) {

@@ -17,7 +17,6 @@ import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
@@ -53,7 +52,7 @@ public final class RoomAction extends VirtualMethod {
     private static final OutputPort<TextValue> ECHO = OutputPort.of("action", TextValue.class,
             Shape.text("every accepted action"));
     private static final OutputPort<RecordValue> LAMPS = OutputPort.of("lamps", RecordValue.class,
-            Shape.record("every lamp's level 0..1 after the last action"));
+            Shape.record("every lamp's level 0..1 after the last action", LampLevels.LAYOUT));
     private static final OutputPort<TextValue> SAY = OutputPort.of("say", TextValue.class,
             Shape.text("what the room says"));
 
@@ -69,12 +68,11 @@ public final class RoomAction extends VirtualMethod {
             @Param(value = "the blinds, each an output of its name with how far they are open, 0..1",
                     defaultValue = "[]") List<String> blinds,
             @Param(value = "whether the room has a speaker ('say ...' on output say)", defaultValue = "false")
-            Boolean speaker) {
+            boolean speaker) {
 
         public Params {
-            lamps = List.copyOf(ParamDefaults.or(Params.class, "lamps", lamps));
-            blinds = List.copyOf(ParamDefaults.or(Params.class, "blinds", blinds));
-            speaker = ParamDefaults.or(Params.class, "speaker", speaker);
+            lamps = List.copyOf(lamps);
+            blinds = List.copyOf(blinds);
             if (lamps.isEmpty() && blinds.isEmpty() && !speaker) {
                 throw new IllegalArgumentException("lamps, blinds, speaker: the room needs something to act on");
             }
@@ -157,9 +155,7 @@ public final class RoomAction extends VirtualMethod {
             emit(say, new TextValue(p.say()));
         }
         if (!p.lamps().isEmpty()) {
-            RecordValue.Builder b = RecordValue.builder();
-            levels.forEach(b::put);
-            emit(lamps, b.build());
+            emit(lamps, RecordValue.of(new LampLevels(levels)));
         }
     }
 

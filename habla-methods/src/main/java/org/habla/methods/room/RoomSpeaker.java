@@ -8,7 +8,6 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
-import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.RecordValue;
@@ -32,14 +31,11 @@ public final class RoomSpeaker extends SensorActuatorMethod {
 
     /** The params of a {@code room-speaker} method. */
     public record Params(
-            @Param(value = "the speaker's volume", unit = "%", defaultValue = "50") Integer volume,
-            @Param(value = "the longest text said; longer text is cut", unit = "char", defaultValue = "200")
-            Integer maxLength) {
+            @Param(value = "the speaker's volume", unit = "%", defaultValue = "50", min = 0, max = 100) int volume,
+            @Param(value = "the longest text said; longer text is cut", unit = "char", defaultValue = "200",
+                    min = 1, max = 10_000)
+            int maxLength) {
 
-        public Params {
-            volume = ParamRules.within(Params.class, "volume", volume, 0, 100);
-            maxLength = ParamRules.within(Params.class, "maxLength", maxLength, 1, 10_000);
-        }
     }
 
     RoomSpeaker(Params params) {

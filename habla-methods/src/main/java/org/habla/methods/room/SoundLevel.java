@@ -8,7 +8,6 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.SensorActuatorMethod;
 import org.habla.method.Shape;
-import org.habla.methods.ParamRules;
 import org.habla.plugin.Param;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.AudioChunk;
@@ -42,15 +41,12 @@ public final class SoundLevel extends SensorActuatorMethod {
      * @param offsetDb added to every level (a calibration)
      */
     public record Params(
-            @Param(value = "the level reported for digital silence", unit = "dB", defaultValue = "-100")
-            Double floorDb,
+            @Param(value = "the level reported for digital silence", unit = "dB", defaultValue = "-100",
+                    min = -200, max = 0)
+            double floorDb,
             @Param(value = "added to every level, e.g. the microphone's calibration to dB SPL", unit = "dB",
-                    defaultValue = "0") Double offsetDb) {
+                    defaultValue = "0", min = -200, max = 200) double offsetDb) {
 
-        public Params {
-            floorDb = ParamRules.within(Params.class, "floorDb", floorDb, -200, 0);
-            offsetDb = ParamRules.within(Params.class, "offsetDb", offsetDb, -200, 200);
-        }
     }
 
     SoundLevel(Params params) {

@@ -30,7 +30,7 @@ import org.habla.sample.TextValue;
 public final class Buttons extends SensorActuatorMethod {
 
     private static final OutputPort<RecordValue> PRESSED = OutputPort.of("pressed", RecordValue.class,
-            Shape.record("true for each button held down, by name"));
+            Shape.record("true for each button held down, by name", ButtonStates.LAYOUT));
     private static final OutputPort<TextValue> TOUCH = OutputPort.of("touch", TextValue.class,
             Shape.text("the name of a button, once when it goes down"));
     private static final InputPort<RecordValue> BUTTONS = InputPort.of("buttons", RecordValue.class,
@@ -51,7 +51,7 @@ public final class Buttons extends SensorActuatorMethod {
         JsonNode fields = record.json();
         List<String> names = params.names().isEmpty() ? fieldNames(fields) : params.names();
         List<String> edges = new ArrayList<>();
-        RecordValue.Builder out = RecordValue.builder();
+        Map<String, Boolean> out = new LinkedHashMap<>();
         for (String name : names) {
             JsonNode v = fields.get(name);
             boolean was = down.getOrDefault(name, false);
@@ -66,7 +66,7 @@ public final class Buttons extends SensorActuatorMethod {
                 edges.add(name);
             }
         }
-        emit(pressed, out.build());
+        emit(pressed, RecordValue.of(new ButtonStates(out)));
         edges.forEach(name -> emit(touch, new TextValue(name)));
     }
 

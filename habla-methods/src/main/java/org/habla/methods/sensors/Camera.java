@@ -33,7 +33,7 @@ public final class Camera extends SensorActuatorMethod {
     private static final OutputPort<ImageFrame> IMAGE_OUT = OutputPort.of("image", ImageFrame.class,
             Shape.of(org.habla.sample.PayloadKind.IMAGE));
     private static final OutputPort<RecordValue> CAMERA = OutputPort.of("camera", RecordValue.class,
-            Shape.record("the camera's geometry and the size of its frames", CameraModel.class));
+            Shape.record("the camera's geometry and the size of its frames", CameraModel.LAYOUT));
     private static final InputPort<ImageFrame> IMAGE_IN = InputPort.of("image", ImageFrame.class, Delivery.latest());
     static final Ports PORTS = Ports.of(IMAGE_OUT, CAMERA, IMAGE_IN);
 

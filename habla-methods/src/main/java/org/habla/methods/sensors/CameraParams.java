@@ -1,6 +1,6 @@
 package org.habla.methods.sensors;
 
-import org.habla.methods.ParamRules;
+import org.habla.config.ParamsJson;
 import org.habla.plugin.Param;
 
 /**
@@ -9,27 +9,21 @@ import org.habla.plugin.Param;
  * describe its camera.
  */
 public record CameraParams(
-        @Param(value = "Most frames a second handed on; 0 hands on every frame", unit = "1/s", defaultValue = "0")
-        Double maxFps,
+        @Param(value = "Most frames a second handed on; 0 hands on every frame", unit = "1/s", defaultValue = "0",
+                min = 0, max = 1000)
+        double maxFps,
         @Param(value = "Horizontal field of view; overrides the channel metadata", unit = "rad",
-                defaultNote = "channel metadata")
+                defaultNote = "channel metadata", min = 0.01, max = 3.1)
         Double hfovRad,
         @Param(value = "Vertical field of view; overrides the channel metadata", unit = "rad",
-                defaultNote = "channel metadata")
+                defaultNote = "channel metadata", min = 0.01, max = 3.1)
         Double vfovRad,
         @Param(value = "Height of the camera above the floor; overrides the channel metadata", unit = "m",
-                defaultNote = "channel metadata, else 0")
+                defaultNote = "channel metadata, else 0", min = 0, max = 100)
         Double heightM) {
-
-    public CameraParams {
-        maxFps = ParamRules.within(CameraParams.class, "maxFps", maxFps, 0, 1000);
-        hfovRad = ParamRules.withinOrNull("hfovRad", hfovRad, 0.01, 3.1);
-        vfovRad = ParamRules.withinOrNull("vfovRad", vfovRad, 0.01, 3.1);
-        heightM = ParamRules.withinOrNull("heightM", heightM, 0, 100);
-    }
 
     /** Every parameter at its default. */
     public static CameraParams defaults() {
-        return new CameraParams(null, null, null, null);
+        return ParamsJson.defaults(CameraParams.class);
     }
 }

@@ -29,7 +29,7 @@ import org.habla.sample.VectorValue;
 public final class Head extends SensorActuatorMethod {
 
     private static final OutputPort<RecordValue> POSE_OUT = OutputPort.of("pose", RecordValue.class,
-            Shape.record("where the head points, rad", HeadPose.class));
+            Shape.record("where the head points, rad", HeadPose.LAYOUT));
     private static final OutputPort<VectorValue> HEAD = OutputPort.of("head", VectorValue.class,
             Shape.vector("rad", "[tiltRad, panRad, nodRad] within the joint limits"));
     private static final InputPort<RecordValue> POSE_IN = InputPort.optional("pose", RecordValue.class,

@@ -1,5 +1,6 @@
 package org.habla.methods.sensors;
 
+import org.habla.config.ParamsJson;
 import org.habla.methods.gaze.HeadLimits;
 import org.habla.plugin.Param;
 
@@ -8,26 +9,32 @@ import org.habla.plugin.Param;
  * metadata of the channel input {@code pose} is wired to, then from a Sony ERS-7's head.
  */
 public record HeadParams(
-        @Param(value = "Lowest neck tilt (looking down)", unit = "rad", defaultNote = "channel metadata, else -1.31")
+        @Param(value = "Lowest neck tilt (looking down)", unit = "rad", defaultNote = "channel metadata, else -1.31",
+                min = -Math.PI, max = Math.PI)
         Double tiltMinRad,
-        @Param(value = "Highest neck tilt", unit = "rad", defaultNote = "channel metadata, else 0.05")
+        @Param(value = "Highest neck tilt", unit = "rad", defaultNote = "channel metadata, else 0.05",
+                min = -Math.PI, max = Math.PI)
         Double tiltMaxRad,
-        @Param(value = "Pan furthest to the right", unit = "rad", defaultNote = "channel metadata, else -1.62")
+        @Param(value = "Pan furthest to the right", unit = "rad", defaultNote = "channel metadata, else -1.62",
+                min = -Math.PI, max = Math.PI)
         Double panMinRad,
-        @Param(value = "Pan furthest to the left", unit = "rad", defaultNote = "channel metadata, else 1.62")
+        @Param(value = "Pan furthest to the left", unit = "rad", defaultNote = "channel metadata, else 1.62",
+                min = -Math.PI, max = Math.PI)
         Double panMaxRad,
-        @Param(value = "Lowest nod (looking down)", unit = "rad", defaultNote = "channel metadata, else -0.26")
+        @Param(value = "Lowest nod (looking down)", unit = "rad", defaultNote = "channel metadata, else -0.26",
+                min = -Math.PI, max = Math.PI)
         Double nodMinRad,
-        @Param(value = "Highest nod (looking up)", unit = "rad", defaultNote = "channel metadata, else 0.79")
+        @Param(value = "Highest nod (looking up)", unit = "rad", defaultNote = "channel metadata, else 0.79",
+                min = -Math.PI, max = Math.PI)
         Double nodMaxRad) implements HeadLimits.HeadLimitsOverride {
 
     public HeadParams {
         // Checked now so a bad value is reported against the config, not at start.
-        new HeadLimits(tiltMinRad, tiltMaxRad, panMinRad, panMaxRad, nodMinRad, nodMaxRad);
+        HeadLimits.ofGiven(tiltMinRad, tiltMaxRad, panMinRad, panMaxRad, nodMinRad, nodMaxRad);
     }
 
     /** Every parameter left to the metadata and the defaults. */
     public static HeadParams defaults() {
-        return new HeadParams(null, null, null, null, null, null);
+        return ParamsJson.defaults(HeadParams.class);
     }
 }

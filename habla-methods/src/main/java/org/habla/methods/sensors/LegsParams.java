@@ -1,7 +1,7 @@
 package org.habla.methods.sensors;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import org.habla.methods.ParamRules;
+import org.habla.config.ParamsJson;
 import org.habla.methods.locomotion.WalkLimits;
 import org.habla.plugin.Param;
 
@@ -11,23 +11,25 @@ import org.habla.plugin.Param;
  * the defaults (a Sony ERS-7's walk as the {@code tekkotsu} driver states it).
  */
 public record LegsParams(
-        @Param(value = "Fastest forward walk", unit = "m/s", defaultNote = "channel metadata, else 0.18") Double maxForwardMps,
-        @Param(value = "Fastest backward walk", unit = "m/s", defaultNote = "channel metadata, else 0.18") Double maxReverseMps,
-        @Param(value = "Fastest sideways walk", unit = "m/s", defaultNote = "channel metadata, else 0.14") Double maxStrafeMps,
-        @Param(value = "Fastest turn", unit = "rad/s", defaultNote = "channel metadata, else 1.8") Double maxRotateRadps,
-        @Param(value = "Queue length of the walk input, in commands", defaultValue = "8") Integer queue) {
-
-    public LegsParams {
-        maxForwardMps = ParamRules.withinOrNull("maxForwardMps", maxForwardMps, 0, 10);
-        maxReverseMps = ParamRules.withinOrNull("maxReverseMps", maxReverseMps, 0, 10);
-        maxStrafeMps = ParamRules.withinOrNull("maxStrafeMps", maxStrafeMps, 0, 10);
-        maxRotateRadps = ParamRules.withinOrNull("maxRotateRadps", maxRotateRadps, 0, 20);
-        queue = ParamRules.within(LegsParams.class, "queue", queue, 1, 1024);
-    }
+        @Param(value = "Fastest forward walk", unit = "m/s", defaultNote = "channel metadata, else 0.18",
+                min = 0, max = 10)
+        Double maxForwardMps,
+        @Param(value = "Fastest backward walk", unit = "m/s", defaultNote = "channel metadata, else 0.18",
+                min = 0, max = 10)
+        Double maxReverseMps,
+        @Param(value = "Fastest sideways walk", unit = "m/s", defaultNote = "channel metadata, else 0.14",
+                min = 0, max = 10)
+        Double maxStrafeMps,
+        @Param(value = "Fastest turn", unit = "rad/s", defaultNote = "channel metadata, else 1.8",
+                min = 0, max = 20)
+        Double maxRotateRadps,
+        @Param(value = "Queue length of the walk input, in commands", defaultValue = "8",
+                min = 1, max = 1024)
+        int queue) {
 
     /** Every parameter at its default. */
     public static LegsParams defaults() {
-        return new LegsParams(null, null, null, null, null);
+        return ParamsJson.defaults(LegsParams.class);
     }
 
     /** The limits: each from these params, else from the walk channel's {@code metadata} (may be null), else the default. */

@@ -29,7 +29,7 @@ import org.habla.sample.VectorValue;
 public final class Odometry extends SensorActuatorMethod {
 
     private static final OutputPort<RecordValue> POSE = OutputPort.of("pose", RecordValue.class,
-            Shape.record("the base's pose by odometry, in its odometry frame", PlanarPose.class));
+            Shape.record("the base's pose by odometry, in its odometry frame", PlanarPose.LAYOUT));
     private static final OutputPort<VectorValue> VELOCITY = OutputPort.of("velocity", VectorValue.class,
             new Shape(PayloadKind.VECTOR, "m/s, rad/s", List.of("vMps", "wRadps"), "the base's speed and turn rate"));
     private static final InputPort<RecordValue> ODOMETRY = InputPort.of("odometry", RecordValue.class,

@@ -22,7 +22,7 @@ import org.habla.sample.Sample;
 import org.habla.sample.VectorValue;
 
 /**
- * A general range sensor method, types {@code sonar} and {@code infrared}: it stores the ranges of a
+ * A general range sensor method, types {@code sonar}, {@code infrared} and {@code laser}: it stores the ranges of a
  * ring of sensors (input {@code ranges}, a VECTOR in metres from any driver), cleans them and hands
  * them on as {@code ranges} and as a {@code scan} record that carries each sensor's pose. A reading
  * that is not a finite number, is negative, or reaches the sensor's range means "nothing seen": it
@@ -38,10 +38,13 @@ public final class RangeSensor extends SensorActuatorMethod {
     private static final OutputPort<VectorValue> RANGES_OUT = OutputPort.of("ranges", VectorValue.class,
             Shape.vector("m", "cleaned range per sensor; the maximum range where nothing was seen"));
     private static final OutputPort<RecordValue> SCAN = OutputPort.of("scan", RecordValue.class,
-            Shape.record("ranges with validity, reach and pose per sensor", RangeScan.class));
+            Shape.record("ranges with validity, reach and pose per sensor", RangeScan.LAYOUT));
     private static final InputPort<VectorValue> RANGES_IN = InputPort.of("ranges", VectorValue.class);
     private static final InputPort<RecordValue> HEAD = InputPort.optional("head", RecordValue.class, Delivery.latest());
     static final Ports PORTS = Ports.of(RANGES_OUT, SCAN, RANGES_IN, HEAD);
+
+    /** A laser's reach when neither params nor the channel's metadata give one. */
+    static final double LASER_REACH_M = 10.0;
 
     private final RangeSensorParams params;
     private final double fallbackMaxRangeM;
@@ -175,6 +178,17 @@ public final class RangeSensor extends SensorActuatorMethod {
         @Override
         public boolean light() {
             return true;
+        }
+    }
+
+    /**
+     * Makes {@code laser} methods: a laser scanner's beams, gathered into the sectors of a ring of virtual sensors
+     * on the body's edge (as {@code habla-ros2 body} sends them), each with its pose in the channel's metadata.
+     */
+    public static final class LaserProvider extends SimpleMethodProvider<RangeSensorParams> {
+        public LaserProvider() {
+            super("laser", "Cleans the ranges of a laser scanner's sectors (nothing seen = maximum range) and adds each sector's pose",
+                    RangeSensorParams.class, PORTS, (layer, p) -> new RangeSensor(p, LASER_REACH_M), Layer.SENSORS_ACTUATORS);
         }
     }
 

@@ -1,10 +1,9 @@
 package org.habla.methods.sensors;
 
 import java.util.List;
-import org.habla.methods.ParamRules;
+import org.habla.config.ParamsJson;
 import org.habla.methods.geometry.PlanarPose;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 
 /**
  * The params of the {@code sonar} and {@code infrared} methods. Every geometry parameter is optional:
@@ -13,22 +12,20 @@ import org.habla.plugin.ParamDefaults;
  */
 public record RangeSensorParams(
         @Param(value = "Reach of every sensor; overrides the channel metadata", unit = "m",
-                defaultNote = "channel metadata, else 5.0 (sonar) or 1.5 (infrared)")
+                defaultNote = "channel metadata, else 5.0 (sonar) or 1.5 (infrared)", greaterThan = 0)
         Double maxRangeM,
         @Param(value = "Shortest range the sensors measure; closer readings are raised to it", unit = "m",
-                defaultNote = "channel metadata, else 0")
+                defaultNote = "channel metadata, else 0", min = 0)
         Double minRangeM,
         @Param(value = "Sensor poses [{xM, yM, thetaRad}] in index order; overrides the channel metadata",
                 unit = "m, rad", defaultNote = "channel metadata")
         List<PlanarPose> poses,
         @Param(value = "Turn sensors mounted on the head (metadata mount = head) by the head's pan when input head is wired",
                 defaultValue = "true")
-        Boolean panWithHead) {
+        boolean panWithHead) {
 
     public RangeSensorParams {
-        maxRangeM = ParamRules.positiveOrNull("maxRangeM", maxRangeM);
         if (minRangeM != null) {
-            minRangeM = ParamRules.nonNegative(RangeSensorParams.class, "minRangeM", minRangeM);
             if (maxRangeM != null && minRangeM >= maxRangeM) {
                 throw new IllegalArgumentException("minRangeM must be below maxRangeM, was " + minRangeM);
             }
@@ -37,11 +34,10 @@ public record RangeSensorParams(
             throw new IllegalArgumentException("poses must list 1..256 poses, has " + poses.size());
         }
         poses = poses == null ? null : List.copyOf(poses);
-        panWithHead = ParamDefaults.or(RangeSensorParams.class, "panWithHead", panWithHead);
     }
 
     /** Every parameter at its default. */
     public static RangeSensorParams defaults() {
-        return new RangeSensorParams(null, null, null, null);
+        return ParamsJson.defaults(RangeSensorParams.class);
     }
 }

@@ -1,3 +1,4 @@
+// Over 300 lines, on purpose: gathering, estimating, applying, reading and writing one MLLR transform share its layout.
 package org.habla.methods.speech;
 
 import edu.cmu.sphinx.decoder.search.Token;

@@ -1,3 +1,4 @@
+// Over 300 lines, on purpose: the method's inputs, its model loading, queue and decoding are one life cycle.
 package org.habla.methods.speech;
 
 import java.nio.file.Path;
@@ -21,27 +22,33 @@ import org.habla.sample.Sample;
 import org.habla.sample.TextValue;
 
 /**
- * Speech recognition with Sphinx-4, type {@code speech-recognition}: the paper's way for a teacher
- * to talk to the Aibo. Wire input {@code segments} to the utterances of {@code audio-processing}
+ * Speech recognition held to a JSGF grammar, type {@code speech-recognition}: the paper's way for a teacher
+ * to talk to the Aibo. The recogniser is the {@code engine} param's ({@link SpeechEngine}): Sphinx-4
+ * ({@link SphinxDecoder}) or Moonshine on ONNX Runtime ({@link MoonshineDecoder}); the voice-activity
+ * detector, the cutting and trimming of utterances, the grammar and the rejection around it are the same for
+ * both. Wire input {@code segments} to the utterances of {@code audio-processing}
  * (each chunk one utterance), or input {@code audio} to a microphone stream, which the method then
  * cuts into utterances itself with the same voice-activity detector; any rate and channel count
- * (resampled to the 16 kHz mono Sphinx's model needs). Either way each utterance is trimmed to its
+ * (resampled to the 16 kHz mono both engines' models need). Either way each utterance is trimmed to its
  * speech and a fixed margin ({@link UtteranceTrim}), so a recording handed over whole and the same
  * words cut from a stream are heard alike.
  *
  * <p>Each recognised phrase comes out on {@code words} as text and on {@code result} as a record
  * ({@code phrase}, {@code confidence} in (0, 1], {@code timeMs} the decoding time, {@code audioMs}
- * the utterance's length, {@code score} Sphinx's log score of the best path). What comes out is
+ * the utterance's length, {@code score} the engine's log score of the phrase, {@code engine}).
+ * Each engine's confidence is its own, compared with its own threshold ({@code minConfidence} for
+ * Sphinx-4, {@code moonshineMinConfidence} for Moonshine). What comes out is
  * always a whole phrase of the grammar: an utterance whose search ends in Sphinx's out-of-grammar
  * branch, or ends nowhere, gives nothing, and so does a phrase heard with less than
- * {@code minConfidence}. An utterance without {@code minVoicedMs} of voice in it (noise, a bang, a
+ * the engine's threshold. An utterance without {@code minVoicedMs} of voice in it (noise, a bang, a
  * whistled note) is not even decoded. With {@code adaptation} the model is first adapted to one
  * teacher's voice (an MLLR transform written by {@code habla enrol}).
  *
  * <p>The model loads in the background when the method starts (a few seconds; readiness is
  * "loading model" until then) and each utterance is decoded in the background, one at a time, so the
- * engine never waits for Sphinx. Utterances that arrive meanwhile wait, up to {@code maxPending};
- * beyond that the oldest is dropped and counted.
+ * engine never waits for the recogniser. The status line ({@link SpeechStatus}) says what the chain has heard. Utterances that arrive meanwhile wait, up to {@code maxPending};
+ * beyond that the oldest is dropped and counted, and so is one that waited longer than {@link #MAX_WAIT_MS} (a
+ * command said while the model loaded is not said once it is ready).
  */
 public final class SpeechRecognition extends ProcessingMethod {
 
@@ -51,20 +58,26 @@ public final class SpeechRecognition extends ProcessingMethod {
     /** Prior of each phone of the free phone loop (Sphinx's out-of-grammar branch and the confidence search). */
     static final double PHONE_INSERTION = 0.05;
 
+    /**
+     * An utterance that waited longer than this for the decoder (while the model loaded, or behind a slow decoder)
+     * is dropped, not decoded: a command said this late no longer fits what the robot is doing.
+     */
+    static final long MAX_WAIT_MS = 5_000;
+
     /** The pause after speech at which the utterance so far is decoded, in case it is over (audio input). */
     static final double SPECULATE_AFTER_MS = 30;
 
     private static final OutputPort<TextValue> WORDS = OutputPort.of("words", TextValue.class,
             Shape.text("the phrase of the grammar recognised in one utterance"));
     private static final OutputPort<RecordValue> RESULT = OutputPort.of("result", RecordValue.class,
-            Shape.record("the recognised phrase with its confidence and decoding time", "phrase", "confidence",
-                    "timeMs", "audioMs", "score"));
+            Shape.record("the recognised phrase with its confidence and decoding time", Recognition.LAYOUT));
 
     /**
-     * An utterance waiting for the decoder, with the source time of its last audio; a speculative one
-     * (the audio input's utterance so far, taken at a pause) carries its {@link Speculation}.
+     * An utterance waiting for the decoder, with the source time of its last audio and the engine time it was
+     * queued at; a speculative one (the audio input's utterance so far, taken at a pause) carries its
+     * {@link Speculation}.
      */
-    private record Pending(AudioChunk audio, long sourceMicros, Speculation speculation) {
+    private record Pending(AudioChunk audio, long sourceMicros, Speculation speculation, long arrivedMicros) {
     }
 
     /**
@@ -80,7 +93,7 @@ public final class SpeechRecognition extends ProcessingMethod {
         /** Set when the utterance ended before this was decoded: its end's time, and its whole audio. */
         Pending ended;
         double[] whole;
-        Optional<SphinxDecoder.Decoded> result = Optional.empty();
+        Optional<SpeechEngine.Decoded> result = Optional.empty();
 
         Speculation(long segment, double loudMs) {
             this.segment = segment;
@@ -94,12 +107,11 @@ public final class SpeechRecognition extends ProcessingMethod {
     private final ArrayDeque<Pending> pending = new ArrayDeque<>();
     private final VoiceCheck voice;
 
-    private SphinxDecoder decoder;
+    private final SpeechStatus status;
+    private SpeechEngine decoder;
     private boolean busy;
-    private long dropped;
-    private long recognised;
-    private long unvoiced;
-    private long rejected;
+    /** Set when the method stops while an utterance is decoded: the decoding closes the engine when done. */
+    private volatile boolean stopping;
     private AudioFormat streamFormat;
     private UtteranceGate gate;
     private Speculation speculation;
@@ -110,6 +122,7 @@ public final class SpeechRecognition extends ProcessingMethod {
     SpeechRecognition(SpeechRecognitionParams params) {
         this.params = params;
         this.voice = new VoiceCheck(params.minVoicedMs());
+        this.status = new SpeechStatus(params.engine());
         input(segments(params), this::onSegment);
         input(audio(params), this::onAudio);
     }
@@ -129,18 +142,42 @@ public final class SpeechRecognition extends ProcessingMethod {
 
     @Override
     protected void onStart() {
-        readiness(false, "loading model");
-        background("load the Sphinx-4 model", () -> SphinxDecoder.load(settings(params), params.adaptationFile()),
-                loaded -> {
-                    decoder = loaded;
-                    readiness(true, "model loaded");
-                    decodeNext();
-                });
+        readiness(false, "loading the " + params.engine() + " model");
+        background("load the " + params.engine() + " model", () -> load(params), loaded -> {
+            decoder = loaded;
+            showStatus();
+            decodeNext();
+        });
+    }
+
+    /** Loads the engine the params name. */
+    static SpeechEngine load(SpeechRecognitionParams p) throws java.io.IOException {
+        if (p.engine().equals("moonshine")) {
+            Path grammar = p.grammar().isEmpty() ? SphinxDecoder.bundledGrammar() : Path.of(p.grammar());
+            return MoonshineDecoder.load(grammar, SpeechRecognitionParams.modelFolder(p.model()), p.threads());
+        }
+        return SphinxDecoder.load(settings(p), p.adaptationFile());
+    }
+
+    @Override
+    protected void onStop() {
+        stopping = true;
+        if (decoder != null && !busy) {
+            decoder.close();
+        }
+    }
+
+    private void showStatus() {
+        if (decoder != null) {
+            readiness(true, status.line(gate == null || !gate.isOpen() ? -1 : gate.openMs(), pending.size()));
+        }
     }
 
     private void onSegment(AudioChunk chunk, Sample sample) {
         double[] mono = MonoAudio.resample(MonoAudio.mix(chunk), chunk.format().sampleRateHz(), SPHINX_RATE_HZ);
+        status.cut++;
         enqueue(mono, sample.sourceMicros(), null);
+        showStatus();
     }
 
     private void onAudio(AudioChunk chunk, Sample sample) {
@@ -151,6 +188,7 @@ public final class SpeechRecognition extends ProcessingMethod {
             speculation = null;
         }
         for (UtteranceGate.Segment segment : gate.offerSegments(MonoAudio.mix(chunk))) {
+            status.cut++;
             double[] whole = MonoAudio.resample(segment.samples(), streamFormat.sampleRateHz(), SPHINX_RATE_HZ);
             Speculation s = speculation;
             if (s != null && s.segment == segment.number()) {
@@ -161,7 +199,7 @@ public final class SpeechRecognition extends ProcessingMethod {
                         continue;
                     }
                     if (!s.decoded) {
-                        s.ended = new Pending(null, sample.sourceMicros(), null);
+                        s.ended = new Pending(null, sample.sourceMicros(), null, nowMicros());
                         s.whole = whole;
                         continue;
                     }
@@ -175,6 +213,7 @@ public final class SpeechRecognition extends ProcessingMethod {
             enqueue(whole, sample.sourceMicros(), null);
         }
         speculate(sample.sourceMicros());
+        showStatus();
     }
 
     /**
@@ -212,7 +251,7 @@ public final class SpeechRecognition extends ProcessingMethod {
      * speculation that heard nothing leaves the utterance to be decoded whole when it ends.
      */
     private boolean decide(Speculation s, long sourceMicros) {
-        if (s.result.isEmpty() || s.result.get().confidence() < params.minConfidence()) {
+        if (s.result.isEmpty() || s.result.get().confidence() < params.engineMinConfidence()) {
             return false;
         }
         s.decided = true;
@@ -234,18 +273,18 @@ public final class SpeechRecognition extends ProcessingMethod {
         }
         if (!voice.hasVoice(mono16k, SPHINX_RATE_HZ)) {
             if (speculation == null) {
-                unvoiced++;
-                log().debug("{}: an utterance without a voice in it is not decoded ({} so far)", id(), unvoiced);
+                status.unvoiced++;
+                log().debug("{}: an utterance without a voice in it is not decoded ({} so far)", id(), status.unvoiced);
             }
             return false;
         }
         AudioChunk utterance = MonoAudio.chunk(mono16k, SPHINX_RATE_HZ);
-        pending.addLast(new Pending(utterance, sourceMicros, speculation));
+        pending.addLast(new Pending(utterance, sourceMicros, speculation, nowMicros()));
         while (pending.size() > params.maxPending()) {
             pending.removeFirst();
-            dropped++;
-            log().warn("{}: {} utterances dropped so far: more arrive than Sphinx decodes (maxPending {})", id(),
-                    dropped, params.maxPending());
+            status.dropped++;
+            log().warn("{}: {} utterances dropped so far: more arrive than {} decodes (maxPending {})", id(),
+                    status.dropped, params.engine(), params.maxPending());
         }
         decodeNext();
         return true;
@@ -255,19 +294,36 @@ public final class SpeechRecognition extends ProcessingMethod {
         if (decoder == null || busy) {
             return;
         }
-        // a speculation overtaken by the speaker is not worth the decoder's time
-        while (!pending.isEmpty() && pending.peekFirst().speculation() != null
-                && (pending.peekFirst().speculation().resumed || pending.peekFirst().speculation().decided)) {
-            pending.removeFirst();
+        while (!pending.isEmpty()) {
+            Pending first = pending.peekFirst();
+            Speculation s = first.speculation();
+            if (s != null && (s.resumed || s.decided)) {
+                // a speculation overtaken by the speaker is not worth the decoder's time
+                pending.removeFirst();
+            } else if (nowMicros() - first.arrivedMicros() > MAX_WAIT_MS * 1000) {
+                pending.removeFirst();
+                status.late++;
+                if (s != null) {
+                    // the utterance it belongs to is as late: it is not decoded whole either
+                    s.decoded = true;
+                    s.decided = true;
+                }
+                log().warn("{}: {} utterances dropped so far: waited over {} ms for {} (the model loading, or a slow "
+                        + "decoder)", id(), status.late, MAX_WAIT_MS, params.engine());
+            } else {
+                break;
+            }
         }
         if (pending.isEmpty()) {
             return;
         }
         busy = true;
         Pending next = pending.removeFirst();
-        SphinxDecoder d = decoder;
+        SpeechEngine d = decoder;
         background("recognise an utterance", () -> decodeOrSkip(d, next.audio()), decoded -> {
             busy = false;
+            status.decoded++;
+            decoded.ifPresent(r -> status.decodeTook(r.decodeMs()));
             Speculation s = next.speculation();
             if (s != null) {
                 s.decoded = true;
@@ -287,16 +343,20 @@ public final class SpeechRecognition extends ProcessingMethod {
                 decodeNext();
                 return;
             }
+            if (decoded.isEmpty()) {
+                status.noPhrase++;
+            }
             decoded.ifPresent(r -> {
-                if (r.confidence() >= params.minConfidence()) {
+                if (r.confidence() >= params.engineMinConfidence()) {
                     publish(r, r.audioMs(), next.sourceMicros());
                 } else {
-                    rejected++;
-                    log().debug("{}: '{}' heard with confidence {} < minConfidence {}: nothing said", id(), r.phrase(),
-                            r.confidence(), params.minConfidence());
+                    status.lowConfidence++;
+                    log().debug("{}: '{}' heard with confidence {} < {}: nothing said", id(), r.phrase(),
+                            r.confidence(), params.engineMinConfidence());
                 }
             });
             decodeNext();
+            showStatus();
         });
     }
 
@@ -304,26 +364,25 @@ public final class SpeechRecognition extends ProcessingMethod {
      * Decodes on the engine's pool. An utterance Sphinx chokes on is skipped with a warning rather than
      * failing the method: the next one may be fine, and the teacher keeps talking.
      */
-    private Optional<SphinxDecoder.Decoded> decodeOrSkip(SphinxDecoder d, AudioChunk utterance) {
+    private Optional<SpeechEngine.Decoded> decodeOrSkip(SpeechEngine d, AudioChunk utterance) {
         try {
             return d.decode(utterance);
         } catch (RuntimeException e) {
-            log().warn("{}: Sphinx-4 could not decode an utterance of {} ms, skipped: {}", id(),
+            log().warn("{}: {} could not decode an utterance of {} ms, skipped: {}", id(), d.name(),
                     utterance.frameCount() * 1000L / SPHINX_RATE_HZ, e.toString());
             return Optional.empty();
+        } finally {
+            if (stopping) {
+                d.close();
+            }
         }
     }
 
-    private void publish(SphinxDecoder.Decoded r, long audioMs, long sourceMicros) {
-        recognised++;
+    private void publish(SpeechEngine.Decoded r, long audioMs, long sourceMicros) {
+        status.said++;
         emit(words, new TextValue(r.phrase()), sourceMicros);
-        emit(result, RecordValue.builder()
-                .put("phrase", r.phrase())
-                .put("confidence", Math.round(r.confidence() * 1000) / 1000.0)
-                .put("timeMs", r.decodeMs())
-                .put("audioMs", audioMs)
-                .put("score", r.score())
-                .build(), sourceMicros);
+        emit(result, RecordValue.of(new Recognition(r.phrase(), Math.round(r.confidence() * 1000) / 1000.0,
+                r.decodeMs(), audioMs, r.score(), decoder.name())), sourceMicros);
     }
 
     /** Phrases said at an early endpoint, before the hangover ended the utterance. */
@@ -333,17 +392,22 @@ public final class SpeechRecognition extends ProcessingMethod {
 
     /** Utterances dropped because too many waited. */
     public long droppedUtterances() {
-        return dropped;
+        return status.dropped;
+    }
+
+    /** Utterances dropped because they waited longer than {@link #MAX_WAIT_MS} for the decoder. */
+    public long lateUtterances() {
+        return status.late;
     }
 
     /** Utterances not decoded because they held no voice. */
     public long unvoicedUtterances() {
-        return unvoiced;
+        return status.unvoiced;
     }
 
     /** Utterances whose phrase was heard with too little confidence. */
     public long rejectedUtterances() {
-        return rejected;
+        return status.lowConfidence;
     }
 
     /** The decoder's settings from the params (the bundled grammar copied to a file when none is named). */
@@ -355,13 +419,13 @@ public final class SpeechRecognition extends ProcessingMethod {
 
     /** Utterances in which a phrase was recognised. */
     public long recognisedUtterances() {
-        return recognised;
+        return status.said;
     }
 
     /** Makes {@code speech-recognition} methods. */
     public static final class Provider extends SimpleMethodProvider<SpeechRecognitionParams> {
         public Provider() {
-            super("speech-recognition", "Recognises spoken phrases of a grammar with Sphinx-4",
+            super("speech-recognition", "Recognises spoken phrases of a grammar with Sphinx-4 or Moonshine",
                     SpeechRecognitionParams.class, SpeechRecognition::ports, (layer, p) -> new SpeechRecognition(p),
                     Layer.PROCESSING);
         }

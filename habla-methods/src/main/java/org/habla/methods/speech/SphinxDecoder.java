@@ -1,3 +1,4 @@
+// Over 300 lines, on purpose: Sphinx-4 set up once, and both searches of an utterance over the same features.
 package org.habla.methods.speech;
 
 import edu.cmu.sphinx.decoder.search.Token;
@@ -35,7 +36,7 @@ import org.habla.sample.AudioFormat;
  * ratio, as a number in (0, 1]). Making one loads the model (seconds, tens of megabytes), so the
  * {@code speech-recognition} method makes it in the background, once. Not safe for two threads at once.
  */
-public final class SphinxDecoder {
+public final class SphinxDecoder implements SpeechEngine {
 
     /** The grammar bundled with HABLA, covering the teacher's vocabulary (a class-path resource). */
     public static final String BUNDLED_GRAMMAR = "/org/habla/methods/speech/commands.gram";
@@ -59,10 +60,6 @@ public final class SphinxDecoder {
      */
     public record Settings(Path grammarFile, boolean denoise, double outOfGrammarProbability,
             double phoneInsertionProbability, double garbagePrior) {
-    }
-
-    /** What Sphinx made of one utterance: a phrase of the grammar and its confidence. */
-    public record Decoded(String phrase, double confidence, double score, long decodeMs, long audioMs) {
     }
 
     /**
@@ -354,6 +351,12 @@ public final class SphinxDecoder {
      * Decodes one utterance of 16 kHz mono 16-bit audio: a phrase of the grammar with its confidence,
      * or empty when the search ended outside the grammar (its out-of-grammar branch, or no phrase finished).
      */
+    @Override
+    public String name() {
+        return "sphinx4";
+    }
+
+    @Override
     public Optional<Decoded> decode(AudioChunk utterance) {
         if (!utterance.format().equals(AudioFormat.MONO_16K)) {
             throw new IllegalArgumentException("Sphinx needs 16 kHz mono 16-bit audio, got " + utterance.format());

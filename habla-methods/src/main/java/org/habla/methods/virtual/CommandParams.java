@@ -1,9 +1,8 @@
 package org.habla.methods.virtual;
 
 import java.util.Map;
-import org.habla.methods.ParamRules;
+import org.habla.config.ParamsJson;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code command} method: which heard input means which command label. */
 public record CommandParams(
@@ -13,11 +12,11 @@ public record CommandParams(
                         + "\"go forward\":\"forward\",\"turn left\":\"left\",\"turn right\":\"right\",\"go back\":\"back\"}")
         Map<String, String> map,
         @Param(value = "The same label again within this time is taken as the same command and dropped", unit = "ms",
-                defaultValue = "0")
-        Integer debounceMs) {
+                defaultValue = "0", min = 0, max = 600_000)
+        int debounceMs) {
 
     public CommandParams {
-        map = Map.copyOf(ParamDefaults.or(CommandParams.class, "map", map));
+        map = Map.copyOf(map);
         if (map.isEmpty() || map.size() > 1024) {
             throw new IllegalArgumentException("map must hold 1..1024 entries, has " + map.size());
         }
@@ -28,11 +27,10 @@ public record CommandParams(
                         + "of 1..64 characters, has '" + e.getValue() + "'");
             }
         }
-        debounceMs = ParamRules.within(CommandParams.class, "debounceMs", debounceMs, 0, 600_000);
     }
 
     /** Every parameter at its default. */
     public static CommandParams defaults() {
-        return new CommandParams(null, null);
+        return ParamsJson.defaults(CommandParams.class);
     }
 }

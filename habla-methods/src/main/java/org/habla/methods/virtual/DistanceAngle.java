@@ -1,6 +1,5 @@
 package org.habla.methods.virtual;
 
-import com.fasterxml.jackson.databind.JsonNode;
 import java.time.Duration;
 import org.habla.method.Delivery;
 import org.habla.method.InputPort;
@@ -10,6 +9,8 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
+import org.habla.methods.perception.NearestObstacle;
+import org.habla.methods.position.TargetPosition;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
@@ -31,7 +32,7 @@ public final class DistanceAngle extends VirtualMethod {
             Delivery.latest());
     private static final OutputPort<RecordValue> DISTANCE_ANGLE = OutputPort.of("distance_angle", RecordValue.class,
             Shape.record("the target in the robot frame: distance (m), bearing (rad, + left), whether it is perceived",
-                    "distanceM", "angleRad", "seen"));
+                    TargetBearing.LAYOUT));
     static final Ports PORTS = Ports.of(NEAREST, POSITION, DISTANCE_ANGLE);
 
     private final DistanceAngleParams params;
@@ -53,25 +54,23 @@ public final class DistanceAngle extends VirtualMethod {
     }
 
     private void onNearest(RecordValue value, Sample sample) {
-        JsonNode valid = value.get("valid");
-        update(value, !valid.isBoolean() || valid.booleanValue(), sample);
+        NearestObstacle n = NearestObstacle.fromRecord(value);
+        update(n.valid(), n.distanceM(), n.angleRad(), value, sample);
     }
 
     private void onPosition(RecordValue value, Sample sample) {
-        JsonNode s = value.get("seen");
-        update(value, s.isBoolean() && s.booleanValue(), sample);
+        TargetPosition p = TargetPosition.fromRecord(value);
+        update(p.seen(), p.distanceM(), p.angleRad(), value, sample);
     }
 
-    private void update(RecordValue value, boolean perceived, Sample sample) {
+    private void update(boolean perceived, double d, double a, RecordValue value, Sample sample) {
         started = true;
         lastSourceMicros = sample.sourceMicros();
         if (!perceived) {
             seen = false;
             return;
         }
-        double d = finite(value.get("distanceM"));
-        double a = finite(value.get("angleRad"));
-        if (Double.isNaN(d) || Double.isNaN(a) || d < 0) {
+        if (!Double.isFinite(d) || !Double.isFinite(a) || d < 0) {
             if (malformed++ == 0) {
                 log().warn("{}: a record without finite distanceM >= 0 and angleRad was ignored: {}", id(), value);
             }
@@ -91,17 +90,12 @@ public final class DistanceAngle extends VirtualMethod {
         if (seen && nowMicros - lastSeenMicros > params.lostAfterMs() * 1000L) {
             seen = false;
         }
-        emit(out, RecordValue.builder().put("distanceM", distanceM).put("angleRad", angleRad).put("seen", seen).build(),
-                lastSourceMicros);
+        emit(out, RecordValue.of(new TargetBearing(distanceM, angleRad, seen)), lastSourceMicros);
     }
 
     /** Input records that lacked a finite distance or angle, since start. */
     public long malformed() {
         return malformed;
-    }
-
-    private static double finite(JsonNode n) {
-        return n.isNumber() && Double.isFinite(n.doubleValue()) ? n.doubleValue() : Double.NaN;
     }
 
     /** Makes {@code distance-angle} methods. */

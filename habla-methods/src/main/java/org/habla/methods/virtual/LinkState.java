@@ -1,8 +1,8 @@
 package org.habla.methods.virtual;
 
-import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import java.time.Duration;
+import java.util.Map;
+import org.habla.driver.LinkReport;
 import org.habla.method.Delivery;
 import org.habla.method.InputPort;
 import org.habla.method.Layer;
@@ -34,7 +34,7 @@ public final class LinkState extends VirtualMethod {
     private static final InputPort<RecordValue> LINK_IN = InputPort.of("link", RecordValue.class, Delivery.latest());
     private static final OutputPort<RecordValue> LINK = OutputPort.of("link", RecordValue.class, Shape.record(
             "whether the robot's link is up, whether that news is stale, and for how long it has been so",
-            "connected", "stale", "sinceMs", "interface", "detail", "connections"));
+            LinkStatus.LAYOUT));
     static final Ports PORTS = Ports.of(LINK_IN, LINK);
 
     private final LinkStateParams params;
@@ -48,7 +48,7 @@ public final class LinkState extends VirtualMethod {
     private long lastRecordMicros;
     private String iface = "";
     private String detail = "";
-    private JsonNode connections = JsonNodeFactory.instance.objectNode();
+    private Map<String, Boolean> connections = Map.of();
     private long malformed;
 
     LinkState(LinkStateParams params) {
@@ -58,25 +58,25 @@ public final class LinkState extends VirtualMethod {
     }
 
     private void onLink(RecordValue value, Sample sample) {
-        JsonNode up = value.get("up");
-        if (!up.isBoolean()) {
+        LinkReport report = LinkReport.fromRecord(value).orElse(null);
+        if (report == null) {
             if (malformed++ == 0) {
                 log().warn("{}: a link record without a boolean 'up' was ignored: {}", id(), value);
             }
             return;
         }
         long now = nowMicros();
-        if (!known || up.booleanValue() != connected) {
+        if (!known || report.up() != connected) {
             changedMicros = now;
         }
         known = true;
-        connected = up.booleanValue();
+        connected = report.up();
         staleSample = sample.stale();
         silent = false;
         lastRecordMicros = now;
-        iface = value.get("interface").isTextual() ? value.get("interface").asText() : "";
-        detail = value.get("detail").isTextual() ? value.get("detail").asText() : "";
-        connections = value.get("connections").isObject() ? value.get("connections") : JsonNodeFactory.instance.objectNode();
+        iface = report.iface();
+        detail = report.detail();
+        connections = report.connections();
         publish(now);
     }
 
@@ -89,10 +89,8 @@ public final class LinkState extends VirtualMethod {
     }
 
     private void publish(long now) {
-        emit(out, RecordValue.builder().put("connected", connected).put("stale", staleSample || silent)
-                .put("sinceMs", (now - changedMicros) / 1000).put("interface", iface)
-                .put("detail", silent ? "no link news for " + params.staleAfterMs() + " ms" : detail)
-                .set("connections", connections.deepCopy()).build());
+        emit(out, RecordValue.of(new LinkStatus(connected, staleSample || silent, (now - changedMicros) / 1000, iface,
+                silent ? "no link news for " + params.staleAfterMs() + " ms" : detail, connections)));
     }
 
     /** Records without a boolean {@code up}, since start. */

@@ -1,9 +1,8 @@
 package org.habla.methods.virtual;
 
 import java.util.Map;
-import org.habla.methods.ParamRules;
+import org.habla.config.ParamsJson;
 import org.habla.plugin.Param;
-import org.habla.plugin.ParamDefaults;
 
 /** The params of the {@code reward} method: which words and which touches mean pleasure or pain. */
 public record RewardParams(
@@ -15,18 +14,17 @@ public record RewardParams(
                 defaultValue = "{\"backMiddle\":1,\"headTouch\":-1}")
         Map<String, Double> touch,
         @Param(value = "A touch sensor reads as pressed at or above this value (booleans: true)",
-                defaultValue = "0.5")
-        Double threshold) {
+                defaultValue = "0.5", min = 1e-6, max = 1e6)
+        double threshold) {
 
     public RewardParams {
-        words = checked("words", ParamDefaults.or(RewardParams.class, "words", words));
-        touch = checked("touch", ParamDefaults.or(RewardParams.class, "touch", touch));
-        threshold = ParamRules.within(RewardParams.class, "threshold", threshold, 1e-6, 1e6);
+        words = checked("words", words);
+        touch = checked("touch", touch);
     }
 
     /** Every parameter at its default. */
     public static RewardParams defaults() {
-        return new RewardParams(null, null, null);
+        return ParamsJson.defaults(RewardParams.class);
     }
 
     private static Map<String, Double> checked(String name, Map<String, Double> map) {

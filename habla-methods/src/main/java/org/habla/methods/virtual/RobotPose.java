@@ -25,7 +25,7 @@ public final class RobotPose extends VirtualMethod {
 
     private static final InputPort<RecordValue> POSE_IN = InputPort.of("pose", RecordValue.class, Delivery.latest());
     private static final OutputPort<RecordValue> POSE = OutputPort.of("pose", RecordValue.class,
-            Shape.record("the robot's pose: position (m) and heading (rad, counter-clockwise)", PlanarPose.class));
+            Shape.record("the robot's pose: position (m) and heading (rad, counter-clockwise)", PlanarPose.LAYOUT));
     static final Ports PORTS = Ports.of(POSE_IN, POSE);
 
     private final Output<RecordValue> out = output(POSE);

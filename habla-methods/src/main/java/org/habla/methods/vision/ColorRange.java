@@ -1,6 +1,6 @@
 package org.habla.methods.vision;
 
-import org.habla.methods.ParamRules;
+import org.habla.config.ParamsJson;
 import org.habla.plugin.Param;
 
 /**
@@ -9,23 +9,21 @@ import org.habla.plugin.Param;
  * {@code {"hMin": 170, "hMax": 10}} takes hues 170..179 and 0..10.
  */
 public record ColorRange(
-        @Param(value = "Lowest hue (OpenCV scale, half degrees)", defaultValue = "145") Integer hMin,
-        @Param(value = "Highest hue; below hMin means the range wraps around 0", defaultValue = "175") Integer hMax,
-        @Param(value = "Lowest saturation", defaultValue = "90") Integer sMin,
-        @Param(value = "Highest saturation", defaultValue = "255") Integer sMax,
-        @Param(value = "Lowest value (brightness)", defaultValue = "60") Integer vMin,
-        @Param(value = "Highest value (brightness)", defaultValue = "255") Integer vMax) {
+        @Param(value = "Lowest hue (OpenCV scale, half degrees)", defaultValue = "145",
+                min = 0, max = HUE_MAX)
+        int hMin,
+        @Param(value = "Highest hue; below hMin means the range wraps around 0", defaultValue = "175",
+                min = 0, max = HUE_MAX)
+        int hMax,
+        @Param(value = "Lowest saturation", defaultValue = "90", min = 0, max = 255) int sMin,
+        @Param(value = "Highest saturation", defaultValue = "255", min = 0, max = 255) int sMax,
+        @Param(value = "Lowest value (brightness)", defaultValue = "60", min = 0, max = 255) int vMin,
+        @Param(value = "Highest value (brightness)", defaultValue = "255", min = 0, max = 255) int vMax) {
 
     /** The largest hue OpenCV gives an 8-bit image. */
     public static final int HUE_MAX = 179;
 
     public ColorRange {
-        hMin = ParamRules.within(ColorRange.class, "hMin", hMin, 0, HUE_MAX);
-        hMax = ParamRules.within(ColorRange.class, "hMax", hMax, 0, HUE_MAX);
-        sMin = ParamRules.within(ColorRange.class, "sMin", sMin, 0, 255);
-        sMax = ParamRules.within(ColorRange.class, "sMax", sMax, 0, 255);
-        vMin = ParamRules.within(ColorRange.class, "vMin", vMin, 0, 255);
-        vMax = ParamRules.within(ColorRange.class, "vMax", vMax, 0, 255);
         if (sMin > sMax) {
             throw new IllegalArgumentException("sMin (" + sMin + ") must not be above sMax (" + sMax + ")");
         }
@@ -36,7 +34,7 @@ public record ColorRange(
 
     /** The pink of the target ball: hot pink and its shaded sides. */
     public static ColorRange pink() {
-        return new ColorRange(null, null, null, null, null, null);
+        return ParamsJson.defaults(ColorRange.class);
     }
 
     /** Whether the hue range wraps around red (hMin above hMax). */

@@ -30,7 +30,7 @@ public final class ImageSegmentation extends ProcessingMethod {
 
     private static final InputPort<ImageFrame> IMAGE = InputPort.of("image", ImageFrame.class, Delivery.latest());
     private static final OutputPort<RecordValue> BLOBS = OutputPort.of("blobs", RecordValue.class, Shape.record(
-            "regions of each colour class in pixels, largest first", "width", "height", "blobs"));
+            "regions of each colour class in pixels, largest first", BlobList.LAYOUT));
     private static final OutputPort<RecordValue> LARGEST = OutputPort.of("largest", RecordValue.class, Shape.record(
             "the largest region of the first colour class", "seen", "label", "cx", "cy", "area", "x", "y", "w", "h",
             "width", "height"));

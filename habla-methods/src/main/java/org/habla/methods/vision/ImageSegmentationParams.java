@@ -2,7 +2,7 @@ package org.habla.methods.vision;
 
 import java.util.LinkedHashMap;
 import java.util.Map;
-import org.habla.methods.ParamRules;
+import org.habla.config.ParamsJson;
 import org.habla.plugin.Param;
 
 /**
@@ -13,24 +13,21 @@ public record ImageSegmentationParams(
         @Param(value = "Colour classes by label, each an HSV box; the first one feeds output largest",
                 defaultValue = "{\"pink\": {\"hMin\": 145, \"hMax\": 175, \"sMin\": 90, \"vMin\": 60}}")
         Map<String, ColorRange> colors,
-        @Param(value = "Smallest blob kept", unit = "px", defaultValue = "12")
-        Integer minAreaPx,
+        @Param(value = "Smallest blob kept", unit = "px", defaultValue = "12", min = 1, max = 1 << 28)
+        int minAreaPx,
         @Param(value = "Side of the square opening (erode then dilate) that removes specks; 0 or 1 skips it",
-                unit = "px", defaultValue = "5")
-        Integer openPx,
+                unit = "px", defaultValue = "5", min = 0, max = 31)
+        int openPx,
         @Param(value = "Side of the square closing (dilate then erode) that fills holes; 0 or 1 skips it",
-                unit = "px", defaultValue = "3")
-        Integer closePx,
-        @Param(value = "Most blobs reported per frame, largest first", defaultValue = "16")
-        Integer maxBlobs) {
+                unit = "px", defaultValue = "3", min = 0, max = 31)
+        int closePx,
+        @Param(value = "Most blobs reported per frame, largest first", defaultValue = "16", min = 1, max = 1024)
+        int maxBlobs) {
 
     /** The most colour classes a method may look for. */
     public static final int MAX_COLORS = 16;
 
     public ImageSegmentationParams {
-        if (colors == null) {
-            colors = Map.of("pink", ColorRange.pink());
-        }
         if (colors.isEmpty() || colors.size() > MAX_COLORS) {
             throw new IllegalArgumentException("colors must name 1.." + MAX_COLORS + " classes, has " + colors.size());
         }
@@ -41,15 +38,11 @@ public record ImageSegmentationParams(
             }
         }
         colors = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(colors));
-        minAreaPx = ParamRules.within(ImageSegmentationParams.class, "minAreaPx", minAreaPx, 1, 1 << 28);
-        openPx = ParamRules.within(ImageSegmentationParams.class, "openPx", openPx, 0, 31);
-        closePx = ParamRules.within(ImageSegmentationParams.class, "closePx", closePx, 0, 31);
-        maxBlobs = ParamRules.within(ImageSegmentationParams.class, "maxBlobs", maxBlobs, 1, 1024);
     }
 
     /** Every parameter at its default: one class, pink. */
     public static ImageSegmentationParams defaults() {
-        return new ImageSegmentationParams(null, null, null, null, null);
+        return ParamsJson.defaults(ImageSegmentationParams.class);
     }
 
     /** The label of the first class, the one output {@code largest} follows. */

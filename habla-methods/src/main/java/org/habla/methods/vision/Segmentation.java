@@ -1,6 +1,5 @@
 package org.habla.methods.vision;
 
-import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.List;
 import java.util.Optional;
@@ -34,14 +33,9 @@ public record Segmentation(int width, int height, List<Blob> blobs, String error
         return blobs.stream().filter(b -> b.label().equals(label)).findFirst();
     }
 
-    /** The {@code blobs} record: {@code {"width","height","blobs":[...]}}. */
+    /** The {@code blobs} record: {@code {"width","height","blobs":[...]}}, carrying a {@link BlobList}. */
     public RecordValue toRecord() {
-        ObjectNode o = com.fasterxml.jackson.databind.node.JsonNodeFactory.instance.objectNode();
-        o.put("width", width);
-        o.put("height", height);
-        ArrayNode list = o.putArray("blobs");
-        blobs.forEach(b -> list.add(b.toJson()));
-        return RecordValue.of(o);
+        return RecordValue.of(new BlobList(width, height, blobs.stream().map(BlobList.Entry::of).toList()));
     }
 
     /**

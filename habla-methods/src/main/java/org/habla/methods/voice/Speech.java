@@ -8,6 +8,7 @@ import org.habla.method.OutputPort;
 import org.habla.method.Ports;
 import org.habla.method.Shape;
 import org.habla.method.VirtualMethod;
+import org.habla.methods.emotion.TeacherEmotion;
 import org.habla.plugin.SimpleMethodProvider;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.PayloadKind;
@@ -50,7 +51,7 @@ public final class Speech extends VirtualMethod {
     }
 
     private void onEmotion(RecordValue record, Sample sample) {
-        String e = record.get("emotion").asText("");
+        String e = TeacherEmotion.emotionOf(record);
         long now = nowMicros();
         if (!params.sayEmotions().contains(e)) {
             lastEmotion = e;

@@ -2,23 +2,21 @@ package org.habla.methods.audio;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import com.fasterxml.jackson.databind.json.JsonMapper;
 import java.util.Map;
+import org.habla.config.ParamsJson;
+import org.habla.method.Input;
 import org.habla.method.Layer;
 import org.habla.method.Method;
 import org.habla.method.Output;
-import org.habla.method.Input;
 import org.habla.plugin.MethodProvider;
 import org.habla.plugin.PluginRegistry;
 import org.junit.jupiter.api.Test;
 
 class AudioMethodsDiscoveryTest {
 
-    private static final JsonMapper JSON = JsonMapper.builder().build();
-
     @SuppressWarnings({"unchecked", "rawtypes"})
     private static Method create(MethodProvider provider, String paramsJson) throws Exception {
-        Record params = (Record) JSON.readValue(paramsJson, provider.paramsType());
+        Record params = (Record) ParamsJson.of(provider.paramsType(), paramsJson);
         return provider.create(Layer.PROCESSING, params);
     }
 

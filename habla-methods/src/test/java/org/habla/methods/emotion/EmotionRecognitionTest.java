@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.within;
 
 import java.util.Map;
 import java.util.Random;
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.method.MethodState;
 import org.habla.sample.NumberValue;
@@ -79,8 +80,7 @@ class EmotionRecognitionTest {
 
     @Test
     void twoVoicesEachGetTheirOwnBaselineSoOrdinaryCommandsStayCalm() {
-        EmotionRecognitionParams two = new EmotionRecognitionParams(null, null, null, null, 2, null, null, null, null, null,
-                null);
+        EmotionRecognitionParams two = ParamsJson.of(EmotionRecognitionParams.class, "{\"voices\": 2}");
         EmotionRecognition m = new EmotionRecognition(two);
         MethodHarness h = MethodHarness.started("emotion", m);
         MethodHarness one = MethodHarness.started("emotion", new EmotionRecognition(EmotionRecognitionParams.defaults()));
@@ -114,8 +114,7 @@ class EmotionRecognitionTest {
 
     @Test
     void touchesAndRewardsCarryTheirValenceAndOddInputsAreIgnored() {
-        EmotionRecognitionParams p = new EmotionRecognitionParams(null, Map.of("backMiddle", 1.0, "headTouch", -1.0),
-                null, null, null, null, null, null, null, null, null);
+        EmotionRecognitionParams p = ParamsJson.of(EmotionRecognitionParams.class, "{\"touchValence\": {\"backMiddle\": 1.0, \"headTouch\": -1.0}}");
         EmotionRecognition m = new EmotionRecognition(p);
         MethodHarness h = MethodHarness.started("emotion", m);
         h.push("touch", new TextValue("backMiddle"));

@@ -3,6 +3,7 @@ package org.habla.methods.locomotion;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.sample.VectorValue;
 import org.junit.jupiter.api.Test;
@@ -34,7 +35,7 @@ class GaitCompositionTest {
 
     @Test
     void aStrafeShareWalksPartOfATurnSidewaysAndAThirdElementIsStrafe() {
-        GaitCompositionParams p = new GaitCompositionParams(null, null, null, null, null, null, 0.5, 0.1);
+        GaitCompositionParams p = ParamsJson.of(GaitCompositionParams.class, "{\"strafeShare\": 0.5, \"strafeMpsPerRadps\": 0.1}");
         MethodHarness h = MethodHarness.started("gait", new GaitComposition(p));
         h.push("motion", VectorValue.of(0, 0.6));
         double[] w = walk(h);
@@ -47,7 +48,7 @@ class GaitCompositionTest {
 
     @Test
     void scaleParamsAdaptAWheeledRobotsSpeedsAndGarbageStops() {
-        GaitCompositionParams p = new GaitCompositionParams(0.5, 2.0, null, null, null, null, null, null);
+        GaitCompositionParams p = ParamsJson.of(GaitCompositionParams.class, "{\"forwardScale\": 0.5, \"rotateScale\": 2.0}");
         GaitComposition g = new GaitComposition(p);
         MethodHarness h = MethodHarness.started("gait", g);
         h.push("motion", VectorValue.of(0.2, 0.3));

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import java.util.List;
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.sample.Payload;
 import org.habla.sample.RecordValue;
@@ -65,7 +66,7 @@ class MotionCompositionTest {
     @Test
     void theTurnRateRampsAndTheLimitsInputCapsTheTarget() {
         MethodHarness h = MethodHarness.started("compose", new MotionComposition(
-                new MotionCompositionParams(null, null, 4.0, null, null, null)));
+                ParamsJson.of(MotionCompositionParams.class, "{\"maxRotAccelRadps2\": 4.0}")));
         h.push("limits", RecordValue.builder().put("maxVelMps", 0.1).put("maxRotVelRadps", 0.5).build());
         h.push("motion", VectorValue.of(0.2, 1.0)).advanceMillis(2000);
         assertThat(v(h.last("motion"))).isCloseTo(0.1, within(1e-12));

@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Random;
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.AudioFormat;
@@ -19,7 +20,7 @@ class NoteRecognitionTest {
     private static final List<String> TEACHER_NOTES = List.of("C5", "E5", "G5", "C6");
 
     private static NoteRecognitionParams teacherNotes() {
-        return new NoteRecognitionParams(TEACHER_NOTES, null, null, null, null, null, null, null, null, null, null);
+        return ParamsJson.of(NoteRecognitionParams.class, "{\"notes\": [\"C5\", \"E5\", \"G5\", \"C6\"]}");
     }
 
     /** A played note: name, start and end in seconds. */
@@ -146,8 +147,7 @@ class NoteRecognitionTest {
 
     @Test
     void aDifferentTuningReferenceShiftsTheNames() {
-        NoteRecognitionParams baroque = new NoteRecognitionParams(List.of(), null, 415.0, null, null, null, null, null,
-                null, null, null);
+        NoteRecognitionParams baroque = ParamsJson.of(NoteRecognitionParams.class, "{\"notes\": [], \"referenceA4Hz\": 415.0}");
         MethodHarness h = MethodHarness.started("notes", new NoteRecognition(baroque));
         double[] x = new double[RATE];
         for (int i = 0; i < x.length; i++) {

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.assertj.core.api.Assertions.within;
 
+import org.habla.config.ParamsJson;
 import org.junit.jupiter.api.Test;
 
 class NoteTest {
@@ -26,7 +27,6 @@ class NoteTest {
     void aBadNameIsRefusedWithTheName() {
         assertThatThrownBy(() -> Note.parse("H2")).hasMessageContaining("'H2'");
         assertThatThrownBy(() -> Note.parse("C")).hasMessageContaining("not a note name");
-        assertThatThrownBy(() -> new NoteRecognitionParams(java.util.List.of("C5", "X9"), null, null, null, null,
-                null, null, null, null, null, null)).hasMessageContaining("'X9'");
+        assertThatThrownBy(() -> ParamsJson.of(NoteRecognitionParams.class, "{\"notes\": [\"C5\", \"X9\"]}")).hasMessageContaining("'X9'");
     }
 }

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import java.util.List;
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.methods.geometry.PlanarPose;
 import org.habla.methods.geometry.RangeScan;
@@ -61,7 +62,7 @@ class NearestDistanceTest {
     @Test
     void readingsBelowMinValidAndNothingSeenAreIgnored() {
         MethodHarness h = MethodHarness.started("nearest",
-                new NearestDistance(new NearestDistanceParams(0.1, null, null, null)));
+                new NearestDistance(ParamsJson.of(NearestDistanceParams.class, "{\"minValidM\": 0.1}")));
         h.push("scan", scan(0.05, 5.0, 5.0, 5.0));
         RecordValue n = (RecordValue) h.last("nearest");
         assertThat(n.get("valid").booleanValue()).isFalse();

@@ -6,9 +6,10 @@ import static org.assertj.core.api.Assertions.within;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
-import org.habla.methods.geometry.CameraModel;
 import org.habla.methods.gaze.HeadPose;
+import org.habla.methods.geometry.CameraModel;
 import org.habla.sample.RecordValue;
 import org.junit.jupiter.api.Test;
 
@@ -154,7 +155,7 @@ class CoordinateTranslationTest {
 
     @Test
     void aLensAheadOfThePanAxisAndTheBodysEdgeAreAccountedFor() {
-        CoordinateTranslationParams p = new CoordinateTranslationParams(null, null, null, null, null, 0.08, 0.07, 0.15, null);
+        CoordinateTranslationParams p = ParamsJson.of(CoordinateTranslationParams.class, "{\"cameraXM\": 0.08, \"lensForwardM\": 0.07, \"bodyRadiusM\": 0.15}");
         int[] count = {0};
         double[] worst = sweep(CAMERA, false, count, p);
         System.out.printf("coordinate-translation: lens 0.08 + 0.07 m ahead, body radius 0.15 m, %d positions, worst %.3f m, "

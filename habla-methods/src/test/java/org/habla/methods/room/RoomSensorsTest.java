@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.within;
 
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.AudioFormat;
@@ -17,7 +18,7 @@ class RoomSensorsTest {
 
     @Test
     void lightReadingsAreCheckedClippedAndSmoothed() {
-        LightSensor sensor = new LightSensor(new LightSensor.Params(1000.0, 0.5));
+        LightSensor sensor = new LightSensor(ParamsJson.of(LightSensor.Params.class, "{\"maxLux\": 1000.0, \"smoothing\": 0.5}"));
         MethodHarness h = MethodHarness.started("light", sensor);
         h.push("lux", new NumberValue(100)).push("lux", new NumberValue(-3)).push("lux", new NumberValue(5000));
         assertThat(h.values("lux")).containsExactly(new NumberValue(100), new NumberValue(550));
@@ -40,7 +41,7 @@ class RoomSensorsTest {
         for (int i = 0; i < n; i++) {
             pcm.putShort((short) Math.round(32767 * Math.sin(2 * Math.PI * 440 * i / 16000.0)));
         }
-        MethodHarness h = MethodHarness.started("sound", new SoundLevel(new SoundLevel.Params(-90.0, null)));
+        MethodHarness h = MethodHarness.started("sound", new SoundLevel(ParamsJson.of(SoundLevel.Params.class, "{\"floorDb\": -90.0}")));
         h.push("audio", AudioChunk.of(AudioFormat.MONO_16K, pcm.array()));
         h.push("audio", AudioChunk.of(AudioFormat.MONO_16K, new byte[320]));
         assertThat(((NumberValue) h.values("levelDb").get(0)).value()).isCloseTo(-3.01, within(0.05));
@@ -49,10 +50,10 @@ class RoomSensorsTest {
 
     @Test
     void blindsSendAPositionInPercentAndTheSpeakerTheTextToSay() {
-        MethodHarness blinds = MethodHarness.started("blinds", new Blinds(new Blinds.Params(true)));
+        MethodHarness blinds = MethodHarness.started("blinds", new Blinds(ParamsJson.of(Blinds.Params.class, "{\"invert\": true}")));
         blinds.push("open", new NumberValue(0.25)).push("open", new NumberValue(0.25));
         assertThat(blinds.values("command")).containsExactly(RecordValue.builder().put("position", 75).build());
-        MethodHarness speaker = MethodHarness.started("speaker", new RoomSpeaker(new RoomSpeaker.Params(30, 5)));
+        MethodHarness speaker = MethodHarness.started("speaker", new RoomSpeaker(ParamsJson.of(RoomSpeaker.Params.class, "{\"volume\": 30, \"maxLength\": 5}")));
         speaker.push("text", new TextValue("  hello there ")).push("text", new TextValue("   "));
         assertThat(speaker.values("command")).containsExactly(
                 RecordValue.builder().put("say", "hello").put("volume", 30).build());

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import org.habla.config.ParamsJson;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.method.MethodHarness;
 import org.habla.method.MethodState;
@@ -26,7 +27,7 @@ class LegsTest {
 
     @Test
     void limitsComeFromParamsAndATwoElementVectorIsForwardAndRotate() {
-        MethodHarness h = MethodHarness.started("legs", new Legs(new LegsParams(0.3, 0.1, 0.0, 1.0, null)));
+        MethodHarness h = MethodHarness.started("legs", new Legs(ParamsJson.of(LegsParams.class, "{\"maxForwardMps\": 0.3, \"maxReverseMps\": 0.1, \"maxStrafeMps\": 0.0, \"maxRotateRadps\": 1.0}")));
         h.push("walk", VectorValue.of(0.25, 2.0));
         assertThat(h.last("walk")).isEqualTo(VectorValue.of(0.25, 0, 1.0));
         h.push("walk", VectorValue.of(-0.25, 0.2, 0));
@@ -38,7 +39,7 @@ class LegsTest {
         ObjectNode meta = JsonNodeFactory.instance.objectNode().put("maxForwardMps", 0.25).put("maxReverseMps", 0.05)
                 .put("maxStrafeMps", 0.1).put("maxRotateRadps", 0.9);
         ChannelDescriptor walk = ChannelDescriptor.command("walk", PayloadKind.VECTOR, "m/s, rad/s", true).withMetadata(meta);
-        Legs legs = new Legs(new LegsParams(null, null, 0.02, null, null));
+        Legs legs = new Legs(ParamsJson.of(LegsParams.class, "{\"maxStrafeMps\": 0.02}"));
         MethodHarness h = MethodHarness.of("legs", legs).wireCommand("walk", walk).start();
         h.push("walk", VectorValue.of(1, 1, 1));
         assertThat(h.last("walk")).isEqualTo(VectorValue.of(0.25, 0.02, 0.9));

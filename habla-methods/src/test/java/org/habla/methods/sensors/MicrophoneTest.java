@@ -3,6 +3,7 @@ package org.habla.methods.sensors;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.Random;
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.AudioFormat;
@@ -99,7 +100,7 @@ class MicrophoneTest {
 
     @Test
     void aDcOffsetIsRemovedAndStereoIsMixedDownOnRequest() {
-        MicrophoneParams p = new MicrophoneParams(true, null, false, null, null, null, null, null, null);
+        MicrophoneParams p = ParamsJson.of(MicrophoneParams.class, "{\"downmix\": true, \"gate\": false}");
         MethodHarness h = MethodHarness.started("mic", new Microphone(p));
         double[] in = new double[RATE];
         for (int i = 0; i < in.length; i++) {

@@ -54,7 +54,7 @@ class RangeSensorTest {
 
     @Test
     void paramsOverrideTheMetadataAndAMismatchedRingLosesOnlyItsPoses() throws Exception {
-        RangeSensorParams p = new RangeSensorParams(2.0, null, List.of(new PlanarPose(0, 0, 0)), null);
+        RangeSensorParams p = new RangeSensorParams(2.0, null, List.of(new PlanarPose(0, 0, 0)), true);
         MethodHarness h = MethodHarness.of("ir", new RangeSensor(p, 1.5))
                 .wireChannel("ranges", sonarChannel("{\"maxRangeM\": 9.0}")).start();
         h.push("ranges", VectorValue.of(2.5));

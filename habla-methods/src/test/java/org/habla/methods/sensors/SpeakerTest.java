@@ -3,6 +3,7 @@ package org.habla.methods.sensors;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.AudioFormat;
@@ -27,7 +28,7 @@ class SpeakerTest {
 
     @Test
     void stereoIsMixedToMonoWithTheGainAndLongSoundsAreSplit() {
-        Speaker speaker = new Speaker(new SpeakerParams(6.0, 100, null, null, null));
+        Speaker speaker = new Speaker(ParamsJson.of(SpeakerParams.class, "{\"volumeDb\": 6.0, \"maxChunkMs\": 100}"));
         MethodHarness h = MethodHarness.started("speaker", speaker);
         h.push("audio", stereo(4000, 0.2, 0.1));
         assertThat(h.values("speaker")).hasSize(3);

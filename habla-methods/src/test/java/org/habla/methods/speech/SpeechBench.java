@@ -31,14 +31,22 @@ import org.habla.sample.AudioChunk;
 /**
  * {@code bench/run speech}: the speech chain of config/aibo.json on the held-out voices of the
  * evaluation set ({@code bench/speech/make-eval-set.sh}): accuracy per condition, rejection of speech
- * outside the grammar, the gain of enrolling each teacher, the real-time factor, and — through a
+ * outside the grammar, the gain of enrolling each teacher, the real-time factor (in wall time, and in the chain
+ * thread's CPU time, which other load on the machine does not change), and — through a
  * daemon with real sockets, the stream played in real time — the latency from the end of speech to the
- * phrase on the socket. Options: {@code --set DIR} (default target/speech-eval), {@code --config FILE}
- * (default config/aibo.json), {@code --latency-voices N} (default 2), {@code --enrol-voices N} (default 8).
+ * phrase on the socket. Each figure for each engine ({@code --engines sphinx4,moonshine}, the default), the
+ * config's chain with only its engine changed. Options: {@code --set DIR} (default target/speech-eval),
+ * {@code --config FILE} (default config/aibo.json), {@code --latency-voices N} (default 2),
+ * {@code --enrol-voices N} (default 8; enrolment is Sphinx-4's).
  */
 public final class SpeechBench {
 
     private static final int CHUNK_MS = 32;
+    /**
+     * The in-memory chain decodes on the calling thread (ONNX Runtime on one thread runs there too): its CPU time is
+     * the chain's cost whatever else holds the cores.
+     */
+    private static final java.lang.management.ThreadMXBean THREADS = java.lang.management.ManagementFactory.getThreadMXBean();
 
     public static void main(String[] args) throws Exception {
         List<String> a = Arrays.asList(args);
@@ -56,17 +64,41 @@ public final class SpeechBench {
                 String.join(", ", heldOut.stream().map(v -> v.name() + " (" + v.engine() + ")").toList()),
                 voices.size() - heldOut.size());
         if (a.contains("--latency-only")) {
-            latency(config, heldOut.subList(0, Math.min(latencyVoices, heldOut.size())));
+            for (String engine : option(a, "--engines", "sphinx4,moonshine").split(",")) {
+                latency(config, heldOut.subList(0, Math.min(latencyVoices, heldOut.size())), engine);
+            }
             System.exit(0);
         }
-        SpeechChain chain = SpeechChain.fromConfig(config, "audio", "speech");
-        System.out.printf("%-9s %-22s %-22s %-12s %-10s %s%n", "condition", "in-grammar right", "out-of-grammar silent",
-                "not grammar", "x realtime", "worst voice");
+        List<String> engines = Arrays.asList(option(a, "--engines", "sphinx4,moonshine").split(","));
+        for (String engine : engines) {
+            table(config, heldOut, engine);
+        }
+        if (enrolVoices > 0) {
+            adaptation(config, heldOut.subList(0, Math.min(enrolVoices, heldOut.size())));
+        }
+        if (latencyVoices > 0) {
+            for (String engine : engines) {
+                latency(config, heldOut.subList(0, Math.min(latencyVoices, heldOut.size())), engine);
+            }
+        }
+        System.exit(0);
+    }
+
+    /** The in-memory chain of the config, with {@code engine} as its recogniser, on every held-out stream. */
+    private static void table(Path config, List<EvalSet.Voice> heldOut, String engine) throws Exception {
+        HablaConfig c = new ConfigLoader(PluginRegistry.discover()).load(config);
+        MethodConfig speech = c.method("speech").orElseThrow();
+        SpeechChain chain = SpeechChain.of(c.method("audio").orElseThrow().params(),
+                ((SpeechRecognitionParams) speech.params()).withEngine(engine), SpeechChain.direct(speech));
+        System.out.printf("%nEngine %s (%s)%n", engine, config);
+        System.out.printf("%-9s %-22s %-22s %-12s %-10s %-10s %s%n", "condition", "in-grammar right",
+                "out-of-grammar silent", "not grammar", "x realtime", "x on CPU", "worst voice");
         StreamScore total = new StreamScore();
         for (String condition : EvalSet.CONDITIONS) {
             StreamScore score = new StreamScore();
             double audioS = 0;
             long busyNs = 0;
+            long cpuNs = 0;
             String worst = "";
             double worstAcc = 101;
             for (EvalSet.Voice v : heldOut) {
@@ -75,7 +107,9 @@ public final class SpeechBench {
                 }
                 AudioChunk stream = Utterances.readWav(v.stream(condition));
                 long t0 = System.nanoTime();
+                long c0 = THREADS.getCurrentThreadCpuTime();
                 List<SpeechChain.Heard> heard = chain.run(stream, CHUNK_MS);
+                cpuNs += THREADS.getCurrentThreadCpuTime() - c0;
                 busyNs += System.nanoTime() - t0;
                 audioS += stream.frameCount() / (double) stream.format().sampleRateHz();
                 StreamScore s = new StreamScore();
@@ -87,9 +121,10 @@ public final class SpeechBench {
                 score.add(s);
             }
             total.add(score);
-            System.out.printf("%-9s %4d/%-4d %6.1f %%   %4d/%-4d %6.1f %%   %-12d %-10.1f %s%n", condition,
+            System.out.printf("%-9s %4d/%-4d %6.1f %%   %4d/%-4d %6.1f %%   %-12d %-10.1f %-10.1f %s%n", condition,
                     score.inGrammarRight, score.inGrammar, score.accuracy(), score.outOfGrammarRejected,
-                    score.outOfGrammar, score.rejection(), score.notInGrammar, audioS / (busyNs / 1e9), worst);
+                    score.outOfGrammar, score.rejection(), score.notInGrammar, audioS / (busyNs / 1e9),
+                    audioS / (cpuNs / 1e9), worst);
         }
         System.out.printf("%-9s %4d/%-4d %6.1f %%   %4d/%-4d %6.1f %%   %-12d%n", "all", total.inGrammarRight,
                 total.inGrammar, total.accuracy(), total.outOfGrammarRejected, total.outOfGrammar, total.rejection(),
@@ -98,13 +133,21 @@ public final class SpeechBench {
                 + "gave nothing, other words and phrases %d/%d; load average %s%n", total.grammarWordItemsRejected,
                 total.grammarWordItems, total.outOfGrammarRejected - total.grammarWordItemsRejected,
                 total.outOfGrammar - total.grammarWordItems, loadAverage());
-        if (enrolVoices > 0) {
-            adaptation(config, heldOut.subList(0, Math.min(enrolVoices, heldOut.size())));
+        System.out.printf("resident memory of this process after the %s table: %d MB%n", engine, residentMb());
+    }
+
+    /** This process's resident memory (VmRSS), in MB. */
+    static long residentMb() {
+        try {
+            for (String line : Files.readAllLines(Path.of("/proc/self/status"))) {
+                if (line.startsWith("VmRSS:")) {
+                    return Long.parseLong(line.replaceAll("[^0-9]", "")) / 1024;
+                }
+            }
+        } catch (IOException e) {
+            // not on Linux
         }
-        if (latencyVoices > 0) {
-            latency(config, heldOut.subList(0, Math.min(latencyVoices, heldOut.size())));
-        }
-        System.exit(0);
+        return -1;
     }
 
     /**
@@ -166,7 +209,7 @@ public final class SpeechBench {
     }
 
     /** Plays held-out streams into a daemon in real time and times each phrase from the end of its speech. */
-    private static void latency(Path config, List<EvalSet.Voice> voices) throws Exception {
+    private static void latency(Path config, List<EvalSet.Voice> voices, String engine) throws Exception {
         PluginRegistry registry = PluginRegistry.discover();
         HablaConfig c = new ConfigLoader(registry).load(config);
         MethodConfig audio = c.method("audio").orElseThrow();
@@ -184,7 +227,7 @@ public final class SpeechBench {
                    "params": {"kind": "text", "delivery": "queue"}, "expose": {"port": %d, "name": "words"}}]}
                 """.formatted(ports[0], ParamsJson.write(audio.params()),
                 SpeechChain.direct(speech) ? "\"audio\": \"mic.out\"" : "\"segments\": \"audio.segments\"",
-                ParamsJson.write(speech.params()), ports[1]);
+                ParamsJson.write(((SpeechRecognitionParams) speech.params()).withEngine(engine)), ports[1]);
         Daemon d = Daemon.start(new ConfigLoader(registry).parse(json, config.toAbsolutePath().getParent()), registry,
                 EngineClock.system());
         Histogram h = new Histogram(60_000_000L, 3);
@@ -254,9 +297,9 @@ public final class SpeechBench {
         } finally {
             d.close();
         }
-        System.out.printf("%nLatency through a daemon (sockets on loopback, %.0f s of held-out clean and noise20 speech "
+        System.out.printf("%nEngine %s: latency through a daemon (sockets on loopback, %.0f s of held-out clean and noise20 speech "
                 + "played in real time in %d ms chunks): end of speech -> phrase on the socket, %d phrases right of %d%n",
-                audioS, CHUNK_MS, right, items);
+                engine, audioS, CHUNK_MS, right, items);
         System.out.printf("p50 %.0f ms   p90 %.0f ms   p99 %.0f ms   max %.0f ms   (speech-recognition fed by %s; "
                 + "load average %s)%n", h.getValueAtPercentile(50) / 1e3, h.getValueAtPercentile(90) / 1e3,
                 h.getValueAtPercentile(99) / 1e3, h.getMaxValue() / 1e3,

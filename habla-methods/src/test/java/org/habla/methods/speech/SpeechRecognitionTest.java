@@ -58,7 +58,7 @@ class SpeechRecognitionTest {
     private static MethodHarness loaded(SpeechRecognitionParams params) {
         MethodHarness h = MethodHarness.started("speech", new SpeechRecognition(params));
         assertThat(h.ready()).isFalse();
-        assertThat(h.readinessDetail()).isEqualTo("loading model");
+        assertThat(h.readinessDetail()).isEqualTo("loading the " + params.engine() + " model");
         long t0 = System.nanoTime();
         assertThat(h.runBackground()).isEqualTo(1);
         System.out.printf("speech-recognition: model loaded in %d ms%n", (System.nanoTime() - t0) / 1_000_000);
@@ -274,10 +274,24 @@ class SpeechRecognitionTest {
     }
 
     @Test
+    void utterancesThatWaitedTooLongWhileTheModelLoadedAreDroppedNotSaidLate() throws Exception {
+        MethodHarness h = MethodHarness.started("speech", new SpeechRecognition(SpeechRecognitionParams.defaults()));
+        List<Utterances.Utterance> all = Utterances.all();
+        for (String phrase : List.of("go forward", "go back")) {
+            h.push("segments", all.stream().filter(u -> u.phrase().equals(phrase)).findFirst().orElseThrow().audio());
+        }
+        h.advanceMillis(SpeechRecognition.MAX_WAIT_MS + 1);
+        h.push("segments", all.stream().filter(u -> u.phrase().equals("well done")).findFirst().orElseThrow().audio());
+        h.runBackgroundAtOnce();
+        assertThat(h.values("words")).containsExactly(new TextValue("well done"));
+        assertThat(h.readinessDetail()).contains("dropped: 0 over maxPending, 2 waited over 5 s");
+    }
+
+    @Test
     void aMissingGrammarFileFailsTheMethodWithItsPath() {
         MethodHarness h = MethodHarness.started("speech",
                 new SpeechRecognition(SpeechRecognitionParams.defaults().withGrammar("/nonexistent/words.gram")));
-        h.runBackground();
+        h.expectFailure().runBackground();
         assertThat(h.state()).isEqualTo(MethodState.FAILED);
         assertThatThrownBy(() -> SpeechRecognitionParams.defaults().withGrammar("words.txt"))
                 .hasMessageContaining(".gram");

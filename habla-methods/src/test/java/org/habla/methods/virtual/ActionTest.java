@@ -3,6 +3,7 @@ package org.habla.methods.virtual;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.sample.TextValue;
 import org.habla.sample.VectorValue;
@@ -29,7 +30,7 @@ class ActionTest {
 
     @Test
     void eachLabelHasItsSignedMotionAndIsEchoed() {
-        MethodHarness h = MethodHarness.started("action", new Action(new ActionParams(0.3, 0.1, 0.5, 500)));
+        MethodHarness h = MethodHarness.started("action", new Action(ParamsJson.of(ActionParams.class, "{\"forwardMps\": 0.3, \"backMps\": 0.1, \"turnRadps\": 0.5, \"durationMs\": 500}")));
         for (String label : new String[] {"left", "right", " BACK\n", "forward"}) {
             h.write("action", new TextValue(label));
         }
@@ -84,7 +85,7 @@ class ActionTest {
 
     @Test
     void paramsOutOfRangeNameTheParameter() {
-        assertThatThrownBy(() -> new ActionParams(-1.0, null, null, null)).hasMessageContaining("forwardMps");
-        assertThatThrownBy(() -> new ActionParams(null, null, null, 0)).hasMessageContaining("durationMs");
+        assertThatThrownBy(() -> ParamsJson.of(ActionParams.class, "{\"forwardMps\": -1.0}")).hasMessageContaining("forwardMps");
+        assertThatThrownBy(() -> ParamsJson.of(ActionParams.class, "{\"durationMs\": 0}")).hasMessageContaining("durationMs");
     }
 }

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.Map;
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.sample.TextValue;
 import org.junit.jupiter.api.Test;
@@ -24,7 +25,7 @@ class CommandTest {
 
     @Test
     void aRepeatWithinTheDebounceIsDroppedButADifferentLabelIsNot() {
-        Command m = new Command(new CommandParams(Map.of("do", "forward", "re", "left"), 500));
+        Command m = new Command(ParamsJson.of(CommandParams.class, "{\"map\": {\"do\": \"forward\", \"re\": \"left\"}, \"debounceMs\": 500}"));
         MethodHarness h = MethodHarness.started("command", m);
         h.push("in", new TextValue("do")).advanceMillis(200).push("in", new TextValue("do"));
         h.push("in", new TextValue("re")).advanceMillis(100).push("in", new TextValue("do"));
@@ -36,7 +37,7 @@ class CommandTest {
 
     @Test
     void aMapWithABlankLabelIsRefused() {
-        assertThatThrownBy(() -> new CommandParams(Map.of("C5", " "), null)).hasMessageContaining("map entry 'C5'");
-        assertThatThrownBy(() -> new CommandParams(Map.of(), null)).hasMessageContaining("map must hold");
+        assertThatThrownBy(() -> ParamsJson.of(CommandParams.class, "{\"map\": {\"C5\": \" \"}}")).hasMessageContaining("map entry 'C5'");
+        assertThatThrownBy(() -> ParamsJson.of(CommandParams.class, "{\"map\": {}}")).hasMessageContaining("map must hold");
     }
 }

@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.List;
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.sample.Payload;
 import org.habla.sample.RecordValue;
@@ -42,7 +43,7 @@ class DistanceAngleTest {
 
     @Test
     void silenceLongerThanLostAfterMsMeansNotSeen() {
-        MethodHarness h = MethodHarness.started("da", new DistanceAngle(new DistanceAngleParams(5.0, 500)));
+        MethodHarness h = MethodHarness.started("da", new DistanceAngle(ParamsJson.of(DistanceAngleParams.class, "{\"rateHz\": 5.0, \"lostAfterMs\": 500}")));
         h.push("nearest", RecordValue.builder().put("distanceM", 0.6).put("angleRad", 0.1).put("xM", 0.6)
                 .put("yM", 0.06).put("sensor", 3).build());
         h.advanceMillis(400);
@@ -68,6 +69,6 @@ class DistanceAngleTest {
 
     @Test
     void theRateIsChecked() {
-        assertThatThrownBy(() -> new DistanceAngleParams(0.0, null)).hasMessageContaining("rateHz");
+        assertThatThrownBy(() -> ParamsJson.of(DistanceAngleParams.class, "{\"rateHz\": 0.0}")).hasMessageContaining("rateHz");
     }
 }

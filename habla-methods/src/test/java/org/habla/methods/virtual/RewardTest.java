@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.Map;
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.sample.NumberValue;
 import org.habla.sample.RecordValue;
@@ -44,7 +45,7 @@ class RewardTest {
     @Test
     void touchMapAndThresholdComeFromParamsAndBooleansCount() {
         MethodHarness h = MethodHarness.started("reward",
-                new Reward(new RewardParams(null, Map.of("chin", 0.5), 0.2)));
+                new Reward(ParamsJson.of(RewardParams.class, "{\"touch\": {\"chin\": 0.5}, \"threshold\": 0.2}")));
         h.push("buttons", RecordValue.builder().put("chin", 0.3).build());
         h.push("buttons", RecordValue.builder().put("chin", false).build());
         h.push("buttons", RecordValue.builder().put("chin", true).build());
@@ -54,6 +55,6 @@ class RewardTest {
 
     @Test
     void aRewardOutsideTheRangeIsRefused() {
-        assertThatThrownBy(() -> new RewardParams(Map.of("yay", 2.0), null, null)).hasMessageContaining("words entry 'yay'");
+        assertThatThrownBy(() -> ParamsJson.of(RewardParams.class, "{\"words\": {\"yay\": 2.0}}")).hasMessageContaining("words entry 'yay'");
     }
 }

@@ -8,6 +8,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import java.awt.geom.Point2D;
 import java.util.Map;
 import java.util.Random;
+import org.habla.config.ParamsJson;
 import org.habla.method.Layer;
 import org.habla.method.MethodHarness;
 import org.habla.method.MethodState;
@@ -94,9 +95,15 @@ class ImageSegmentationTest {
         assertThat(h.values("blobs")).hasSize(40);
     }
 
+    /** Segmentation of {@code colors} without opening or closing. */
+    private static ImageSegmentationParams segmenting(Map<String, ColorRange> colors) {
+        ImageSegmentationParams p = ParamsJson.of(ImageSegmentationParams.class, "{\"openPx\": 0, \"closePx\": 0}");
+        return new ImageSegmentationParams(colors, p.minAreaPx(), 0, 0, p.maxBlobs());
+    }
+
     @Test
     void rectangleIsReportedWithItsExactCentroidAreaAndBox() {
-        MethodHarness h = started(new ImageSegmentationParams(null, null, 0, 0, null));
+        MethodHarness h = started(ParamsJson.of(ImageSegmentationParams.class, "{\"openPx\": 0, \"closePx\": 0}"));
         h.push("image", bgrWithRectangle(64, 48, new int[] {200, 200, 200}, new int[] {180, 105, 255}, 10, 5, 21, 9));
         JsonNode b = blobList(h.last("blobs")).get(0);
         assertThat(b.get("label").asText()).isEqualTo("pink");
@@ -112,7 +119,7 @@ class ImageSegmentationTest {
 
     @Test
     void closingDoesNotGlueARegionNearTheEdgeToTheEdge() {
-        MethodHarness h = started(new ImageSegmentationParams(null, null, 0, 5, null));
+        MethodHarness h = started(ParamsJson.of(ImageSegmentationParams.class, "{\"openPx\": 0, \"closePx\": 5}"));
         h.push("image", bgrWithRectangle(64, 48, new int[] {0, 0, 0}, new int[] {180, 105, 255}, 1, 1, 12, 12));
         JsonNode b = blobList(h.last("blobs")).get(0);
         assertThat(new int[] {b.get("x").asInt(), b.get("y").asInt(), b.get("w").asInt(), b.get("h").asInt(),
@@ -127,15 +134,15 @@ class ImageSegmentationTest {
     void hueRangeThatWrapsAroundRedTakesBothEndsOfTheHueCircle() {
         int[] red = {20, 10, 230};        // hue 2 (OpenCV scale)
         int[] crimson = {60, 0, 220};      // hue 172
-        ColorRange wrapping = new ColorRange(170, 10, 100, null, 60, null);
-        MethodHarness h = started(new ImageSegmentationParams(Map.of("red", wrapping), null, 0, 0, null));
+        ColorRange wrapping = ParamsJson.of(ColorRange.class, "{\"hMin\": 170, \"hMax\": 10, \"sMin\": 100, \"vMin\": 60}");
+        MethodHarness h = started(segmenting(Map.of("red", wrapping)));
         h.push("image", bgrWithRectangle(40, 40, new int[] {90, 90, 90}, red, 5, 5, 10, 10));
         assertThat(blobList(h.last("blobs"))).hasSize(1);
         h.push("image", bgrWithRectangle(40, 40, new int[] {90, 90, 90}, crimson, 5, 5, 10, 10));
         assertThat(blobList(h.last("blobs"))).hasSize(1);
 
-        ColorRange between = new ColorRange(10, 170, 100, null, 60, null);
-        MethodHarness notWrapping = started(new ImageSegmentationParams(Map.of("red", between), null, 0, 0, null));
+        ColorRange between = ParamsJson.of(ColorRange.class, "{\"hMin\": 10, \"hMax\": 170, \"sMin\": 100, \"vMin\": 60}");
+        MethodHarness notWrapping = started(segmenting(Map.of("red", between)));
         notWrapping.push("image", bgrWithRectangle(40, 40, new int[] {90, 90, 90}, red, 5, 5, 10, 10));
         assertThat(blobList(notWrapping.last("blobs"))).isEmpty();
         assertThat(wrapping.contains(2, 200, 200)).isTrue();
@@ -147,8 +154,8 @@ class ImageSegmentationTest {
     void blobsOfSeveralClassesComeLargestFirstAndSmallOnesAreDropped() {
         Map<String, ColorRange> colors = new java.util.LinkedHashMap<>();
         colors.put("pink", ColorRange.pink());
-        colors.put("blue", new ColorRange(100, 130, 100, null, 60, null));
-        MethodHarness h = started(new ImageSegmentationParams(colors, 20, 0, 0, null));
+        colors.put("blue", ParamsJson.of(ColorRange.class, "{\"hMin\": 100, \"hMax\": 130, \"sMin\": 100, \"vMin\": 60}"));
+        MethodHarness h = started(new ImageSegmentationParams(colors, 20, 0, 0, ImageSegmentationParams.defaults().maxBlobs()));
         byte[] data = bgrWithRectangle(80, 60, new int[] {200, 200, 200}, new int[] {180, 105, 255}, 2, 2, 6, 6).data();
         paint(data, 80, new int[] {200, 60, 40}, 30, 20, 20, 20);   // blue, 400 px
         paint(data, 80, new int[] {200, 60, 40}, 70, 50, 4, 4);     // blue speck, 16 px: below minAreaPx
@@ -227,16 +234,16 @@ class ImageSegmentationTest {
 
     @Test
     void paramsBindFromConfigJsonAndKeepTheOrderOfTheClasses() throws Exception {
-        ImageSegmentationParams p = JSON.treeToValue(JSON.readTree(
-                "{\"colors\": {\"orange\": {\"hMin\": 5, \"hMax\": 20}, \"pink\": {\"sMin\": 100}}, \"minAreaPx\": 30}"),
-                ImageSegmentationParams.class);
+        ImageSegmentationParams p = ParamsJson.of(ImageSegmentationParams.class,
+                "{\"colors\": {\"orange\": {\"hMin\": 5, \"hMax\": 20}, \"pink\": {\"sMin\": 100}}, \"minAreaPx\": 30}");
         assertThat(p.colors().keySet()).containsExactly("orange", "pink");
         assertThat(p.firstLabel()).isEqualTo("orange");
         assertThat(p.colors().get("pink")).isEqualTo(new ColorRange(145, 175, 100, 255, 60, 255));
         assertThat(p.minAreaPx()).isEqualTo(30);
-        assertThatThrownBy(() -> new ColorRange(10, 20, 200, 100, null, null)).hasMessageContaining("sMin");
-        assertThatThrownBy(() -> new ColorRange(180, 20, null, null, null, null)).hasMessageContaining("hMin");
-        assertThatThrownBy(() -> new ImageSegmentationParams(Map.of(), null, null, null, null))
+        assertThatThrownBy(() -> new ColorRange(10, 20, 200, 100, 0, 255)).hasMessageContaining("sMin");
+        assertThatThrownBy(() -> ParamsJson.of(ImageSegmentationParams.class, "{\"colors\": {\"x\": {\"hMin\": 180}}}"))
+                .hasMessageContaining("$.params.colors.x.hMin: must be within [0, 179], was 180");
+        assertThatThrownBy(() -> ParamsJson.of(ImageSegmentationParams.class, "{\"colors\": {}}"))
                 .hasMessageContaining("colors");
     }
 

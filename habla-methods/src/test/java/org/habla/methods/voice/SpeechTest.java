@@ -4,6 +4,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.within;
 
 import java.util.List;
+import org.habla.config.ParamsJson;
 import org.habla.method.MethodHarness;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.AudioFormat;
@@ -90,7 +91,7 @@ class SpeechTest {
 
     @Test
     void audioComesInBoundedMono16BitChunksAndLongTextIsCut() {
-        MethodHarness h = started(new SpeechParams(null, null, null, 100, 12, null, null, null));
+        MethodHarness h = started(ParamsJson.of(SpeechParams.class, "{\"chunkMs\": 100, \"maxChars\": 12}"));
         h.push("text", new TextValue("happy happy happy"));
         List<Payload> chunks = h.values("audio");
         for (Payload c : chunks) {

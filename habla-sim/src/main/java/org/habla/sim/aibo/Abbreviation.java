@@ -9,9 +9,6 @@ final class Abbreviation {
     }
 
     static String of(String text) {
-        if (text == LineInput.TOO_LONG) {
-            return "(a line over the length limit)";
-        }
         StringBuilder b = new StringBuilder();
         for (int i = 0; i < text.length() && b.length() < MAX_CHARS; i++) {
             char c = text.charAt(i);

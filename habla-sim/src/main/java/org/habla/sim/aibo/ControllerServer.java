@@ -1,6 +1,6 @@
+// Over 300 lines, on purpose: the Controller's whole menu protocol, one command per case, over one menu state.
 package org.habla.sim.aibo;
 
-import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.net.Socket;
@@ -14,6 +14,8 @@ import java.util.Locale;
 import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicLong;
+import org.habla.net.FrameException;
+import org.habla.net.LineFramer;
 
 /**
  * The Controller's menu protocol (port 10020), through which a client switches the other servers on.
@@ -45,17 +47,23 @@ final class ControllerServer implements TekkotsuSocket.Client {
     @Override
     public void serve(Socket socket) throws IOException {
         Session session = new Session(socket.getOutputStream());
-        LineInput lines = new LineInput(new BufferedInputStream(socket.getInputStream()), MAX_LINE_BYTES);
+        LineFramer lines = new LineFramer(socket.getInputStream(), MAX_LINE_BYTES);
         session.refresh();
         session.flush();
-        for (String line = lines.next(); line != null; line = lines.next()) {
-            if (line == LineInput.TOO_LONG) {
-                session.status("line longer than " + MAX_LINE_BYTES + " bytes ignored");
-            } else {
-                String text = line.endsWith("\r") ? line.substring(0, line.length() - 1) : line;
-                for (String command : ShellWords.commands(text)) {
+        while (true) {
+            try {
+                String line = lines.readText(StandardCharsets.UTF_8);
+                if (line == null) {
+                    return;
+                }
+                for (String command : ShellWords.commands(line)) {
                     session.take(command);
                 }
+            } catch (FrameException e) {
+                if (e.fatal()) {
+                    return;
+                }
+                session.status("line longer than " + MAX_LINE_BYTES + " bytes ignored");
             }
             session.flush();
         }

@@ -1,11 +1,12 @@
 package org.habla.sim.aibo;
 
-import java.io.BufferedInputStream;
 import java.io.IOException;
 import java.io.OutputStream;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.util.function.Consumer;
+import org.habla.net.FrameException;
+import org.habla.net.LineFramer;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -13,7 +14,8 @@ import org.slf4j.LoggerFactory;
  * The emergency-stop control (EStopControllerBehavior, port 10053, running at boot). Lines in:
  * {@code start} releases the stop, {@code stop} engages it, {@code refresh} asks for the state. Lines
  * out: {@code on} (engaged) or {@code off} (released), in reply and whenever the stop changes by any
- * means. Only a bare {@code \n} ends a command: {@code stop\r} is not {@code stop}, as on the robot.
+ * means. Only a bare {@code \n} ends a command: {@code stop\r} is not {@code stop}, as on the robot. A line
+ * over {@link #MAX_LINE_BYTES} is skipped and logged.
  */
 final class EStopServer implements TekkotsuSocket.Client {
 
@@ -32,8 +34,21 @@ final class EStopServer implements TekkotsuSocket.Client {
         Consumer<Boolean> tell = stopped -> send(out, stopped);
         body.onEStopChange(tell);
         try {
-            LineInput lines = new LineInput(new BufferedInputStream(socket.getInputStream()), MAX_LINE_BYTES);
-            for (String line = lines.next(); line != null; line = lines.next()) {
+            LineFramer lines = LineFramer.keepingCarriageReturns(socket.getInputStream(), MAX_LINE_BYTES);
+            while (true) {
+                String line;
+                try {
+                    line = lines.readText(StandardCharsets.UTF_8);
+                } catch (FrameException e) {
+                    if (e.fatal()) {
+                        return;
+                    }
+                    LOG.info("e-stop control: ignored a line: {}", e.getMessage());
+                    continue;
+                }
+                if (line == null) {
+                    return;
+                }
                 switch (line) {
                     case "start" -> body.setEStop(false);
                     case "stop" -> body.setEStop(true);

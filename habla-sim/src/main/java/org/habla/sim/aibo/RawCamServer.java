@@ -1,7 +1,6 @@
 package org.habla.sim.aibo;
 
 import java.awt.image.BufferedImage;
-import java.io.BufferedInputStream;
 import java.io.ByteArrayOutputStream;
 import java.io.IOException;
 import java.io.OutputStream;
@@ -15,6 +14,8 @@ import javax.imageio.ImageIO;
 import javax.imageio.ImageWriteParam;
 import javax.imageio.ImageWriter;
 import javax.imageio.stream.MemoryCacheImageOutputStream;
+import org.habla.net.FrameException;
+import org.habla.net.LineFramer;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
@@ -93,8 +94,21 @@ final class RawCamServer implements TekkotsuSocket.Client {
 
         void read(Socket socket, OutputStream out) {
             try {
-                LineInput lines = new LineInput(new BufferedInputStream(socket.getInputStream()), MAX_LINE_BYTES);
-                for (String line = lines.next(); line != null; line = lines.next()) {
+                LineFramer lines = new LineFramer(socket.getInputStream(), MAX_LINE_BYTES);
+                while (true) {
+                    String line;
+                    try {
+                        line = lines.readText(StandardCharsets.UTF_8);
+                    } catch (FrameException e) {
+                        if (e.fatal()) {
+                            break;
+                        }
+                        LOG.info("raw camera: ignored a line: {}", e.getMessage());
+                        continue;
+                    }
+                    if (line == null) {
+                        break;
+                    }
                     switch (line.strip()) {
                         case "startSensors" -> streamSensors = true;
                         case "stopSensors" -> streamSensors = false;

@@ -6,7 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
-import org.habla.cli.ExitCodes;
+import org.habla.command.ExitCodes;
 import org.habla.sim.aibo.AiboSimulator;
 import org.habla.sim.aibo.TekkotsuPorts;
 import org.habla.sim.world.World;

@@ -1,6 +1,6 @@
 package org.habla.sim.cli;
 
-import org.habla.cli.CommandExtension;
+import org.habla.command.CommandExtension;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 

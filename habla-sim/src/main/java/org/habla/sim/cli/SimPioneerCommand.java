@@ -5,7 +5,7 @@ import java.io.PrintWriter;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
-import org.habla.cli.ExitCodes;
+import org.habla.command.ExitCodes;
 import org.habla.sim.pioneer.PioneerSim;
 import org.habla.sim.pioneer.PioneerSimOptions;
 import org.habla.sim.world.World;

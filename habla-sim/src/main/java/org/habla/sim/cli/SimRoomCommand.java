@@ -5,7 +5,7 @@ import java.io.PrintWriter;
 import java.nio.file.Files;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CountDownLatch;
-import org.habla.cli.ExitCodes;
+import org.habla.command.ExitCodes;
 import org.habla.driver.InterfaceAddress;
 import org.habla.sim.room.MosquittoBroker;
 import org.habla.sim.room.RoomSim;

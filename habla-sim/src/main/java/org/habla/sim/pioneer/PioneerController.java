@@ -1,3 +1,4 @@
+// Over 300 lines, on purpose: the ARCOS state machine shares the controller's state under one lock.
 package org.habla.sim.pioneer;
 
 import java.nio.charset.StandardCharsets;

@@ -1,3 +1,4 @@
+// Over 300 lines, on purpose: the devices, their messages and the teacher share one world under one lock.
 package org.habla.sim.room;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -21,11 +22,13 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The simulated room on an MQTT broker, as Zigbee2MQTT would show its devices:
+ * The simulated room on an MQTT broker, as Zigbee2MQTT 2.x would show its devices (2.x gives {@code illuminance} in
+ * lux and availability as JSON; 1.x gave many sensors' raw {@code illuminance} and the lux in
+ * {@code illuminance_lux}, and plain {@code online}/{@code offline}):
  *
  * <pre>
  *   zigbee2mqtt/bridge/state                 {"state":"online"}  retained; the will says offline
- *   zigbee2mqtt/ZONE_motion                  {"occupancy":true,"illuminance":312,"illuminance_lux":312,"battery":100,...}
+ *   zigbee2mqtt/ZONE_motion                  {"occupancy":true,"illuminance":312,"battery":100,...}
  *   zigbee2mqtt/ZONE_lamp                    {"state":"ON","brightness":254}     after every /set, and at start
  *   zigbee2mqtt/ZONE_lamp/set          ◀──   {"state":"ON"|"OFF"|"TOGGLE","brightness":0..254}
  *   zigbee2mqtt/front_door                   {"contact":true,"battery":100}      true: closed
@@ -159,8 +162,7 @@ public final class RoomSim implements SimClock.Stepper, AutoCloseable {
                 motionReportedS[z] = nowS;
                 long lux = Math.round(room.lux(z));
                 publish(base + "/" + room.zones().get(z) + "_motion", "{\"occupancy\":" + motion + ",\"illuminance\":"
-                        + lux + ",\"illuminance_lux\":" + lux + ",\"battery\":100,\"voltage\":3005,\"linkquality\":120}",
-                        false);
+                        + lux + ",\"battery\":100,\"voltage\":3005,\"linkquality\":120}", false);
             }
         }
         boolean closed = room.doorClosed();

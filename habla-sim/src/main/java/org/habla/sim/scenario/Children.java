@@ -1,6 +1,8 @@
 package org.habla.sim.scenario;
 
 import java.io.IOException;
+import java.net.InetSocketAddress;
+import java.net.Socket;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
@@ -19,7 +21,28 @@ final class Children implements AutoCloseable {
         boolean alive() {
             return process.isAlive();
         }
+
+        /** Waits until this child listens on {@code port} on loopback; fails if it stops first or the time runs out. */
+        void awaitPort(int port, long timeoutMs) throws IOException, InterruptedException {
+            long end = System.nanoTime() + timeoutMs * 1_000_000L;
+            while (System.nanoTime() < end) {
+                if (!alive()) {
+                    throw new IOException("the " + name + " stopped (exit " + process.exitValue() + "); see " + log);
+                }
+                try (Socket s = new Socket()) {
+                    s.connect(new InetSocketAddress("127.0.0.1", port), CONNECT_MILLIS);
+                    return;
+                } catch (IOException e) {
+                    Thread.sleep(RETRY_MILLIS);
+                }
+            }
+            throw new IOException("port " + port + " did not open within " + timeoutMs + " ms; see " + log);
+        }
     }
+
+    /** How long one attempt to connect to a child's port may take, and the wait before the next. */
+    private static final int CONNECT_MILLIS = 500;
+    private static final long RETRY_MILLIS = 200;
 
     private final List<Child> children = new ArrayList<>();
     private final Thread hook = new Thread(this::close, "habla-scenario-stop");
@@ -30,8 +53,15 @@ final class Children implements AutoCloseable {
 
     /** Starts a process with its standard output and error appended to {@code log}. */
     synchronized Child start(String name, List<String> command, Path workDir, Path log) throws IOException {
+        return start(name, command, java.util.Map.of(), workDir, log);
+    }
+
+    /** Starts a process with these environment variables added to this one's. */
+    synchronized Child start(String name, List<String> command, java.util.Map<String, String> env, Path workDir, Path log)
+            throws IOException {
         ProcessBuilder pb = new ProcessBuilder(command).directory(workDir.toFile())
                 .redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.appendTo(log.toFile()));
+        pb.environment().putAll(env);
         Child c = new Child(name, pb.start(), log);
         children.add(c);
         return c;

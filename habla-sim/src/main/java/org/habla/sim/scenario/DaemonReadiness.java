@@ -14,9 +14,10 @@ import java.util.function.BooleanSupplier;
 
 /**
  * Waits, as an operator would with {@code habla status}, until a daemon is ready to be taught: every method
- * ready (speech has loaded its model, a worker's method is placed) and every link to the robot up. A teacher
- * who starts while the robot cannot yet hear speaks to nobody, and the rewards that follow judge commands the
- * control program never heard.
+ * ready (speech has loaded its model, a worker's method is placed), every link to the robot up, and then the
+ * control program connected to the sockets it uses. A teacher who starts while the robot cannot yet hear, or
+ * before its control program listens, speaks to nobody, and the rewards that follow judge commands the control
+ * program never heard.
  */
 public final class DaemonReadiness {
 
@@ -51,6 +52,43 @@ public final class DaemonReadiness {
             Thread.sleep(POLL_MILLIS);
         }
         throw new IOException("the daemon was not ready within " + timeoutMs + " ms (" + missing + ")");
+    }
+
+    /**
+     * Polls the status endpoint until each socket named in {@code sockets} has a client; fails with the sockets still
+     * without one after {@code timeoutMs}, or at once when {@code clientAlive} says the client program has stopped.
+     */
+    public static void awaitClients(int statusPort, List<String> sockets, long timeoutMs, BooleanSupplier clientAlive)
+            throws IOException, InterruptedException {
+        long end = System.nanoTime() + timeoutMs * 1_000_000L;
+        String missing = "no answer from the status endpoint on port " + statusPort;
+        while (System.nanoTime() < end) {
+            if (!clientAlive.getAsBoolean()) {
+                throw new IOException("the control program stopped before it connected (" + missing + ")");
+            }
+            try {
+                List<String> without = withoutClients(snapshot(statusPort), sockets);
+                if (without.isEmpty()) {
+                    return;
+                }
+                missing = "no client yet on " + String.join(", ", without);
+            } catch (IOException e) {
+                missing = "status endpoint on port " + statusPort + ": " + e.getMessage();
+            }
+            Thread.sleep(POLL_MILLIS);
+        }
+        throw new IOException("the control program did not connect within " + timeoutMs + " ms (" + missing + ")");
+    }
+
+    /** Which of {@code sockets} a status snapshot shows without a client (or not at all). */
+    static List<String> withoutClients(JsonNode status, List<String> sockets) {
+        List<String> out = new ArrayList<>(sockets);
+        for (JsonNode s : status.path("sockets")) {
+            if (s.path("clients").asInt() > 0) {
+                out.remove(s.path("socket").asText());
+            }
+        }
+        return out;
     }
 
     /** What a status snapshot says is not ready yet: methods by id, links as {@code link:<id>}. */

@@ -8,8 +8,6 @@ import com.hivemq.client.mqtt.datatypes.MqttQos;
 import com.hivemq.client.mqtt.mqtt5.Mqtt5AsyncClient;
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.net.InetSocketAddress;
-import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -88,7 +86,7 @@ final class RoomScenarioRunner {
                 for (String name : List.of("occupancy", "light", "reward", "action")) {
                     ports.put(name, DerivedConfig.exposedPort(derived, name));
                 }
-                awaitPort(ports.get("action"), 120_000, daemon);
+                daemon.awaitPort(ports.get("action"), 120_000);
                 say("control program: %s (SHA-256 %s)", o.home().toAbsolutePath().relativize(program.toAbsolutePath()),
                         ScenarioRunner.sha256(program));
                 Children.Child control = children.start("control", List.of("python3", "-u", program.toString(),
@@ -275,22 +273,6 @@ final class RoomScenarioRunner {
             }
         }
         throw new IOException("the simulated room did not advance for 20 s");
-    }
-
-    private static void awaitPort(int port, long timeoutMs, Children.Child owner) throws IOException, InterruptedException {
-        long end = System.nanoTime() + timeoutMs * 1_000_000L;
-        while (System.nanoTime() < end) {
-            if (!owner.alive()) {
-                throw new IOException("the " + owner.name() + " stopped; see " + owner.log());
-            }
-            try (Socket s = new Socket()) {
-                s.connect(new InetSocketAddress("127.0.0.1", port), 500);
-                return;
-            } catch (IOException e) {
-                Thread.sleep(200);
-            }
-        }
-        throw new IOException("port " + port + " did not open within " + timeoutMs + " ms; see " + owner.log());
     }
 
     private void summary(List<RoomPhase> phases) {

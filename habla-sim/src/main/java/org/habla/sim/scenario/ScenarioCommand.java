@@ -6,8 +6,8 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
-import org.habla.cli.CommandExtension;
-import org.habla.cli.ExitCodes;
+import org.habla.command.CommandExtension;
+import org.habla.command.ExitCodes;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Option;
@@ -15,7 +15,7 @@ import picocli.CommandLine.Parameters;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code habla scenario pioneer|aibo}: the paper's experiment on a simulated robot — simulator, daemon
+ * {@code habla scenario pioneer|aibo|ros2-base|room}: the paper's experiment on a simulated robot — simulator, daemon
  * and control program as three processes — with a report of every episode.
  */
 @Command(name = "scenario", mixinStandardHelpOptions = true,
@@ -27,7 +27,7 @@ public final class ScenarioCommand implements Callable<Integer> {
     @Spec
     private CommandSpec spec;
 
-    @Parameters(index = "0", paramLabel = "ROBOT", description = "pioneer, aibo or room")
+    @Parameters(index = "0", paramLabel = "ROBOT", description = "pioneer, aibo, ros2-base (a simulated ROS 2 base; ./habla ros2 setup first) or room")
     private String robot;
 
     @Option(names = "--scenario", paramLabel = "FILE", description = "A scenario file instead of the robot's built-in one.")
@@ -84,7 +84,8 @@ public final class ScenarioCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
         }
-        Path dir = report != null ? report : root.resolve("reports").resolve(robot);
+        // The processes run in the HABLA folder: a report folder given relative to here is made absolute first.
+        Path dir = report != null ? report.toAbsolutePath() : root.resolve("reports").resolve(robot);
         ScenarioRunner.Options opts = new ScenarioRunner.Options(sc, episodes != null ? episodes : sc.episodes(), s, seed,
                 dir, portOffset, root);
         List<EpisodeResult> logs;
@@ -120,7 +121,8 @@ public final class ScenarioCommand implements Callable<Integer> {
             err.flush();
             return ExitCodes.USAGE_OR_CONFIG;
         }
-        Path dir = report != null ? report : root.resolve("reports").resolve(robot);
+        // The processes run in the HABLA folder: a report folder given relative to here is made absolute first.
+        Path dir = report != null ? report.toAbsolutePath() : root.resolve("reports").resolve(robot);
         RoomScenarioRunner runner = new RoomScenarioRunner(new RoomScenarioRunner.Options(sc,
                 episodes != null ? episodes : sc.episodes(), s, seed, dir, portOffset, root), out);
         List<RoomPhase> phases;

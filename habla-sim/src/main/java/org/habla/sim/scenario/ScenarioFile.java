@@ -15,7 +15,8 @@ import java.util.List;
  * and how close to the object counts as reaching it. Read from JSON ({@code scenarios/pioneer.json} in
  * the simulator's resources, or a file given with {@code --scenario}).
  *
- * @param robot       {@code pioneer} or {@code aibo}: which simulator to start
+ * @param robot       {@code pioneer}, {@code aibo} or {@code ros2-base} (a simulated ROS 2 base, {@link Ros2Base}):
+ *                    which simulator to start
  * @param config      the robot's HABLA config, relative to the HABLA home folder
  * @param world       the world file: a resource under {@code worlds/} or a path
  * @param episodes    how many episodes to run
@@ -31,13 +32,16 @@ import java.util.List;
 public record ScenarioFile(String robot, String config, String world, int episodes, double teacherS, double aloneS,
         double reachM, double speed, double stepS, double rewardWaitS, List<StartPose> starts) {
 
+    /** The simulated robots a scenario may run on. */
+    static final List<String> ROBOTS = List.of("pioneer", "aibo", "ros2-base");
+
     /** A start pose of the robot in the world frame. */
     public record StartPose(double xM, double yM, double thetaRad) {
     }
 
     public ScenarioFile {
-        if (!robot.equals("pioneer") && !robot.equals("aibo")) {
-            throw new IllegalArgumentException("robot must be pioneer or aibo, was '" + robot + "'");
+        if (!ROBOTS.contains(robot)) {
+            throw new IllegalArgumentException("robot must be one of " + ROBOTS + ", was '" + robot + "'");
         }
         if (episodes < 1 || teacherS <= 0 || aloneS <= 0 || reachM <= 0 || speed < 1 || stepS <= 0 || rewardWaitS < 0) {
             throw new IllegalArgumentException("episodes ≥ 1, teacherS, aloneS, reachM, stepS > 0 and speed ≥ 1 are required");
@@ -52,7 +56,7 @@ public record ScenarioFile(String robot, String config, String world, int episod
     public static ScenarioFile builtIn(String robot) throws IOException {
         try (InputStream in = ScenarioFile.class.getResourceAsStream("/scenarios/" + robot + ".json")) {
             if (in == null) {
-                throw new IOException("no built-in scenario for '" + robot + "' (pioneer and aibo exist)");
+                throw new IOException("no built-in scenario for '" + robot + "' (" + String.join(", ", ROBOTS) + " exist)");
             }
             return parse(new ObjectMapper().readTree(in));
         }

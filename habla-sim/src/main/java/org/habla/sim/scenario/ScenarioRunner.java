@@ -4,8 +4,6 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
 import java.io.PrintWriter;
-import java.net.InetSocketAddress;
-import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -52,10 +50,13 @@ final class ScenarioRunner {
             throw new IOException("no control program at " + mdb);
         }
         Path derived = DerivedConfig.write(robotConfig, o.speed(), o.portOffset(), o.reportDir().resolve("daemon-config.json"));
-        int truthPort = (sc.robot().equals("pioneer") ? 8199 : 10199) + o.portOffset();
+        int truthPort = (sc.robot().equals("aibo") ? 10199 : 8199) + o.portOffset();
         List<EpisodeResult> episodes = new ArrayList<>();
         try (Children children = new Children()) {
-            Children.Child sim = children.start("simulator", simCommand(truthPort), o.home(), o.reportDir().resolve("simulator.log"));
+            List<Children.Child> world = sc.robot().equals("ros2-base")
+                    ? Ros2Base.start(children, o.home(), o.reportDir(), sc.world(), o.speed(), o.seed(), o.portOffset(), truthPort)
+                    : List.of(children.start("simulator", simCommand(truthPort), o.home(), o.reportDir().resolve("simulator.log")));
+            Children.Child sim = world.get(0);
             say("simulated %s started (speed %sx); waiting for its ground truth on port %d", sc.robot(), fmt(o.speed()), truthPort);
             TruthLink link;
             try {
@@ -76,7 +77,7 @@ final class ScenarioRunner {
                         throw new IOException(robotConfig + " does not expose the control contract's '" + names[i] + "' socket");
                     }
                 }
-                awaitPort(ports[1], 120_000, daemon);
+                daemon.awaitPort(ports[1], 120_000);
                 long readyFrom = System.nanoTime();
                 DaemonReadiness.await(statusPort(derived), READY_TIMEOUT_MS, daemon::alive);
                 say("daemon ready: every method ready and every link up (%.1f s after its sockets opened)",
@@ -90,11 +91,17 @@ final class ScenarioRunner {
                         "--speed", fmt(o.speed()), "--step-s", fmt(sc.stepS() / o.speed()),
                         "--reward-wait-s", fmt(sc.rewardWaitS() / o.speed()), "--log", o.reportDir().resolve("control.jsonl").toString()),
                         o.home(), o.reportDir().resolve("control.log"));
+                long startedAt = System.nanoTime();
+                DaemonReadiness.awaitClients(statusPort(derived), List.of(names), READY_TIMEOUT_MS, control::alive);
+                say("control program connected to all four sockets (%.1f s after it started)",
+                        (System.nanoTime() - startedAt) / 1e9);
+                List<Children.Child> watched = new ArrayList<>(world);
+                watched.addAll(List.of(daemon, control));
                 try (TeacherLog log = new TeacherLog(o.reportDir())) {
                     this.teacherLog = log;
                     for (int e = 1; e <= o.episodes(); e++) {
                         this.episode = e;
-                        episodes.add(episode(e, truth, List.of(sim, daemon, control)));
+                        episodes.add(episode(e, truth, watched));
                     }
                 }
             }
@@ -249,22 +256,6 @@ final class ScenarioRunner {
         } catch (IOException e) {
             return "(unreadable)";
         }
-    }
-
-    private static void awaitPort(int port, long timeoutMs, Children.Child owner) throws IOException, InterruptedException {
-        long end = System.nanoTime() + timeoutMs * 1_000_000L;
-        while (System.nanoTime() < end) {
-            if (!owner.alive()) {
-                throw new IOException("the " + owner.name() + " stopped (exit " + owner.process().exitValue() + "); see " + owner.log());
-            }
-            try (Socket s = new Socket()) {
-                s.connect(new InetSocketAddress("127.0.0.1", port), 500);
-                return;
-            } catch (IOException e) {
-                Thread.sleep(200);
-            }
-        }
-        throw new IOException("port " + port + " did not open within " + timeoutMs + " ms; see " + owner.log());
     }
 
     private void summary(List<EpisodeResult> eps) {

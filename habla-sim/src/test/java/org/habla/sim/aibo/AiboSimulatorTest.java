@@ -12,6 +12,7 @@ import java.time.Duration;
 import java.util.HashMap;
 import java.util.Map;
 import javax.imageio.ImageIO;
+import org.habla.config.ParamsJson;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.InterfaceAddress;
@@ -64,7 +65,7 @@ class AiboSimulatorTest {
                 .formatted(p.worldState(), p.microphone(), p.rawCam(), p.walk(), p.head(), p.speaker(), p.eStop(),
                         p.controller(), extraParams);
         Driver driver = new TekkotsuDriverProvider().create(InterfaceAddress.parse("127.0.0.1"),
-                new ObjectMapper().readValue(params, TekkotsuParams.class));
+                ParamsJson.of(TekkotsuParams.class, params));
         for (Connection c : driver.connections()) {
             links.put(c.name(), new DriverLink(c, sink));
         }

@@ -17,6 +17,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import javax.imageio.ImageIO;
+import org.habla.config.ParamsJson;
 import org.habla.driver.Connection;
 import org.habla.driver.Driver;
 import org.habla.driver.InterfaceAddress;
@@ -67,7 +68,7 @@ class TekkotsuServersTest {
                 .formatted(p.worldState(), p.microphone(), p.rawCam(), p.walk(), p.head(), p.speaker(), p.eStop(),
                         p.controller(), extraParams);
         Driver driver = new TekkotsuDriverProvider().create(InterfaceAddress.parse("127.0.0.1"),
-                new ObjectMapper().readValue(params, TekkotsuParams.class));
+                ParamsJson.of(TekkotsuParams.class, params));
         for (Connection c : driver.connections()) {
             DriverLink link = new DriverLink(c, sink);
             open.add(link);

@@ -16,7 +16,7 @@ import java.util.List;
 import java.util.SplittableRandom;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import org.habla.cli.ExitCodes;
+import org.habla.command.ExitCodes;
 import org.habla.cli.Habla;
 import org.habla.testing.DaemonProcess;
 import org.junit.jupiter.api.Test;

@@ -15,8 +15,8 @@ import org.habla.plugin.PluginRegistry;
 import org.junit.jupiter.api.Test;
 
 /**
- * The control contract (docs/control-contract.md): config/pioneer.json and config/aibo.json expose the
- * same sockets — names, ports, directions and value kinds — so one control program drives either robot.
+ * The control contract (docs/control-contract.md): config/pioneer.json, config/aibo.json and config/ros2-base.json
+ * expose the same sockets — names, ports, directions and value kinds — so one control program drives any of them.
  */
 class ControlContractTest {
 
@@ -25,11 +25,12 @@ class ControlContractTest {
             "action", 7004);
 
     @Test
-    void bothRobotsExposeTheSameContract() throws Exception {
+    void everyRobotExposesTheSameContract() throws Exception {
         Map<String, String> pioneer = contract("pioneer");
         Map<String, String> aibo = contract("aibo");
         assertThat(pioneer).containsOnlyKeys(CONTRACT);
         assertThat(aibo).isEqualTo(pioneer);
+        assertThat(contract("ros2-base")).isEqualTo(pioneer);
     }
 
     /** Socket name → "port, layer, control inputs' kinds, outputs' kinds" as the daemon would serve it. */

@@ -127,7 +127,7 @@ final class SimulatedDeployment implements AutoCloseable {
                 Path.of("src/test/resources/e2e/contract_probe.py").toAbsolutePath().toString()));
         cmd.addAll(List.of(args));
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectError(dir.resolve("probe-err.log").toFile());
-        pb.environment().put("PYTHONPATH", HOME.resolve("examples/control-python").toString());
+        pb.environment().put("PYTHONPATH", HOME.resolve("clients/python/src").toString());
         Process p = pb.start();
         List<JsonNode> lines = new ArrayList<>();
         try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
@@ -151,7 +151,7 @@ final class SimulatedDeployment implements AutoCloseable {
                 Path.of("src/test/resources/e2e/contract_probe.py").toAbsolutePath().toString()));
         cmd.addAll(List.of(args));
         ProcessBuilder pb = new ProcessBuilder(cmd).redirectError(dir.resolve("probe-async-err.log").toFile());
-        pb.environment().put("PYTHONPATH", HOME.resolve("examples/control-python").toString());
+        pb.environment().put("PYTHONPATH", HOME.resolve("clients/python/src").toString());
         return pb.start();
     }
 

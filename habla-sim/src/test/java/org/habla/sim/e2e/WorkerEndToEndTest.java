@@ -129,14 +129,14 @@ class WorkerEndToEndTest {
         int port = rig.port("distance_angle");
         String script = """
                 import json, sys
-                from habla_client import ControlSocket
-                with ControlSocket("127.0.0.1", int(sys.argv[1]), tls=sys.argv[2], timeout=30) as s:
-                    print(s._sock.version(), s.hello["socket"])
-                    print(json.dumps(s.next_sample(timeout=30)))
+                import habla
+                with habla.connect("127.0.0.1", int(sys.argv[1]), tls=sys.argv[2], timeout=30) as s:
+                    print(s._sock.version(), s.hello.socket)
+                    print(json.dumps(s.next_sample(timeout=30).line))
                 """;
         ProcessBuilder pb = new ProcessBuilder("python3", "-c", script, "" + port, certificate.toString())
                 .redirectErrorStream(true);
-        pb.environment().put("PYTHONPATH", SimulatedDeployment.HOME.resolve("examples/control-python").toString());
+        pb.environment().put("PYTHONPATH", SimulatedDeployment.HOME.resolve("clients/python/src").toString());
         Process p = pb.start();
         p.getOutputStream().close();
         String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);

@@ -58,7 +58,7 @@ class FoxgloveClientTest {
                 awaitEmitted(daemon, "distance", "distance_angle", 5);
                 awaitEmitted(daemon, "camera", "image", 5);
 
-                Process probe = new ProcessBuilder("node", "foxglove-probe.mjs", "ws://127.0.0.1:" + daemon.monitorPort(),
+                Process probe = new ProcessBuilder("node", "foxglove-probe.mjs", "ws://127.0.0.1:" + daemon.extensionPort(Daemon.MONITOR),
                         Integer.toString(LISTEN_S), "/distance/distance_angle", "/camera/image")
                         .directory(NODE_DIR.toFile()).redirectError(ProcessBuilder.Redirect.INHERIT).start();
                 long camerasBefore = emitted(daemon, "camera", "image");

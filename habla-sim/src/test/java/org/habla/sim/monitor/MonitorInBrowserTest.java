@@ -41,7 +41,7 @@ class MonitorInBrowserTest {
         HablaConfig cfg = new ConfigLoader(registry).parse(pioneerConfig(sim));
         try (Daemon daemon = Daemon.start(cfg, registry, EngineClock.system());
              Browser browser = new Browser(profile)) {
-            browser.open("http://127.0.0.1:" + daemon.monitorPort() + "/");
+            browser.open("http://127.0.0.1:" + daemon.extensionPort(Daemon.MONITOR) + "/");
 
             Browser.await("the graph shows 21 methods, each coloured by its state", 30_000, () -> browser.jsLong(
                     "return document.querySelectorAll('#graph g.node.running[id^=\"method:\"]').length") == 21);

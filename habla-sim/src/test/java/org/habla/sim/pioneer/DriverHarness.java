@@ -156,6 +156,11 @@ final class DriverHarness implements AutoCloseable {
     private ReadingSink sink() {
         return new ReadingSink() {
             @Override
+            public Channel channel(String name) {
+                return Channel.of(value -> reading(name, value), (value, micros) -> reading(name, value, micros));
+            }
+
+            @Override
             public void reading(String channel, Payload value) {
                 latest.put(channel, value);
                 synchronized (arrivals) {

@@ -32,7 +32,7 @@ class RoomEndToEndTest {
     private static final ObjectMapper JSON = new ObjectMapper();
     private static final Path CONFIG = Paths.get("..", "config", "room.json").toAbsolutePath().normalize();
     private static final Path CLIENT = Paths.get("src/test/resources/e2e/room_client.py").toAbsolutePath();
-    private static final Path CLIENT_LIB = Paths.get("..", "examples", "control-python").toAbsolutePath().normalize();
+    private static final Path CLIENT_LIB = Paths.get("..", "clients", "python", "src").toAbsolutePath().normalize();
 
     /** config/room.json on another broker and other ports: occupancy, light, comfort, reward, action. */
     static String roomConfig(int brokerPort, int[] ports) throws Exception {

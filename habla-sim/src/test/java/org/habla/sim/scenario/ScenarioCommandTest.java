@@ -52,6 +52,30 @@ class ScenarioCommandTest {
     }
 
     @Test
+    @Timeout(240)
+    void aShortRos2BaseScenarioRunsTheSimulatedBaseTheBodyTheDaemonAndTheControlProgram(@TempDir Path dir) throws Exception {
+        StringWriter out = new StringWriter();
+        StringWriter err = new StringWriter();
+        CommandLine cli = new CommandLine(new ScenarioCommand());
+        cli.setOut(new PrintWriter(out, true));
+        cli.setErr(new PrintWriter(err, true));
+        int port = org.habla.sim.PortBlock.freeOffset();
+        int code = cli.execute("ros2-base", "--scenario", "src/test/resources/scenarios/ros2-base-short.json",
+                "--home", HOME.toString(), "--report", dir.toString(), "--port-offset", "" + port, "--seed", "3");
+        assertThat(code).as("exit code; out:%n%s%nerr:%n%s", out, err).isZero();
+        assertThat(out.toString()).contains("simulated ros2-base started").contains("reached after the teacher left:");
+        JsonNode episode = new ObjectMapper().readTree(Files.readString(dir.resolve("report.json")))
+                .path("episodeResults").get(0);
+        int judged = 0;
+        for (JsonNode phase : episode.path("obedience")) {
+            judged += phase.path("commands").asInt();
+        }
+        assertThat(judged).as("the teacher judged the base's moves").isPositive();
+        assertThat(Files.readString(dir.resolve("body.log"))).contains("HABLA connected");
+        assertThat(Files.readString(dir.resolve("control.jsonl"))).contains("\"action\"");
+    }
+
+    @Test
     void anUnknownRobotIsAUsageError() {
         StringWriter err = new StringWriter();
         CommandLine cli = new CommandLine(new ScenarioCommand());

@@ -1,0 +1,72 @@
+package org.habla.cli;
+
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import org.habla.command.ExitCodes;
+import org.habla.config.ConfigSchema;
+import org.habla.plugin.PluginRegistry;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
+
+/**
+ * {@code habla schema [--output FILE]}: the JSON Schema of config files for every method and driver
+ * type on the class path (plugins included), so an editor can complete and check a config as it is
+ * typed. The text depends only on the plugin set: keys and types are sorted.
+ */
+@Command(name = "schema", mixinStandardHelpOptions = true,
+        description = "Print (or write) the JSON Schema of HABLA configs for every registered method and driver type.")
+public final class SchemaCommand implements Callable<Integer> {
+
+    @Spec
+    private CommandSpec spec;
+
+    @Option(names = {"-o", "--output"}, paramLabel = "FILE",
+            description = "Write the schema to FILE (folders are made) instead of printing it.")
+    private Path output;
+
+    private final PluginRegistry registry;
+
+    public SchemaCommand() {
+        this(null);
+    }
+
+    /** The schema of exactly these plugins instead of the ones on the class path. */
+    public SchemaCommand(PluginRegistry registry) {
+        this.registry = registry;
+    }
+
+    @Override
+    public Integer call() {
+        PluginRegistry r = registry != null ? registry : PluginRegistry.discover(Thread.currentThread().getContextClassLoader());
+        String schema = ConfigSchema.text(r);
+        if (output == null) {
+            PrintWriter out = spec.commandLine().getOut();
+            out.print(schema);
+            out.flush();
+            return ExitCodes.OK;
+        }
+        try {
+            Path parent = output.toAbsolutePath().getParent();
+            if (parent != null) {
+                Files.createDirectories(parent);
+            }
+            Files.writeString(output, schema, StandardCharsets.UTF_8);
+        } catch (IOException e) {
+            PrintWriter err = spec.commandLine().getErr();
+            err.println("habla schema: cannot write " + output + ": " + e);
+            err.flush();
+            return ExitCodes.RUNTIME_FAILURE;
+        }
+        PrintWriter out = spec.commandLine().getOut();
+        out.println("wrote " + output + " (" + r.methods().size() + " method types, " + r.drivers().size()
+                + " driver types)");
+        out.flush();
+        return ExitCodes.OK;
+    }
+}

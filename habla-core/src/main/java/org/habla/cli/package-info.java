@@ -1,2 +1,0 @@
-/** CLI: the {@code habla} command and the extension point through which other modules add subcommands. */
-package org.habla.cli;
