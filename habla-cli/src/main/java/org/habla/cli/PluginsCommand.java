@@ -22,9 +22,9 @@ import picocli.CommandLine.Model.CommandSpec;
 import picocli.CommandLine.Spec;
 
 /**
- * {@code habla plugins}: every method and driver type on the class path, with layers and parameters, and each
- * method type's ports as its provider lists them for the default parameters (no method is made), a record output
- * with its declared fields.
+ * {@code habla plugins}: every method and driver type on the class path, with layers ("light" after them for a
+ * type whose methods may run on the thread that feeds them) and parameters, and each method type's ports as its
+ * provider lists them for the default parameters (no method is made), a record output with its declared fields.
  */
 @Command(name = "plugins", mixinStandardHelpOptions = true,
         description = "List every method type and driver type, with its layers, parameters and ports.")
@@ -51,7 +51,8 @@ public final class PluginsCommand implements Callable<Integer> {
         for (Map.Entry<String, MethodProvider<?>> e : r.methods().entrySet()) {
             MethodProvider<?> p = e.getValue();
             String layers = p.layers().stream().sorted().map(Layer::configName).collect(Collectors.joining(", "));
-            out.println("  " + e.getKey() + "  [" + layers + "]  " + p.description());
+            String light = p.light() ? " light" : "";
+            out.println("  " + e.getKey() + "  [" + layers + "]" + light + "  " + p.description());
             printParams(out, p.paramsType());
             printPorts(out, p);
         }

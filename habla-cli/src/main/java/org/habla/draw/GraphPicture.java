@@ -11,6 +11,7 @@ import org.habla.config.HablaConfig;
 import org.habla.config.InterfaceConfig;
 import org.habla.config.MethodConfig;
 import org.habla.config.Source;
+import org.habla.graph.ThreadPlan;
 import org.habla.method.Layer;
 import org.habla.method.OutputPort;
 import org.habla.method.Ports;
@@ -21,7 +22,8 @@ import org.habla.plugin.PluginRegistry;
  * What the picture of a config shows, before any layout: the boxes (control sockets, methods by layer,
  * the interface channels the graph uses) and the arrows between them, each sensing, actuation or
  * lateral. Built from a valid config; the order of everything follows the config, so the same config
- * always gives the same picture.
+ * always gives the same picture. A method that runs on the thread that delivers to it ({@link ThreadPlan}) says
+ * whose thread that is in its box: {@code on @robot/main's reader}, {@code on sonar's thread}.
  */
 public record GraphPicture(String system, List<Node> nodes, List<Edge> edges, List<InterfaceGroup> groups) {
 
@@ -29,6 +31,15 @@ public record GraphPicture(String system, List<Node> nodes, List<Edge> edges, Li
         nodes = List.copyOf(nodes);
         edges = List.copyOf(edges);
         groups = List.copyOf(groups);
+    }
+
+    /** The threads of {@code cfg}'s methods; none if a driver cannot be made to count its connections. */
+    private static Optional<ThreadPlan> threadPlan(HablaConfig cfg, PluginRegistry registry) {
+        try {
+            return Optional.of(ThreadPlan.of(cfg, registry));
+        } catch (RuntimeException e) {
+            return Optional.empty();
+        }
     }
 
     /** The picture of {@code cfg}; {@code registry} makes each method once to learn its outputs. */
@@ -43,6 +54,7 @@ public record GraphPicture(String system, List<Node> nodes, List<Edge> edges, Li
                 nodes.put(socketKey(e), new Node(socketKey(e), Row.CONTROL, List.of(e.name(), "port " + port), "", false));
             }
         }
+        Optional<ThreadPlan> threads = threadPlan(cfg, registry);
         for (MethodConfig m : cfg.methods()) {
             List<String> lines = new ArrayList<>();
             lines.add(m.id());
@@ -50,6 +62,8 @@ public record GraphPicture(String system, List<Node> nodes, List<Edge> edges, Li
                 lines.add(m.type());
             }
             m.host().ifPresent(h -> lines.add("on " + h));
+            threads.map(t -> t.choice(m.id())).filter(ThreadPlan.Choice::inline)
+                    .ifPresent(c -> lines.add("on " + c.where()));
             nodes.put(methodKey(m.id()), new Node(methodKey(m.id()), Row.of(m.layer()), lines, "", m.host().isPresent()));
         }
         List<InterfaceGroup> groups = new ArrayList<>();

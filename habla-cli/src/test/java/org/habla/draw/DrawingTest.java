@@ -31,6 +31,60 @@ class DrawingTest {
         return GraphPicture.of(cfg, TestPlugins.registry());
     }
 
+    /** A method type as another, but light. */
+    private record Light<P extends Record>(org.habla.plugin.MethodProvider<P> of)
+            implements org.habla.plugin.MethodProvider<P> {
+        @Override
+        public String name() {
+            return of.name();
+        }
+
+        @Override
+        public String description() {
+            return of.description();
+        }
+
+        @Override
+        public java.util.Set<org.habla.method.Layer> layers() {
+            return of.layers();
+        }
+
+        @Override
+        public Class<P> paramsType() {
+            return of.paramsType();
+        }
+
+        @Override
+        public org.habla.method.Ports ports(org.habla.method.Layer layer, P params) {
+            return of.ports(layer, params);
+        }
+
+        @Override
+        public org.habla.method.Method create(org.habla.method.Layer layer, P params) {
+            return of.create(layer, params);
+        }
+
+        @Override
+        public boolean light() {
+            return true;
+        }
+    }
+
+    @Test
+    void aMethodOnTheThreadThatFeedsItSaysWhoseThreadItIs() throws Exception {
+        org.habla.plugin.PluginRegistry base = TestPlugins.registry();
+        List<org.habla.plugin.MethodProvider<?>> types = new ArrayList<>();
+        base.methods().values().forEach(t -> types.add(t.name().equals("nearest-distance") ? new Light<>(t) : t));
+        org.habla.plugin.PluginRegistry registry = org.habla.plugin.PluginRegistry.of(types,
+                List.copyOf(base.drivers().values()));
+        Path file = Path.of(DrawingTest.class.getResource("/configs/valid/pioneer-like.json").toURI());
+        GraphPicture p = GraphPicture.of(new ConfigLoader(registry).load(file), registry);
+
+        assertThat(p.node("method:nearest").lines()).contains("on sonar's thread");
+        assertThat(p.node("method:sonar").lines()).noneMatch(l -> l.startsWith("on "));
+        assertThat(pioneerLike().node("method:nearest").lines()).as("not light").noneMatch(l -> l.startsWith("on "));
+    }
+
     @Test
     void pictureHasSocketsMethodsAndUsedChannelsInTheirBands() throws Exception {
         GraphPicture p = pioneerLike();

@@ -41,7 +41,8 @@ public final class ConfigLoader {
     static final Set<String> RECONNECT_KEYS = Set.of("initialMs", "maxMs", "connectTimeoutMs", "readTimeoutMs",
             "tcpKeepAliveIdleS", "tcpKeepAliveIntervalS", "tcpKeepAliveCount");
     static final Set<String> METHOD_KEYS =
-            Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host", "fallback", "feedback");
+            Set.of("id", "type", "layer", "inputs", "commands", "params", "expose", "host", "fallback", "feedback",
+                    "thread");
     static final Set<String> EXPOSE_KEYS = Set.of("port", "name", "bind", "tls");
     static final Set<String> BRIDGE_KEYS = Set.of("id", "type", "address", "params", "reconnect");
 

@@ -232,7 +232,10 @@ public final class ConfigSchema {
                 "feedback", NODES.objectNode().put("type", "array").put("uniqueItems", true)
                         .put("description", "Inputs of this method whose wires close a wiring cycle on purpose; every"
                                 + " wire on a declared cycle delivers only the latest sample.")
-                        .set("items", string("An input name."))));
+                        .set("items", string("An input name.")),
+                "thread", string("auto: a light method fed from one thread runs on that thread, with no queue "
+                        + "between; own: a thread of its own whatever its type.")
+                        .put("default", "auto").set("enum", strings("auto", "own"))));
         ArrayNode cases = s.putArray("allOf");
         registry.methods().forEach((name, provider) -> {
             ArrayNode typeLayers = NODES.arrayNode();

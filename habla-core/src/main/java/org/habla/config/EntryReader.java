@@ -79,7 +79,7 @@ final class EntryReader {
         Optional<CheckedObject> read = CheckedObject.of(node, path, errors);
         if (read.isEmpty()) {
             return new MethodEntry(path, null, null, null, Set.of(), Map.of(), Map.of(), null, false, Optional.empty(),
-                    Optional.empty(), Fallback.NONE, null, Map.of());
+                    Optional.empty(), Fallback.NONE, null, Map.of(), ThreadChoice.AUTO);
         }
         CheckedObject o = read.get();
         o.allowOnly(ConfigLoader.METHOD_KEYS);
@@ -142,7 +142,20 @@ final class EntryReader {
             o.node().get("inputs").fieldNames().forEachRemaining(inputKeys::add);
         }
         return new MethodEntry(path, id, provider == null ? null : provider.name(), layer, inputKeys, inputs,
-                commands, params, o.has("expose"), expose, host, fallback, ports, feedback(o));
+                commands, params, o.has("expose"), expose, host, fallback, ports, feedback(o), thread(o));
+    }
+
+    private ThreadChoice thread(CheckedObject o) {
+        Optional<String> text = o.optionalString("thread");
+        if (text.isEmpty()) {
+            return ThreadChoice.AUTO;
+        }
+        try {
+            return ThreadChoice.fromConfig(text.get());
+        } catch (IllegalArgumentException e) {
+            errors.add(o.path().field("thread"), e.getMessage());
+            return ThreadChoice.AUTO;
+        }
     }
 
     /** The {@code feedback} array: input names, each with the path it is declared at. */

@@ -19,16 +19,25 @@ import org.habla.net.Expose;
  * @param host     the worker that runs it ({@code "host:port"}), if not the daemon itself
  * @param fallback what happens while that worker is lost ({@link Fallback#NONE} for a method without host)
  * @param feedback the inputs the config declares to close a wiring cycle ({@link WiringCycles})
+ * @param thread   whether the engine may run the method on the thread that delivers to it, or gives it its own
  */
 public record MethodConfig(String id, String type, Layer layer, Map<String, Source> inputs,
         Map<String, ChannelRef> commands, Record params, Optional<Expose> expose, Optional<String> host,
-        Fallback fallback, Set<String> feedback) {
+        Fallback fallback, Set<String> feedback, ThreadChoice thread) {
 
     public MethodConfig {
         inputs = Map.copyOf(inputs);
         commands = Map.copyOf(commands);
         java.util.Objects.requireNonNull(fallback, "fallback");
         feedback = Set.copyOf(feedback);
+        java.util.Objects.requireNonNull(thread, "thread");
+    }
+
+    /** A method whose thread the engine chooses. */
+    public MethodConfig(String id, String type, Layer layer, Map<String, Source> inputs,
+            Map<String, ChannelRef> commands, Record params, Optional<Expose> expose, Optional<String> host,
+            Fallback fallback, Set<String> feedback) {
+        this(id, type, layer, inputs, commands, params, expose, host, fallback, feedback, ThreadChoice.AUTO);
     }
 
     /** A method that closes no wiring cycle. */

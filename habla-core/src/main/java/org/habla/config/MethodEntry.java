@@ -25,11 +25,12 @@ import org.habla.net.Expose;
  * @param fallback what to do while the worker is lost
  * @param ports    the ports its type lists for these params, or null
  * @param feedback the inputs declared to close a wiring cycle, each with the path of its declaration
+ * @param thread   the thread the config asks for
  */
 record MethodEntry(JsonPath path, String id, String type, Layer layer, Set<String> inputKeys,
         Map<String, Source> inputs, Map<String, ChannelRef> commands, Record params, boolean exposeGiven,
         Optional<Expose> expose, Optional<String> host, Fallback fallback, Ports ports,
-        Map<String, JsonPath> feedback) {
+        Map<String, JsonPath> feedback, ThreadChoice thread) {
 
     /** Whether every part was read, so the entry can become a {@link MethodConfig}. */
     boolean complete() {
@@ -37,6 +38,7 @@ record MethodEntry(JsonPath path, String id, String type, Layer layer, Set<Strin
     }
 
     MethodConfig toConfig() {
-        return new MethodConfig(id, type, layer, inputs, commands, params, expose, host, fallback, feedback.keySet());
+        return new MethodConfig(id, type, layer, inputs, commands, params, expose, host, fallback, feedback.keySet(),
+                thread);
     }
 }

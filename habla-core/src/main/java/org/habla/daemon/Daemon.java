@@ -21,6 +21,7 @@ import org.habla.driver.ChannelDescriptor;
 import org.habla.graph.EngineClock;
 import org.habla.graph.GraphTap;
 import org.habla.graph.MethodGraph;
+import org.habla.graph.RecordedSkips;
 import org.habla.net.BlockBudget;
 import org.habla.graph.OutputInfo;
 import org.habla.sample.Sample;
@@ -81,13 +82,15 @@ public final class Daemon implements AutoCloseable {
 
     /**
      * Builds and starts a daemon that replays a recording: the same control sockets, but every interface is
-     * fed from the recording through {@link #graph()} instead of connecting to a robot.
+     * fed from the recording through {@link #graph()} instead of connecting to a robot, and every input skips
+     * the samples the recorded run skipped ({@code skips}).
      */
     public static Daemon replaying(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
-            Map<String, List<ChannelDescriptor>> channels) throws IOException {
+            Map<String, List<ChannelDescriptor>> channels, RecordedSkips skips) throws IOException {
         checkPlacements(config);
         // A replay carries no bridge: what it computes again must not reach a broker as if it were live.
-        return assemble(config, registry, MethodGraph.replaying(config, registry, clock, tap, channels), clock, false);
+        return assemble(config, registry, MethodGraph.replaying(config, registry, clock, tap, channels, skips), clock,
+                false);
     }
 
     /** Asks every worker the config places methods on whether it can run them. */

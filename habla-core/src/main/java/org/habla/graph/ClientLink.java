@@ -38,7 +38,7 @@ final class ClientLink implements Link {
         this.connection = connection;
         this.reconnect = reconnect;
         this.sink = sink;
-        this.link = new ReconnectingLink<>("habla-link-" + name, reconnect, Attempt::new,
+        this.link = new ReconnectingLink<>(ReconnectingLink.THREAD_PREFIX + name, reconnect, Attempt::new,
                 new OutageLog(LOG, "link " + name),
                 ReconnectingLink.StateListener.notifying(onStateChange, writeLock)); // a write ends before its close
     }

@@ -53,7 +53,7 @@ final class ConnectionLink implements Link {
         this.silenceLimitMs = connection.liveness() instanceof Liveness.Periodic p
                 ? (reconnect.readTimeoutMs() > 0 ? reconnect.readTimeoutMs() : p.lostAfter().toMillis()) : 0;
         this.sink = sink;
-        this.link = new ReconnectingLink<>("habla-link-" + name, reconnect, RobotSession::new,
+        this.link = new ReconnectingLink<>(ReconnectingLink.THREAD_PREFIX + name, reconnect, RobotSession::new,
                 new OutageLog(LOG, "link " + name + " (" + host + ":" + connection.port() + ")"),
                 ReconnectingLink.StateListener.notifying(onStateChange));
     }

@@ -1,6 +1,5 @@
 package org.habla.graph;
 
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
@@ -26,6 +25,8 @@ final class ExposedMethod implements ControlPoint {
     private final MethodRunner runner;
     private final Expose expose;
     private final List<Input<?>> controlInputs;
+    /** What a control write to each control input is handed to, by the input's declaration index. */
+    private final InputEntry[] entries;
     private final MotionWatchdog watchdog;
     private final GraphTap tap;
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
@@ -33,20 +34,27 @@ final class ExposedMethod implements ControlPoint {
     private final AtomicLongArray controlSequences;
     private final boolean actuating;
     private final ControlLease lease;
+    /** The producer a written value's sample names ({@code control:SOCKET}). */
+    private final String controlProducer;
     private final Function<Output<?>, Shape> shapes;
 
     /**
-     * @param actuating whether values written here can reach a command channel
-     * @param shapes    the shape each output shows with what feeds it
+     * @param controlled the inputs a control client writes, each with what a write is handed to
+     * @param actuating  whether values written here can reach a command channel
+     * @param shapes     the shape each output shows with what feeds it
      */
-    ExposedMethod(MethodRunner runner, Expose expose, List<Input<?>> controlInputs, MotionWatchdog watchdog,
+    ExposedMethod(MethodRunner runner, Expose expose, Map<Input<?>, InputEntry> controlled, MotionWatchdog watchdog,
             GraphTap tap, boolean actuating, Function<Output<?>, Shape> shapes) {
+        List<Input<?>> controlInputs = runner.method().inputs().stream().filter(controlled::containsKey).toList();
+        this.entries = new InputEntry[runner.method().inputs().size()];
+        controlled.forEach((in, entry) -> entries[in.index()] = entry);
         this.runner = runner;
         this.shapes = shapes;
         this.actuating = actuating && !controlInputs.isEmpty();
         this.lease = this.actuating ? new ControlLease(expose.name(), watchdog.timeoutMillis(), runner::nowMicros,
                 this::writerLeft, line -> listeners.forEach(l -> l.onControl(line))) : null;
         this.expose = expose;
+        this.controlProducer = "control:" + expose.name();
         this.controlInputs = List.copyOf(controlInputs);
         this.controlSequences = new AtomicLongArray(runner.method().inputs().size());
         this.watchdog = watchdog;
@@ -159,9 +167,9 @@ final class ExposedMethod implements ControlPoint {
         if (actuating) {
             watchdog.controlWrite();
         }
-        Sample sample = new Sample(value, "control:" + expose.name(), seq, runner.nowMicros(), false);
+        Sample sample = new Sample(value, controlProducer, seq, runner.nowMicros(), false);
         tap.control(expose.name(), input.name(), sample);
-        if (!runner.slot(input).offer(sample)) {
+        if (!entries[input.index()].offer(sample)) {
             throw new Rejected("queue_full", "input '" + input.name() + "' of " + runner.id()
                     + " is full (" + input.delivery().capacity() + " waiting); value dropped");
         }
@@ -173,16 +181,6 @@ final class ExposedMethod implements ControlPoint {
             tap.writerLeft(expose.name());
             watchdog.writerLeft();
         }
-    }
-
-    static List<Input<?>> controlInputsOf(MethodRunner runner, Map<String, ?> controlSources) {
-        List<Input<?>> list = new ArrayList<>();
-        for (Input<?> in : runner.method().inputs()) {
-            if (controlSources.containsKey(in.name())) {
-                list.add(in);
-            }
-        }
-        return list;
     }
 
 }

@@ -4,8 +4,10 @@ import org.habla.sample.Sample;
 
 /**
  * Sees everything that crosses the graph's edges — readings from the hardware, commands to it,
- * values from control clients, link changes and the outputs of exposed methods — for recording.
- * Called on engine threads: implementations must not block (hand off to a queue of their own).
+ * values from control clients, link changes, the outputs of exposed methods, the samples a busy method skipped
+ * and who drove the robot — for recording and audit. An observer only: nothing it returns changes what the
+ * graph does (what a replay decides for the engine is {@link RecordedSkips}'s). Called on engine threads:
+ * implementations must not block (hand off to a queue of their own).
  */
 public interface GraphTap {
 
@@ -36,18 +38,10 @@ public interface GraphTap {
     /**
      * A sample offered to a method's input never reached the method: a {@code latest} input replaced it by a newer
      * one before the method took it, or a full {@code queue} input dropped it. {@code arrival} is its place among
-     * the samples offered to that input (1 for the first), so a replay can skip the same one: which samples a busy
-     * method skipped is decided by timing, and the replay has none.
+     * the samples offered to that input (1 for the first), so a replay can skip the same one ({@link RecordedSkips}):
+     * which samples a busy method skipped is decided by timing, and the replay has none.
      */
     default void skipped(String methodId, String input, long arrival) {
-    }
-
-    /**
-     * Whether the recorded run skipped the {@code arrival}-th sample offered to {@code methodId}'s {@code input}
-     * (see {@link #skipped}); a replay's tap says so, so the replay hands the method the same samples.
-     */
-    default boolean skippedWhenRecorded(String methodId, String input, long arrival) {
-        return false;
     }
 
     /**

@@ -28,27 +28,37 @@ final class GraphWiring {
     private final Map<String, InterfaceLink> links;
     private final MotionWatchdog watchdog;
     private final GraphTap tap;
+    private final Entries entries;
     private final WiredShapes shapes;
     private final List<ExposedMethod> exposed = new ArrayList<>();
 
+    /** What the wires of one method's input hand samples to ({@link GraphRun#entry}). */
+    @FunctionalInterface
+    interface Entries {
+        InputEntry of(String methodId, InputSlot slot);
+    }
+
     private GraphWiring(HablaConfig config, GraphTopology topology, Map<String, MethodRunner> runners,
-            Map<String, InterfaceLink> links, MotionWatchdog watchdog, GraphTap tap, WiredShapes shapes) {
+            Map<String, InterfaceLink> links, MotionWatchdog watchdog, GraphTap tap, Entries entries,
+            WiredShapes shapes) {
         this.config = config;
         this.topology = topology;
         this.runners = runners;
         this.links = links;
         this.watchdog = watchdog;
         this.tap = tap;
+        this.entries = entries;
         this.shapes = shapes;
     }
 
     /**
-     * Wires the graph's methods and interfaces, telling {@code shapes} what feeds each input; returns the exposed
-     * methods, in config order.
+     * Wires the graph's methods and interfaces, every input's wires and control writes to what {@code entries} gives
+     * for its slot, telling {@code shapes} what feeds each input; returns the exposed methods, in config order.
      */
     static List<ExposedMethod> wire(HablaConfig config, GraphTopology topology, Map<String, MethodRunner> runners,
-            Map<String, InterfaceLink> links, MotionWatchdog watchdog, GraphTap tap, WiredShapes shapes) {
-        GraphWiring w = new GraphWiring(config, topology, runners, links, watchdog, tap, shapes);
+            Map<String, InterfaceLink> links, MotionWatchdog watchdog, GraphTap tap, Entries entries,
+            WiredShapes shapes) {
+        GraphWiring w = new GraphWiring(config, topology, runners, links, watchdog, tap, entries, shapes);
         for (MethodConfig mc : config.methods()) {
             w.wire(mc);
         }
@@ -61,24 +71,24 @@ final class GraphWiring {
 
     private void wire(MethodConfig mc) {
         MethodRunner runner = runners.get(mc.id());
-        Map<String, Source> controlSources = new HashMap<>();
+        Map<Input<?>, InputEntry> controlled = new HashMap<>();
         for (Map.Entry<String, Source> e : mc.inputs().entrySet()) {
             Input<?> input = runner.method().input(e.getKey()).orElseThrow();
-            InputSlot slot = runner.slot(input);
+            InputEntry entry = entries.of(mc.id(), runner.slot(input));
             switch (e.getValue()) {
                 case Source.MethodOutput mo -> {
                     MethodRunner from = runners.get(mo.methodId());
                     Output<?> out = from.method().output(mo.output()).orElseThrow();
-                    from.port(out).subscribe(slot::offer);
+                    feed(from.port(out), runner, entry);
                     shapes.fromOutput(mc.id(), input, from.id(), out);
                 }
                 case Source.Channel ch -> {
                     InterfaceLink link = links.get(ch.interfaceId());
-                    link.reading(ch.channel()).subscribe(slot::offer);
+                    feed(link.reading(ch.channel()), runner, entry);
                     runner.bindChannel(input, link.channel(ch.channel()));
                     shapes.fromChannel(mc.id(), input, link.channel(ch.channel()));
                 }
-                case Source.Control c -> controlSources.put(e.getKey(), c);
+                case Source.Control c -> controlled.put(input, entry);
             }
         }
         for (Map.Entry<String, ChannelRef> e : mc.commands().entrySet()) {
@@ -91,9 +101,20 @@ final class GraphWiring {
             }
             runner.port(out).subscribe(InterfaceTap.commands(link, channel, tap));
         }
-        mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner, x,
-                ExposedMethod.controlInputsOf(runner, controlSources), watchdog, tap, topology.actuates(mc.id()),
-                out -> shapes.of(mc.id(), out))));
+        mc.expose().ifPresent(x -> exposed.add(new ExposedMethod(runner, x, controlled, watchdog, tap,
+                topology.actuates(mc.id()), out -> shapes.of(mc.id(), out))));
+    }
+
+    /**
+     * Wires {@code producer} to an input of {@code runner}: a method that runs on the producer's thread gets each
+     * sample before the methods whose threads are woken, so the light chain runs first.
+     */
+    private static void feed(Producer producer, MethodRunner runner, InputEntry entry) {
+        if (runner.inline()) {
+            producer.subscribeAhead(entry::offer);
+        } else {
+            producer.subscribe(entry::offer);
+        }
     }
 
     /** Sends what each method tells control clients to the sockets whose values reach it. */

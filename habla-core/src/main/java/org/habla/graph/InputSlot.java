@@ -3,6 +3,7 @@ package org.habla.graph;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.concurrent.atomic.AtomicReference;
 import java.util.concurrent.atomic.LongAdder;
+import java.util.function.LongConsumer;
 import org.habla.method.Delivery;
 import org.habla.method.Input;
 import org.habla.sample.Sample;
@@ -10,32 +11,41 @@ import org.habla.sample.Sample;
 /**
  * Where samples wait for one input of one method: a single conflating slot for {@code latest}
  * inputs, a bounded queue for {@code queue} inputs. Offers never block; a full queue drops the
- * new sample and counts it.
+ * new sample and counts it. A method run on the thread that delivers to it may take a sample at once, while
+ * nothing waits in the slot before it ({@link Taker#takeNow}): it is then handled as if it had been queued and
+ * taken, without the queue.
  */
-final class InputSlot {
+final class InputSlot implements InputEntry {
+
+    /** Who takes the slot's samples: the method's scheduler, through its runner. */
+    interface Taker {
+        /** A sample is waiting: see that it is handled. */
+        void wake();
+
+        /**
+         * Hands the {@code arrival}-th sample to the method now, on this thread, if the method is free and nothing
+         * waits in {@code slot}; false to queue it instead.
+         */
+        boolean takeNow(InputSlot slot, Sample sample, long arrival);
+
+        /** A taker that only wakes: every sample is queued. */
+        static Taker waking(Runnable wake) {
+            return new Taker() {
+                @Override
+                public void wake() {
+                    wake.run();
+                }
+
+                @Override
+                public boolean takeNow(InputSlot slot, Sample sample, long arrival) {
+                    return false;
+                }
+            };
+        }
+    }
 
     /** A sample with its place in the order of arrival at this slot. */
     private record Arrival(Sample sample, long index) {
-    }
-
-    /** Where the slot tells of the samples it skips, and asks which ones a recorded run skipped. */
-    interface Skips {
-        /** The {@code arrival}-th sample offered never reaches the method (replaced or dropped). */
-        void skipped(long arrival);
-
-        /** Whether the run being replayed skipped the {@code arrival}-th sample; false in a live run. */
-        boolean skippedWhenRecorded(long arrival);
-
-        Skips NONE = new Skips() {
-            @Override
-            public void skipped(long arrival) {
-            }
-
-            @Override
-            public boolean skippedWhenRecorded(long arrival) {
-                return false;
-            }
-        };
     }
 
     private final Input<?> input;
@@ -45,24 +55,35 @@ final class InputSlot {
     private final AtomicLong offered = new AtomicLong();
     private final LongAdder dropped = new LongAdder();
     private final LongAdder conflated = new LongAdder();
-    private final Runnable wake;
+    private final Taker taker;
     private final WorkCount work;
-    private final Skips skips;
+    private final LongConsumer skipped;
+    /** Written by whoever takes the method's messages, with release; read by any thread. */
     private volatile long consumedThrough;
+    private static final java.lang.invoke.VarHandle CONSUMED_THROUGH;
+
+    static {
+        try {
+            CONSUMED_THROUGH = java.lang.invoke.MethodHandles.lookup()
+                    .findVarHandle(InputSlot.class, "consumedThrough", long.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
 
     InputSlot(Input<?> input, Runnable wake, WorkCount work) {
-        this(input, input.delivery(), wake, work, Skips.NONE);
+        this(input, input.delivery(), Taker.waking(wake), work, arrival -> { });
     }
 
     /**
      * A slot that delivers as {@code delivery}, which may differ from the input's own (a declared cycle's wire),
-     * and tells {@code skips} of every sample that does not reach the method.
+     * and tells {@code skipped} the place in the order of arrival of every sample that does not reach the method.
      */
-    InputSlot(Input<?> input, Delivery delivery, Runnable wake, WorkCount work, Skips skips) {
+    InputSlot(Input<?> input, Delivery delivery, Taker taker, WorkCount work, LongConsumer skipped) {
         this.input = input;
-        this.skips = skips;
+        this.skipped = skipped;
         this.delivery = delivery;
-        this.wake = wake;
+        this.taker = taker;
         this.work = work;
         if (delivery.mode() == Delivery.Mode.LATEST) {
             latest = new AtomicReference<>();
@@ -83,42 +104,59 @@ final class InputSlot {
     }
 
     /** Hands a sample to the method; false if a full queue dropped it. */
-    boolean offer(Sample sample) {
-        Arrival arrival = new Arrival(sample, offered.incrementAndGet());
-        if (skips.skippedWhenRecorded(arrival.index())) {
-            // A replay: the recorded run replaced or dropped this one before the method took it, so it does too
-            // (and says so, for a recording of the replay).
-            skips.skipped(arrival.index());
-            if (latest != null) {
-                conflated.increment();
-                return true;
-            }
-            dropped.increment();
-            return false;
+    @Override
+    public boolean offer(Sample sample) {
+        return offer(sample, arrive());
+    }
+
+    /** The next sample's place in the order of arrival (1 for the first); then {@link #offer} or {@link #skip} it. */
+    long arrive() {
+        return offered.incrementAndGet();
+    }
+
+    /** Hands the {@code arrival}-th sample to the method; false if a full queue dropped it. */
+    boolean offer(Sample sample, long arrival) {
+        if (taker.takeNow(this, sample, arrival)) {
+            return true;
         }
+        Arrival a = new Arrival(sample, arrival);
         boolean taken;
         if (latest != null) {
             work.begin();
-            Arrival replaced = latest.getAndSet(arrival);
+            Arrival replaced = latest.getAndSet(a);
             if (replaced != null) {
                 conflated.increment();
                 work.end();
-                skips.skipped(replaced.index());
+                skipped.accept(replaced.index());
             }
             taken = true;
         } else {
             work.begin();
-            taken = queue.offer(arrival);
+            taken = queue.offer(a);
             if (!taken) {
                 work.end();
                 dropped.increment();
-                skips.skipped(arrival.index());
+                skipped.accept(arrival);
             }
         }
         if (taken) {
-            wake.run();
+            taker.wake();
         }
         return taken;
+    }
+
+    /**
+     * Does not hand the {@code arrival}-th sample to the method, and counts it as this slot counts a sample that does
+     * not reach the method: replaced ({@code latest}, returns true) or dropped ({@code queue}, returns false).
+     */
+    boolean skip(long arrival) {
+        skipped.accept(arrival);
+        if (latest != null) {
+            conflated.increment();
+            return true;
+        }
+        dropped.increment();
+        return false;
     }
 
     /**
@@ -130,8 +168,17 @@ final class InputSlot {
         if (a == null) {
             return null;
         }
-        consumedThrough = a.index();
+        CONSUMED_THROUGH.setRelease(this, a.index());
         return a.sample();
+    }
+
+    /**
+     * The {@code arrival}-th sample was handed to the method without waiting here ({@link Taker#takeNow}); counted in
+     * as work, as a queued one is. By the thread that holds the method.
+     */
+    void takenNow(long arrival) {
+        work.begin();
+        CONSUMED_THROUGH.setRelease(this, arrival);
     }
 
     /**

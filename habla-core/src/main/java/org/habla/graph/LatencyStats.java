@@ -3,17 +3,18 @@ package org.habla.graph;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.HdrHistogram.Histogram;
-import org.HdrHistogram.Recorder;
+import org.HdrHistogram.SingleWriterRecorder;
 
 /**
  * Latency from a raw reading's time to the moment a method handled a sample derived from it,
- * recorded without locks and read as percentiles over the interval since the last read.
+ * recorded without locks by one thread at a time (whichever runs the method's messages) and read from any as
+ * percentiles over the interval since the last read.
  */
 final class LatencyStats {
 
     private static final long MAX_MICROS = 60_000_000L;
 
-    private final Recorder recorder = new Recorder(MAX_MICROS, 2);
+    private final SingleWriterRecorder recorder = new SingleWriterRecorder(MAX_MICROS, 2);
     private Histogram interval;
 
     void record(long micros) {

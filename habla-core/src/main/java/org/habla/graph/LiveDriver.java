@@ -36,6 +36,14 @@ final class LiveDriver implements InterfaceDriver {
         return driver.channels();
     }
 
+    /** The names of the driver's connections (TCP and client library's), in its order; none is opened. */
+    List<String> connectionNames() {
+        List<String> names = new ArrayList<>();
+        driver.connections().forEach(c -> names.add(c.name()));
+        driver.clientConnections().forEach(c -> names.add(c.name()));
+        return names;
+    }
+
     @Override
     public List<Link> connections(InterfaceConfig config, ReadingSink sink, Runnable changed) {
         List<Link> links = new ArrayList<>();

@@ -10,14 +10,15 @@ import java.util.List;
 public final class ManualClock implements EngineClock {
 
     private final List<Periodic> tasks = new ArrayList<>();
-    private long now;
+    /** Written under the clock's lock, read without it (every message an engine thread takes reads it). */
+    private volatile long now;
 
     public ManualClock(long startMicros) {
         this.now = startMicros;
     }
 
     @Override
-    public synchronized long nowMicros() {
+    public long nowMicros() {
         return now;
     }
 

@@ -3,7 +3,6 @@ package org.habla.graph;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -11,7 +10,6 @@ import java.util.concurrent.ExecutorService;
 import org.habla.config.HablaConfig;
 import org.habla.config.InterfaceConfig;
 import org.habla.config.MethodConfig;
-import org.habla.config.Reconnect;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.method.Method;
 import org.habla.method.Output;
@@ -39,12 +37,12 @@ public final class MethodGraph implements AutoCloseable {
     private static final long STOP_WAIT_MILLIS = 2_000;
 
     private final HablaConfig config;
-    private final GraphReplay replay;
+    private final GraphRun run;
     private final EngineClock clock;
     private final ExecutorService backgroundPool;
     private final Map<String, MethodRunner> runners = new LinkedHashMap<>();
     private final Map<String, InterfaceLink> links = new LinkedHashMap<>();
-    private final Map<String, RemotePlacement> placements = new LinkedHashMap<>();
+    private final Map<String, RemotePlacement> placements;
     private final LinkStates linkStates = new LinkStates();
     private final List<ExposedMethod> exposed;
     private final WiredShapes shapes = new WiredShapes();
@@ -55,16 +53,11 @@ public final class MethodGraph implements AutoCloseable {
     private AutoCloseable realtimeCarriers;
     private boolean started;
     private final GraphTap tap;
-    private final WorkCount work;
 
-    /**
-     * @param drivers  what each interface runs on, by interface id
-     * @param recorded the same drivers when they are a recording's, which {@link #replay()} then feeds; else null
-     */
-    private MethodGraph(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
-            Map<String, ? extends InterfaceDriver> drivers, Map<String, RecordedDriver> recorded) {
+    /** @param run live interfaces, or a recording: what differs between the two ({@link GraphRun}) */
+    private MethodGraph(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap, GraphRun run) {
         this.tap = tap;
-        this.work = recorded == null ? WorkCount.NONE : new WorkCount();
+        this.run = run;
         this.config = config;
         GraphTopology topology = new GraphTopology(config);
         this.clock = clock;
@@ -72,32 +65,23 @@ public final class MethodGraph implements AutoCloseable {
         this.backgroundPool = BackgroundPool.create("habla-background-");
         RealtimeThreads.configured(); // a wrong priority stops the build, not a thread
         for (InterfaceConfig ic : config.interfaces()) {
-            InterfaceLink link = new InterfaceLink(ic, drivers.get(ic.id()), clock, linkStates);
+            InterfaceLink link = new InterfaceLink(ic, run.driver(ic), clock, linkStates);
             InterfaceTap.attach(link, tap, clock);
             links.put(ic.id(), link);
         }
         this.watchdog = new MotionWatchdog(config.safety().watchdogMs(), clock, List.copyOf(links.values()));
         links.values().forEach(l -> l.watchdog(watchdog));
+        ThreadPlan threads = ThreadPlan.of(config, registry);
         for (MethodConfig mc : config.methods()) {
             Method made = createMethod(registry, mc, config.methods().indexOf(mc));
-            runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), made, clock, backgroundPool, work, tap,
-                    config.cycleInputs(mc.id())));
+            runners.put(mc.id(), new MethodRunner(mc.id(), mc.type(), made, clock, backgroundPool, run.work(), tap,
+                    config.cycleInputs(mc.id()), threads.choice(mc.id())));
         }
-        var workerLink = config.methods().stream().anyMatch(m -> m.host().isPresent())
-                ? config.security().workerLink() : org.habla.security.WorkerLink.PLAIN;
-        for (MethodConfig mc : config.methods()) {
-            if (mc.host().isPresent()) {
-                MethodRunner runner = runners.get(mc.id());
-                RemotePlacement p = new RemotePlacement(mc, runner, config.limits(), Reconnect.DEFAULTS, linkStates,
-                        workerLink);
-                runner.placeOn(p);
-                placements.put(mc.id(), p);
-            }
-        }
-        this.exposed = GraphWiring.wire(config, topology, runners, links, watchdog, tap, shapes);
+        this.placements = RemotePlacement.placeAll(config, runners, linkStates);
+        this.exposed = GraphWiring.wire(config, topology, runners, links, watchdog, tap, run::entry, shapes);
         this.staleness = new GraphStaleness(topology, runners, links, placements, exposed);
         linkStates.onChange(staleness::refresh);
-        this.replay = recorded == null ? null : new GraphReplay(recorded, runners, exposed, topology, watchdog, work);
+        run.wired(runners, exposed, topology, watchdog);
     }
 
     /** Builds the graph of a checked config. Nothing runs until {@link #start()}. */
@@ -112,25 +96,18 @@ public final class MethodGraph implements AutoCloseable {
 
     /** Builds the graph with a tap that sees everything crossing its edges (for recording). */
     public static MethodGraph build(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap) {
-        Map<String, InterfaceDriver> drivers = new HashMap<>();
-        for (InterfaceConfig ic : config.interfaces()) {
-            drivers.put(ic.id(), LiveDriver.create(registry, ic));
-        }
-        return new MethodGraph(config, registry, clock, tap, drivers, null);
+        return new MethodGraph(config, registry, clock, tap, new LiveRun(registry));
     }
 
     /**
      * Builds the same graph on a recording: every interface runs on a {@link RecordedDriver} with the recorded
      * channels, through which {@link #replay()} feeds the readings and link changes; commands are absorbed —
-     * counted and tapped, never written anywhere.
+     * counted and tapped, never written anywhere. Every input skips the samples {@code skips} says the recorded
+     * run skipped.
      */
     public static MethodGraph replaying(HablaConfig config, PluginRegistry registry, EngineClock clock, GraphTap tap,
-            Map<String, List<ChannelDescriptor>> channels) {
-        Map<String, RecordedDriver> drivers = new HashMap<>();
-        for (InterfaceConfig ic : config.interfaces()) {
-            drivers.put(ic.id(), new RecordedDriver(channels.getOrDefault(ic.id(), List.of())));
-        }
-        return new MethodGraph(config, registry, clock, tap, drivers, drivers);
+            Map<String, List<ChannelDescriptor>> channels, RecordedSkips skips) {
+        return new MethodGraph(config, registry, clock, tap, new RecordedRun(channels, skips));
     }
 
     /**
@@ -140,10 +117,7 @@ public final class MethodGraph implements AutoCloseable {
      * @throws IllegalStateException if the graph runs live interfaces, not a recording
      */
     public GraphReplay replay() {
-        if (replay == null) {
-            throw new IllegalStateException("this graph runs live interfaces, not a recording");
-        }
-        return replay;
+        return run.replay();
     }
 
     /**
@@ -152,7 +126,7 @@ public final class MethodGraph implements AutoCloseable {
      * recording counts its work; a live one throws {@link IllegalStateException}.
      */
     public boolean awaitIdle(long millis) throws InterruptedException {
-        return work.awaitIdle(millis);
+        return run.work().awaitIdle(millis);
     }
 
     /**

@@ -4,7 +4,6 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Map;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.function.Consumer;
@@ -17,16 +16,16 @@ import org.habla.method.Method;
 import org.habla.method.MethodLifecycle;
 import org.habla.method.MethodState;
 import org.habla.method.Output;
-import org.habla.sample.Payload;
+import org.habla.sample.Sample;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * Runs one method on a thread of its own: waits for samples in its input slots, ticks and
- * background results, and hands them to the method one at a time. Because every method has its
- * own thread, a slow method (speech, vision) never holds up a light one. The thread and the order of
- * messages are its {@link MethodScheduler}'s, what the method sees of the engine its {@link RunnerContext}'s;
- * the runner puts them together, ticks the method, and says in the status how it is doing.
+ * Runs one method: takes samples from its input slots, ticks and background results, and hands them to the method
+ * one at a time, on a thread of its own or on the thread that delivers to it, as the graph's {@link ThreadPlan}
+ * chose. A heavy method (speech, vision) has its own thread, so it never holds up a light one. The thread and the
+ * order of messages are its {@link MethodScheduler}'s, what the method sees of the engine its
+ * {@link RunnerContext}'s; the runner puts them together, ticks the method, and says in the status how it is doing.
  */
 final class MethodRunner {
 
@@ -49,17 +48,20 @@ final class MethodRunner {
     static final String TICK_PREFIX = "tick:";
     private final GraphTap tap;
 
+    /** A runner with a thread of its own (a method hosted for a daemon, on a worker). */
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
             WorkCount work, GraphTap tap) {
-        this(id, type, method, clock, backgroundPool, work, tap, java.util.Set.of());
+        this(id, type, method, clock, backgroundPool, work, tap, java.util.Set.of(),
+                ThreadPlan.Choice.own(id, false, "it is hosted alone"));
     }
 
     /**
      * A runner whose inputs named in {@code latestInputs} (the wires of a declared cycle) hold only the newest
-     * sample, whatever delivery the method type asks for.
+     * sample, whatever delivery the method type asks for, and whose messages run where {@code thread} says: on a
+     * thread of its own, or on the thread that delivers to it.
      */
     MethodRunner(String id, String type, Method method, EngineClock clock, ExecutorService backgroundPool,
-            WorkCount work, GraphTap tap, java.util.Set<String> latestInputs) {
+            WorkCount work, GraphTap tap, java.util.Set<String> latestInputs, ThreadPlan.Choice thread) {
         this.tap = tap;
         this.id = id;
         this.type = type;
@@ -67,22 +69,12 @@ final class MethodRunner {
         this.clock = clock;
         for (Input<?> in : method.inputs()) {
             String input = in.name();
-            InputSlot slot = new InputSlot(in, latestInputs.contains(input) ? Delivery.latest() : in.delivery(),
-                    this::wake, work, new InputSlot.Skips() {
-                        @Override
-                        public void skipped(long arrival) {
-                            tap.skipped(id, input, arrival);
-                        }
-
-                        @Override
-                        public boolean skippedWhenRecorded(long arrival) {
-                            return tap.skippedWhenRecorded(id, input, arrival);
-                        }
-                    });
-            slots.add(slot);
+            slots.add(new InputSlot(in, latestInputs.contains(input) ? Delivery.latest() : in.delivery(), taker,
+                    work, arrival -> tap.skipped(id, input, arrival)));
         }
         slotByInput = slots.toArray(InputSlot[]::new);
-        context = new RunnerContext(id, method, clock, backgroundPool, work, new RunnerContext.Turns() {
+        context = new RunnerContext(id, method, clock, thread.light() ? RunnerContext.NO_BACKGROUND : backgroundPool,
+                work, new RunnerContext.Turns() {
             @Override
             public void done(String what, MethodLifecycle.ThrowingRunnable result) {
                 scheduler.turn(() -> lifecycle.runTurn(what, result));
@@ -96,7 +88,9 @@ final class MethodRunner {
         lifecycle = MethodLifecycle.attach(method, context);
         local = new MethodHost.Local(lifecycle, () -> method.tickPeriod()
                 .ifPresent(p -> ticker = clock.every(p.toNanos() / 1_000, this::requestTick)));
-        scheduler = new MethodScheduler(id, slots, clock, work, local);
+        scheduler = thread.inline()
+                ? new InlineScheduler(id, slots, clock, work, local, thread.thread(), thread.reason())
+                : new OwnThreadScheduler(id, slots, clock, work, local, thread.reason());
     }
 
     String id() {
@@ -140,16 +134,6 @@ final class MethodRunner {
         context.bindCommandChannel(output, channel);
     }
 
-    /** The interface channels the inputs read, by input name (for a worker running the method). */
-    Map<String, ChannelDescriptor> channelsByInput() {
-        return context.channelsByInput();
-    }
-
-    /** The interface channels the outputs write, by output name (for a worker running the method). */
-    Map<String, ChannelDescriptor> commandChannelsByOutput() {
-        return context.commandChannelsByOutput();
-    }
-
     /** Marks the outputs stale for {@code cause}, or fresh when it is null. */
     void stale(StaleCause cause) {
         context.stale(cause);
@@ -168,16 +152,34 @@ final class MethodRunner {
         scheduler.followMotionResets(resets);
     }
 
-    /**
-     * Runs the method on a worker: from now on its input samples go to {@code remote} instead of the method
-     * object here, which runs only as the fallback while the worker is lost (if the config asks for one).
-     * Call before {@link #start}.
-     */
-    void placeOn(RemotePlacement remote) {
-        scheduler.host(new MethodHost.OnWorker(id, remote, local));
-        if (!remote.fallsBackToLocal()) {
-            context.startNotReady("waiting for worker " + remote.host());
-        }
+    /** Whether the method runs on the thread that delivers to it. */
+    boolean inline() {
+        return scheduler instanceof InlineScheduler;
+    }
+
+    /** What the method sees of the engine: its ports, channels, readiness. */
+    RunnerContext context() {
+        return context;
+    }
+
+    /** The method object in this daemon, as a host. */
+    MethodHost.Local local() {
+        return local;
+    }
+
+    /** Where the method runs now: in the daemon unless it was moved ({@link #runOn}). */
+    MethodHost host() {
+        return scheduler.host();
+    }
+
+    /** Has the method run on {@code host} instead of here (a worker's placement); before {@link #start}. */
+    void runOn(MethodHost host) {
+        scheduler.host(host);
+    }
+
+    /** Runs {@code turn} on the method's thread, between its messages. From any thread. */
+    void turn(Runnable turn) {
+        scheduler.turn(turn);
     }
 
     boolean ready() {
@@ -186,11 +188,6 @@ final class MethodRunner {
 
     String readinessDetail() {
         return context.readinessDetail();
-    }
-
-    /** The method's readiness, as its worker tells it (see {@link RunnerContext#readiness}). */
-    void readiness(boolean isReady, String detail) {
-        context.readiness(isReady, detail);
     }
 
     long nowMicros() {
@@ -207,19 +204,18 @@ final class MethodRunner {
         scheduler.start();
     }
 
-    /** A slot has a sample: wakes the method's thread. */
-    private void wake() {
-        scheduler.wake();
-    }
+    /** What the slots hand their samples to: the scheduler, made after them. */
+    private final InputSlot.Taker taker = new InputSlot.Taker() {
+        @Override
+        public void wake() {
+            scheduler.wake();
+        }
 
-    /** From the placement, on any thread: the worker was lost and the fallback is to run here. */
-    void fallBackToLocal() {
-        scheduler.turn(() -> {
-            if (scheduler.host() instanceof MethodHost.OnWorker w) {
-                w.fallBack();
-            }
-        });
-    }
+        @Override
+        public boolean takeNow(InputSlot slot, Sample sample, long arrival) {
+            return scheduler.takeNow(slot, sample, arrival);
+        }
+    };
 
     /** Stops the thread, then the method. Waits at most {@code waitMillis} for the current turn. */
     void stop(long waitMillis) {
@@ -237,11 +233,6 @@ final class MethodRunner {
             n += slot.consumedThrough();
         }
         return n;
-    }
-
-    /** A sample the method published on its worker, published here as if the method had emitted it. */
-    void publishFromWorker(Output<?> output, Payload value, long sourceMicros) {
-        context.emit(output, value, sourceMicros);
     }
 
     private void closeTicker() {

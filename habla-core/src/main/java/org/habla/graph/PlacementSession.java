@@ -59,7 +59,8 @@ final class PlacementSession implements ReconnectingLink.Session {
         }
         WorkerProtocol.prove(hello, p.link.secret(), r, writer, p.host());
         writer.send(WorkerProtocol.place(p.config.id(), p.config.type(), p.config.layer().configName(),
-                ParamsJson.write(p.config.params()), p.runner.channelsByInput(), p.runner.commandChannelsByOutput()));
+                ParamsJson.write(p.config.params()), p.runner.context().channelsByInput(),
+                p.runner.context().commandChannelsByOutput()));
         Frame answer = next(r);
         if (!answer.type().equals("placed")) {
             throw new IOException("the worker did not place the method: " + answer.header().path("message")
@@ -127,7 +128,8 @@ final class PlacementSession implements ReconnectingLink.Session {
                 try {
                     Payload value = SampleCodec.value(f, out.kind());
                     p.received.incrementAndGet();
-                    p.runner.publishFromWorker(out, value, f.header().path("t").asLong(0));
+                    // published on the method's own port, as if the method had emitted it here
+                    p.runner.context().emit(out, value, f.header().path("t").asLong(0));
                 } catch (FrameException | RuntimeException e) {
                     badLine(e.getMessage());
                 }
@@ -135,7 +137,7 @@ final class PlacementSession implements ReconnectingLink.Session {
             case "heartbeat" -> {
                 boolean ready = f.header().path("ready").asBoolean(true);
                 String detail = f.header().path("readiness").asText("");
-                p.runner.readiness(ready, detail.isEmpty() ? "" : "on worker " + p.host() + ": " + detail);
+                p.runner.context().readiness(ready, detail.isEmpty() ? "" : "on worker " + p.host() + ": " + detail);
             }
             case "error" -> badLine(f.header().path("code").asText("") + ": " + f.header().path("message").asText(""));
             default -> badLine("an unexpected line of type '" + f.type() + "'");

@@ -16,8 +16,20 @@ final class Producer {
 
     private final String producer;
     private final List<Consumer<Sample>> subscribers = new CopyOnWriteArrayList<>();
+    /** How many subscribers at the head of the list were added ahead of the others. */
+    private int ahead;
     private final AtomicLong sequence = new AtomicLong();
+    /** The newest sample; written with release (readers need only see it soon), read as a volatile. */
     private volatile Sample latest;
+    private static final java.lang.invoke.VarHandle LATEST;
+
+    static {
+        try {
+            LATEST = java.lang.invoke.MethodHandles.lookup().findVarHandle(Producer.class, "latest", Sample.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
     /** Sees every sample before the subscribers do; set while the graph is built, before anything publishes. */
     private Consumer<Sample> first = s -> { };
 
@@ -31,6 +43,15 @@ final class Producer {
 
     void subscribe(Consumer<Sample> subscriber) {
         subscribers.add(subscriber);
+    }
+
+    /**
+     * Adds a subscriber that gets each sample before the ones added by {@link #subscribe} (after the others added
+     * here): a method run on this producer's thread, so a light chain is not kept waiting while other methods'
+     * threads are woken. Called while the graph is built.
+     */
+    void subscribeAhead(Consumer<Sample> subscriber) {
+        subscribers.add(ahead++, subscriber);
     }
 
     void unsubscribe(Consumer<Sample> subscriber) {
@@ -49,7 +70,7 @@ final class Producer {
     Sample publish(Payload payload, long sourceMicros, boolean stale) {
         Sample s = new Sample(payload, producer, sequence.incrementAndGet(), sourceMicros, stale);
         first.accept(s);
-        latest = s;
+        LATEST.setRelease(this, s);
         for (Consumer<Sample> sub : subscribers) {
             sub.accept(s);
         }

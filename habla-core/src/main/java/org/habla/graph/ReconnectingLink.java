@@ -121,6 +121,9 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
         }
     }
 
+    /** How the reader thread of a robot interface's connection is named: then {@code INTERFACE/CONNECTION}. */
+    static final String THREAD_PREFIX = "habla-link-";
+
     private final String threadName;
     private final Supplier<S> sessions;
     private final BackOff backOff;

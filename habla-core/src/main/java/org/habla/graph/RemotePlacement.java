@@ -2,9 +2,12 @@ package org.habla.graph;
 
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.atomic.AtomicLong;
 import org.habla.config.Fallback;
+import org.habla.config.HablaConfig;
 import org.habla.net.Limits;
 import org.habla.config.MethodConfig;
 import org.habla.config.Reconnect;
@@ -76,7 +79,7 @@ final class RemotePlacement {
                     public void flip(boolean nowUp, boolean wasUp, Runnable flip) {
                         if (!nowUp && !fallsBackToLocal()) {
                             // Before the placement reads down: whoever sees it down or the method stale sees why.
-                            runner.readiness(false, "worker " + host() + " is lost");
+                            runner.context().readiness(false, "worker " + host() + " is lost");
                         }
                         flipUnderStates(nowUp, wasUp, flip);
                     }
@@ -91,6 +94,36 @@ final class RemotePlacement {
     /** The worker as the config names it ({@code host:port}). */
     String host() {
         return config.host().orElseThrow();
+    }
+
+    /**
+     * Places every method of {@code config} that names a worker ({@code "host"}) on it: each gets a placement, its
+     * runner hands its samples to the worker from now on ({@link MethodHost.OnWorker}), and a method without a local
+     * fallback is not ready until its worker takes it. The worker link's security is read only when a method is
+     * placed. Nothing connects until {@link #start}.
+     *
+     * @return the placements, by method id, in config order
+     */
+    static Map<String, RemotePlacement> placeAll(HablaConfig config, Map<String, MethodRunner> runners,
+            LinkStates states) {
+        Map<String, RemotePlacement> placed = new LinkedHashMap<>();
+        org.habla.security.WorkerLink link = null;
+        for (MethodConfig mc : config.methods()) {
+            if (mc.host().isEmpty()) {
+                continue;
+            }
+            if (link == null) {
+                link = config.security().workerLink();
+            }
+            MethodRunner runner = runners.get(mc.id());
+            RemotePlacement p = new RemotePlacement(mc, runner, config.limits(), Reconnect.DEFAULTS, states, link);
+            runner.runOn(new MethodHost.OnWorker(mc.id(), p, runner.local()));
+            if (!p.fallsBackToLocal()) {
+                runner.context().startNotReady("waiting for worker " + p.host());
+            }
+            placed.put(mc.id(), p);
+        }
+        return placed;
     }
 
     /** Whether the worker runs the method now. */
@@ -150,7 +183,12 @@ final class RemotePlacement {
     private void lost() {
         outbound.clear();
         if (fallsBackToLocal() && connection.running()) {
-            runner.fallBackToLocal();
+            // On the method's thread, between its messages: the daemon's copy starts there.
+            runner.turn(() -> {
+                if (runner.host() instanceof MethodHost.OnWorker w) {
+                    w.fallBack();
+                }
+            });
         }
     }
 

@@ -5,7 +5,7 @@ import java.util.LinkedHashMap;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.Callable;
-import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executor;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.function.Consumer;
 import org.habla.driver.ChannelDescriptor;
@@ -37,9 +37,18 @@ final class RunnerContext implements MethodContext {
         void failed(String what, Throwable cause);
     }
 
+    /**
+     * The pool of a method of a light type: it refuses every task, since a light method runs on the thread that
+     * delivers to it and a background result would come back on a thread of the pool's.
+     */
+    static final Executor NO_BACKGROUND = task -> {
+        throw new IllegalStateException("a method of a light type runs no background work (its type must not be"
+                + " declared light)");
+    };
+
     private final String id;
     private final EngineClock clock;
-    private final ExecutorService backgroundPool;
+    private final Executor backgroundPool;
     private final WorkCount work;
     private final Turns turns;
     /** The output ports by their output's declaration index ({@link Output#index()}). */
@@ -52,7 +61,7 @@ final class RunnerContext implements MethodContext {
     private volatile String readinessDetail = "";
     private volatile Consumer<ControlNotice> controlNotices = n -> { };
 
-    RunnerContext(String id, Method method, EngineClock clock, ExecutorService backgroundPool, WorkCount work,
+    RunnerContext(String id, Method method, EngineClock clock, Executor backgroundPool, WorkCount work,
             Turns turns) {
         this.id = id;
         this.clock = clock;
@@ -190,6 +199,9 @@ final class RunnerContext implements MethodContext {
         } catch (RejectedExecutionException e) {
             work.end();
             LOG.debug("background work '{}' of {} refused: the engine is stopping", what, id);
+        } catch (RuntimeException e) {
+            work.end();
+            throw e; // a light method's: it fails, saying why
         }
     }
 }

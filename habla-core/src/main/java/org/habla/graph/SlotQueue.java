@@ -27,8 +27,17 @@ final class SlotQueue<T> {
     private final AtomicLongArray ready;
     /** The next position a producer claims. */
     private final AtomicLong tail = new AtomicLong();
-    /** The next position the consumer takes; written by the consumer only. */
+    /** The next position the consumer takes; written by the consumer only, with release (see {@link #poll}). */
     private volatile long head;
+    private static final java.lang.invoke.VarHandle HEAD;
+
+    static {
+        try {
+            HEAD = java.lang.invoke.MethodHandles.lookup().findVarHandle(SlotQueue.class, "head", long.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
 
     SlotQueue(int capacity) {
         if (capacity < 1) {
@@ -77,7 +86,9 @@ final class SlotQueue<T> {
         T value = cells.getPlain(cell);
         cells.setPlain(cell, null);
         ready.setRelease(cell, pos + ring);
-        head = pos + 1;
+        // Release, not a full fence: a producer that reads an older head only finds the queue a place fuller for a
+        // moment, as it would had it looked a moment earlier; the consumer reads its own writes.
+        HEAD.setRelease(this, pos + 1);
         return value;
     }
 

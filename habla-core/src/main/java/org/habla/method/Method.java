@@ -55,9 +55,15 @@ import org.slf4j.LoggerFactory;
  *
  * <h2>Threading contract</h2>
  * The engine hands a method one message at a time — a sample, a tick or the result of background
- * work — never two at once, so method code needs no locks: keep state in plain fields. Method code
- * never sleeps, never starts a thread and never opens a socket; slow work goes through
- * {@link #background}, periodic work through {@link #tickEvery}, time through {@link #nowMicros}.
+ * work — each after the previous one has returned, so method code needs no locks: keep state in plain
+ * fields. Method code never sleeps, never starts a thread and never opens a socket; slow work goes
+ * through {@link #background}, periodic work through {@link #tickEvery}, time through {@link #nowMicros}.
+ * Which thread hands over the messages is the engine's choice: a method's own, or, for a method of a
+ * light type ({@code MethodProvider.light}) fed from one thread, that thread, which runs it and the
+ * light methods after it in one pass. So {@link #emit} may return after the light methods downstream
+ * have handled the value; a value that comes back to the method while it handles waits in its input
+ * until the handler returns. Inputs keep their delivery ({@code latest}, {@code queue}) either way. A
+ * light type takes microseconds, asks for no ticks (refused when made) and no background work (fails).
  *
  * <h2>Life cycle</h2>
  * The engine owns it, through a {@link MethodLifecycle} that a method never sees:

@@ -81,7 +81,11 @@ public final class MethodLifecycle {
             return;
         }
         method.currentSourceMicros = sample.sourceMicros();
-        guard("handle a sample of " + input.name(), () -> dispatch(input, sample));
+        try {
+            dispatch(input, sample); // not through guard: no words are made for a sample that is handled
+        } catch (Exception | LinkageError | AssertionError e) {
+            markFailed("handle a sample of " + input.name(), e);
+        }
     }
 
     /** A tick, if the method is running. */

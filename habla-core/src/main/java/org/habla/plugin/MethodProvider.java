@@ -34,6 +34,19 @@ public interface MethodProvider<P extends Record> {
      */
     Ports ports(Layer layer, P params);
 
+    /**
+     * Whether methods of this type are light: each handles a message in microseconds, never blocks (no I/O, no
+     * waiting, no sleeping), asks for no ticks and runs no background work. The engine may then run a method of
+     * the type on the thread that delivers to it, with the methods after it, instead of on a thread of its own
+     * (docs/architecture.md, "Threads"); a method that writes interface commands, runs on a worker, or is fed from
+     * more than one thread keeps its own thread whatever its type says. {@link #make} refuses a light type's method
+     * that asks for ticks, and the engine fails one that asks for background work. Most types are not: false by
+     * default.
+     */
+    default boolean light() {
+        return false;
+    }
+
     /** A new method for {@code layer} (one of {@link #layers()}) with validated params. Cheap: no I/O. */
     Method create(Layer layer, P params);
 
@@ -41,7 +54,8 @@ public interface MethodProvider<P extends Record> {
      * A new method of {@code provider}'s type, checked: it is of {@code layer} and binds exactly the ports
      * the type lists for these params. The engine makes every method through here.
      *
-     * @throws IllegalStateException if the method made is of another layer or binds other ports
+     * @throws IllegalStateException if the method made is of another layer or binds other ports, or is of a
+     *                               {@link #light} type and asks for ticks
      */
     static <P extends Record> Method make(MethodProvider<P> provider, Layer layer, Record params) {
         P p = provider.paramsType().cast(params);
@@ -54,6 +68,10 @@ public interface MethodProvider<P extends Record> {
         if (!differences.isEmpty()) {
             throw new IllegalStateException("method type '" + provider.name() + "' made a method whose ports are"
                     + " not the ones it lists: " + String.join("; ", differences));
+        }
+        if (provider.light() && made.tickPeriod().isPresent()) {
+            throw new IllegalStateException("method type '" + provider.name() + "' is light, so its methods run on"
+                    + " the thread that delivers to them, and cannot ask for ticks; declare it not light");
         }
         return made;
     }

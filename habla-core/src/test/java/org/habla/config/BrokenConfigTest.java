@@ -93,6 +93,7 @@ class BrokenConfigTest {
         worker-beyond-loopback-without-secret | $.methods[0].host           | worker 10.0.0.21:7600 is beyond loopback, where a worker requires the shared secret
         fallback-without-host             | $.methods[1].fallback           | a fallback needs a "host": it says what to do while that worker is lost
         fallback-unknown                  | $.methods[1].fallback           | 'remote' is not a fallback (write none or local)
+        thread-unknown                    | $.methods[1].thread             | 'shared' is not a thread choice (write auto or own)
         expose-port-missing               | $.methods[0].expose.port        | required key 'port' is missing
         source-without-dot                | $.methods[1].inputs.ranges      | 'sonar' has no '.': write "methodId.output", "@interfaceId.channel" or "control"
         control-without-expose            | $.methods[0].inputs.action      | 'control' needs a control socket: give the method an 'expose'

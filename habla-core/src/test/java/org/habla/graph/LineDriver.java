@@ -32,9 +32,16 @@ import org.habla.sample.PayloadKind;
 final class LineDriver implements Driver {
 
     private final int port;
+    /** Whether a second connection ({@code aux}, on the next port) brings readings too. */
+    private final boolean pair;
 
     LineDriver(int port) {
+        this(port, false);
+    }
+
+    LineDriver(int port, boolean pair) {
         this.port = port;
+        this.pair = pair;
     }
 
     @Override
@@ -45,7 +52,9 @@ final class LineDriver implements Driver {
 
     @Override
     public List<Connection> connections() {
-        return List.of(new Connection("main", port, Set.of("motor"), Liveness.quiet(), Session::new));
+        Connection main = new Connection("main", port, Set.of("motor"), Liveness.quiet(), Session::new);
+        return pair ? List.of(main, new Connection("aux", port + 1, Set.of(), Liveness.quiet(), Session::new))
+                : List.of(main);
     }
 
     static String readLine(InputStream in) throws IOException {
@@ -142,6 +151,29 @@ final class LineDriver implements Driver {
         @Override
         public Driver create(InterfaceAddress address, NoParams params) {
             return new LineDriver(address.portOr(1));
+        }
+    }
+
+    /** The same protocol over two connections, {@code main} and {@code aux} (for tests of what two readers change). */
+    static final class PairProvider implements DriverProvider<NoParams> {
+        @Override
+        public String name() {
+            return "lines-test-pair";
+        }
+
+        @Override
+        public String description() {
+            return "test line protocol over two connections";
+        }
+
+        @Override
+        public Class<NoParams> paramsType() {
+            return NoParams.class;
+        }
+
+        @Override
+        public Driver create(InterfaceAddress address, NoParams params) {
+            return new LineDriver(address.portOr(1), true);
         }
     }
 }

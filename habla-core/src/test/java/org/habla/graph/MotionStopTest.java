@@ -63,7 +63,7 @@ class MotionStopTest {
              "methods": [
               {"id": "cmd", "type": "command-virtual", "layer": "virtual", "inputs": {"in": "control"},
                "expose": {"port": 7001, "name": "cmd"}},
-              {"id": "dedupe", "type": "changes-only", "layer": "processing", "inputs": {"in": "cmd.out"}},
+              {"id": "dedupe", "type": "%s", "layer": "processing", "inputs": {"in": "cmd.out"}},
               {"id": "act", "type": "forward-actuator", "layer": "sensors_actuators", "inputs": {"in": "dedupe.out"},
                "commands": {"out": "@robot.motor"}}]}
             """;
@@ -81,12 +81,20 @@ class MotionStopTest {
         PluginRegistry base = TestMethods.registry();
         List<org.habla.plugin.MethodProvider<?>> methods = new ArrayList<>(base.methods().values());
         methods.add(new TestMethods.Simple("changes-only", Layer.PROCESSING, TestMethods.relay(64), ChangesOnly::new));
+        methods.add(new TestMethods.Simple("changes-only-light", Layer.PROCESSING, TestMethods.relay(64),
+                ChangesOnly::new, true));
         return PluginRegistry.of(methods, List.of(new LineDriver.Provider()));
     }
 
     private MethodGraph start(FakeLineRobot robot, long watchdogMs) throws Exception {
+        return start(robot, watchdogMs, "changes-only");
+    }
+
+    /** The graph with {@code dedupeType} between the command and the actuator. */
+    private MethodGraph start(FakeLineRobot robot, long watchdogMs, String dedupeType) throws Exception {
         PluginRegistry registry = registry();
-        MethodGraph g = MethodGraph.build(new ConfigLoader(registry).parse(CONFIG.formatted(watchdogMs, robot.port())),
+        MethodGraph g = MethodGraph.build(new ConfigLoader(registry).parse(CONFIG.formatted(watchdogMs, robot.port(),
+                        dedupeType)),
                 registry, EngineClock.system());
         toClose.add(g);
         g.start();
@@ -122,6 +130,23 @@ class MotionStopTest {
         assertThat(robot.next(5_000)).isEqualTo("stop");
         write(cmd(g), 0.5);
         assertThat(robot.next(5_000)).as("the method on the way forgot what it sent before the stop")
+                .isEqualTo("cmd motor 0.5");
+    }
+
+    @Test
+    void aLightMethodOnTheMotionPathRunsOnTheCommandsThreadAndForgetsItsMotionAfterATrip() throws Exception {
+        FakeLineRobot robot = new FakeLineRobot(0);
+        toClose.add(robot);
+        MethodGraph g = start(robot, 0, "changes-only-light");
+        JsonNode dedupe = g.status().path("methods").get(1);
+        assertThat(dedupe.path("thread").path("inline").asBoolean()).isTrue();
+        assertThat(dedupe.path("thread").path("name").asText()).isEqualTo("habla-method-cmd");
+        write(cmd(g), 0.5);
+        assertThat(robot.next(5_000)).isEqualTo("cmd motor 0.5");
+        cmd(g).writerLeft();
+        assertThat(robot.next(5_000)).isEqualTo("stop");
+        write(cmd(g), 0.5);
+        assertThat(robot.next(5_000)).as("the light method forgot what it sent before the stop")
                 .isEqualTo("cmd motor 0.5");
     }
 

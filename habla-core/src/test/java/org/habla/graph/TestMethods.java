@@ -159,6 +159,48 @@ final class TestMethods {
         }
     }
 
+    /** Adds what comes in on {@code a} and on {@code b}, each sample as it comes, to a running sum. */
+    static final class SumProcessing extends ProcessingMethod {
+        static final InputPort<NumberValue> A = InputPort.of("a", NumberValue.class, Delivery.queue(64));
+        static final InputPort<NumberValue> B = InputPort.of("b", NumberValue.class, Delivery.queue(64));
+        static final Ports PORTS = Ports.of(A, B, OUT);
+        final Output<NumberValue> out = output(OUT);
+        private double sum;
+
+        SumProcessing() {
+            input(A, this::on);
+            input(B, this::on);
+        }
+
+        private void on(NumberValue v, Sample s) {
+            sum += v.value();
+            emit(out, new NumberValue(sum));
+        }
+    }
+
+    /** Counts the link records it is handed. */
+    static final class LinkCounter extends SensorActuatorMethod {
+        static final InputPort<org.habla.sample.RecordValue> LINK =
+                InputPort.of("link", org.habla.sample.RecordValue.class);
+        static final Ports PORTS = Ports.of(LINK, COUNT);
+        final Output<NumberValue> count = output(COUNT);
+        private int n;
+
+        LinkCounter() {
+            input(LINK, (v, s) -> emit(count, new NumberValue(++n)));
+        }
+    }
+
+    /** Hands every number to background work, and emits it when the work is done. */
+    static final class Backgrounder extends ProcessingMethod {
+        final Output<NumberValue> out = output(OUT);
+        final Input<NumberValue> in = input(in(16), this::on);
+
+        private void on(NumberValue v, Sample s) {
+            background("echo", () -> v, done -> emit(out, done));
+        }
+    }
+
     /** Throws on a negative number. */
     static final class Fragile extends ProcessingMethod {
         final Output<NumberValue> out = output(OUT);
@@ -172,8 +214,14 @@ final class TestMethods {
         }
     }
 
-    record Simple(String name, Layer layer, Ports listed, java.util.function.Supplier<Method> make)
+    /** A test type; {@code light} ones may run on the thread that delivers to them. */
+    record Simple(String name, Layer layer, Ports listed, java.util.function.Supplier<Method> make, boolean light)
             implements MethodProvider<NoParams> {
+
+        Simple(String name, Layer layer, Ports listed, java.util.function.Supplier<Method> make) {
+            this(name, layer, listed, make, false);
+        }
+
         @Override
         public String description() {
             return "test method " + name;
@@ -212,7 +260,16 @@ final class TestMethods {
                         SlowProcessing::new),
                 new Simple("gated-virtual", Layer.VIRTUAL, relay(64), GatedVirtual::new),
                 new Simple("ticker", Layer.PROCESSING, Ports.of(COUNT), Ticker::new),
-                new Simple("fragile", Layer.PROCESSING, relay(16), Fragile::new)),
-                List.of(new LineDriver.Provider()));
+                new Simple("fragile", Layer.PROCESSING, relay(16), Fragile::new),
+                new Simple("add-one-sensor-light", Layer.SENSORS_ACTUATORS, relay(4096), AddOneSensor::new, true),
+                new Simple("add-one-processing-light", Layer.PROCESSING, relay(4096), AddOneProcessing::new, true),
+                new Simple("add-one-virtual-light", Layer.VIRTUAL, relay(4096), AddOneVirtual::new, true),
+                new Simple("forward-processing-light", Layer.PROCESSING, relay(64), ForwardProcessing::new, true),
+                new Simple("fragile-light", Layer.PROCESSING, relay(16), Fragile::new, true),
+                new Simple("ticker-light", Layer.PROCESSING, Ports.of(COUNT), Ticker::new, true),
+                new Simple("sum-light", Layer.PROCESSING, SumProcessing.PORTS, SumProcessing::new, true),
+                new Simple("background-light", Layer.PROCESSING, relay(16), Backgrounder::new, true),
+                new Simple("link-counter-light", Layer.SENSORS_ACTUATORS, LinkCounter.PORTS, LinkCounter::new, true)),
+                List.of(new LineDriver.Provider(), new LineDriver.PairProvider()));
     }
 }

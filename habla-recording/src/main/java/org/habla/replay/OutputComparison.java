@@ -5,7 +5,6 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.zip.CRC32;
 import org.habla.graph.GraphTap;
 import org.habla.net.Frame;
@@ -27,32 +26,13 @@ public final class OutputComparison implements GraphTap {
     private final Map<String, List<String>> recorded = new LinkedHashMap<>();
     private final Map<String, List<String>> replayed = new LinkedHashMap<>();
 
-    private final Map<String, Set<Long>> recordedSkips;
-
     OutputComparison(GraphTap next) {
-        this(next, Map.of());
-    }
-
-    /** A comparison whose graph skips the samples {@code recordedSkips} lists, by {@link #inputKey}. */
-    OutputComparison(GraphTap next, Map<String, Set<Long>> recordedSkips) {
         this.next = next;
-        this.recordedSkips = recordedSkips;
-    }
-
-    /** The key of one method's input in a map of recorded skips. */
-    static String inputKey(String method, String input) {
-        return method + "." + input;
     }
 
     @Override
     public void skipped(String methodId, String input, long arrival) {
         next.skipped(methodId, input, arrival);
-    }
-
-    @Override
-    public boolean skippedWhenRecorded(String methodId, String input, long arrival) {
-        Set<Long> skipped = recordedSkips.get(inputKey(methodId, input));
-        return skipped != null && skipped.contains(arrival);
     }
 
     /** A value's wire form: its JSON fields, and a checksum of its binary block if it has one. */

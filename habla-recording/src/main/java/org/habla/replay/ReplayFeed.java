@@ -56,7 +56,7 @@ final class ReplayFeed {
             }
             case RecordedEvent.Dropped d -> recordedDrops = d.total();
             case RecordedEvent.Audit a -> { } // who drove: nothing to run again
-            case RecordedEvent.Skip s -> { } // read before the replay began (OutputComparison.skippedWhenRecorded)
+            case RecordedEvent.Skip s -> { } // read before the replay began (the graph's RecordedSkips)
             case RecordedEvent.End x -> complete = true;
             case RecordedEvent.Reading r -> {
                 advance(r.t());

@@ -17,6 +17,7 @@ import org.habla.config.HablaConfig;
 import org.habla.config.Source;
 import org.habla.daemon.Daemon;
 import org.habla.graph.GraphTap;
+import org.habla.graph.RecordedSkips;
 import org.habla.recording.Cut;
 import org.habla.recording.RecordedEvent;
 import org.habla.recording.Recorder;
@@ -106,8 +107,7 @@ public final class Replayer {
                 ticks |= e instanceof RecordedEvent.Tick;
                 if (e instanceof RecordedEvent.Skip s) {
                     // known before the replay starts: a skip is recorded after the sample it skips was offered
-                    skips.computeIfAbsent(OutputComparison.inputKey(s.method(), s.input()), k -> new HashSet<>())
-                            .add(s.arrival());
+                    skips.computeIfAbsent(inputKey(s.method(), s.input()), k -> new HashSet<>()).add(s.arrival());
                 }
             }
             cut = r.cut();
@@ -135,6 +135,11 @@ public final class Replayer {
             }
         }
         return new Replayer(file, header, config, registry, ticks, cut, skips);
+    }
+
+    /** The key of one method's input in the map of recorded skips. */
+    private static String inputKey(String method, String input) {
+        return method + "." + input;
     }
 
     /** Where the recording stops being readable, if it does: a torn end, or damage being salvaged. */
@@ -165,8 +170,10 @@ public final class Replayer {
             recorder = Recorder.create(recordTo.get(), new RecordingHeader(header.startMicros(), header.timeScale(),
                     header.config(), header.configDir(), header.interfaces()), clock);
         }
-        OutputComparison comparison = new OutputComparison(recorder == null ? GraphTap.NONE : recorder, skips);
-        Daemon daemon = Daemon.replaying(config, registry, clock, comparison, header.interfaces());
+        OutputComparison comparison = new OutputComparison(recorder == null ? GraphTap.NONE : recorder);
+        RecordedSkips recordedSkips = (method, input, arrival) ->
+                skips.getOrDefault(inputKey(method, input), Set.of()).contains(arrival);
+        Daemon daemon = Daemon.replaying(config, registry, clock, comparison, header.interfaces(), recordedSkips);
         try (RecordingSource reader = RecordingSource.open(file)) {
             onStarted.accept(daemon);
             ReplayFeed feed = new ReplayFeed(daemon.graph(), clock, options, recordedTicks, header.startMicros());

@@ -120,7 +120,7 @@ class RecordAndReplayTest {
     }
 
     private static String config(int robotPort) throws java.io.IOException {
-        int[] ports = org.habla.testing.DaemonProcess.freePorts(4);
+        int[] ports = org.habla.testing.DaemonProcess.freePorts(5);
         return """
                 {"system": "replay-test", "safety": {"watchdogMs": 0}, "status": {"port": 0},
                  "interfaces": [{"id": "robot", "driver": "lines-test", "address": "127.0.0.1:%d",
@@ -132,14 +132,18 @@ class RecordAndReplayTest {
                     "expose": {"port": %d, "name": "v"}},
                    {"id": "cmd", "type": "command-virtual", "layer": "virtual", "inputs": {"in": "control"},
                     "expose": {"port": %d, "name": "cmd"}},
-                   {"id": "fwd", "type": "forward-processing", "layer": "processing", "inputs": {"in": "cmd.out"}},
+                   {"id": "fwd", "type": "forward-processing-light", "layer": "processing", "inputs": {"in": "cmd.out"}},
                    {"id": "act", "type": "forward-actuator", "layer": "sensors_actuators", "inputs": {"in": "fwd.out"},
                     "commands": {"out": "@robot.motor"}},
                    {"id": "ticks", "type": "tick-counter", "layer": "virtual", "expose": {"port": %d, "name": "ticks"}},
                    {"id": "hold", "type": "hold", "layer": "virtual", "inputs": {"in": "p.out"},
-                    "expose": {"port": %d, "name": "hold"}}
+                    "expose": {"port": %d, "name": "hold"}},
+                   {"id": "ls", "type": "add-one-sensor-light", "layer": "sensors_actuators", "inputs": {"in": "@robot.value"}},
+                   {"id": "lp", "type": "add-one-processing-light", "layer": "processing", "inputs": {"in": "ls.out"}},
+                   {"id": "lv", "type": "add-one-virtual-light", "layer": "virtual", "inputs": {"in": "lp.out"},
+                    "expose": {"port": %d, "name": "lv"}}
                  ]}
-                """.formatted(robotPort, ports[0], ports[1], ports[2], ports[3]);
+                """.formatted(robotPort, ports[0], ports[1], ports[2], ports[3], ports[4]);
     }
 
     @Test
@@ -163,6 +167,9 @@ class RecordAndReplayTest {
                     }
                 }
                 await(() -> outputs(daemon, "v", "out") == 40, "every reading reaches the exposed method");
+                await(() -> outputs(daemon, "lv", "out") == 40, "every reading runs through the light chain");
+                assertThat(inline(daemon, "lv")).as("the light chain runs on the link's reader").isTrue();
+                assertThat(inline(daemon, "fwd")).as("a light method after the control socket's").isTrue();
                 // The timed methods ran a few times in the live run, however busy the machine.
                 await(() -> outputs(daemon, "ticks", "count") > 3, "the ticker ticks four times");
                 await(() -> outputs(daemon, "hold", "held") > 5, "the hold method ticks six times");
@@ -186,6 +193,9 @@ class RecordAndReplayTest {
         StreamMatch values = result.stream("v.out").orElseThrow();
         assertThat(values.recorded()).isEqualTo(40);
         assertThat(values.matches()).as(values.toString()).isTrue();
+        StreamMatch light = result.stream("lv.out").orElseThrow();
+        assertThat(light.recorded()).isEqualTo(40);
+        assertThat(light.matches()).as(light.toString()).isTrue();
         StreamMatch echoes = result.stream("cmd.out").orElseThrow();
         assertThat(echoes.recorded()).isEqualTo(10);
         assertThat(echoes.matches()).as(echoes.toString()).isTrue();
@@ -289,6 +299,15 @@ class RecordAndReplayTest {
             }
         }
         return 0;
+    }
+
+    private static boolean inline(Daemon d, String method) {
+        for (var m : d.status().path("methods")) {
+            if (m.path("id").asText().equals(method)) {
+                return m.path("thread").path("inline").asBoolean();
+            }
+        }
+        return false;
     }
 
     private static long outputs(Daemon d, String method, String output) {

@@ -67,7 +67,7 @@ public final class Benchmarks {
         }
         if (list.contains("isolation")) {
             new IsolationBench(seconds, option(list, "--rounds", 3), list.contains("--without-heavy"),
-                    option(list, "--realtime", -1)).run();
+                    option(list, "--realtime", -1), list.contains("--own-threads")).run();
         }
         if (list.contains("aibo-speech")) {
             int at2 = list.indexOf("--config");

@@ -41,6 +41,8 @@ final class IsolationBench {
     private final int rounds;
     private final boolean withoutHeavy;
     private final int realtime;
+    /** Whether the light chain's methods each get a thread of their own ({@code "thread": "own"}). */
+    private final boolean ownThreads;
     /** Method types config/aibo.json runs that count as heavy: their work runs on the background threads. */
     private static final Set<String> HEAVY = Set.of("speech-recognition", "image-segmentation");
 
@@ -69,6 +71,12 @@ final class IsolationBench {
      *                     daemon's options file's and normal scheduling for the benchmark's own threads
      */
     IsolationBench(int seconds, int rounds, boolean withoutHeavy, int realtime) {
+        this(seconds, rounds, withoutHeavy, realtime, false);
+    }
+
+    /** @param ownThreads give each method of the light chain a thread of its own, instead of its link's reader */
+    IsolationBench(int seconds, int rounds, boolean withoutHeavy, int realtime, boolean ownThreads) {
+        this.ownThreads = ownThreads;
         this.seconds = seconds;
         this.rounds = rounds;
         this.withoutHeavy = withoutHeavy;
@@ -76,9 +84,10 @@ final class IsolationBench {
     }
 
     void run() throws Exception {
-        System.out.printf("%n(k) a light 1 kHz chain alone and beside the Aibo's speech and vision, %d rounds of %d s%s%n",
+        System.out.printf("%n(k) a light 1 kHz chain alone and beside the Aibo's speech and vision, %d rounds of %d s%s%s%n",
                 rounds, seconds, realtime < 0 ? "" : realtime == 0 ? ", normal scheduling everywhere"
-                        : ", robot, daemon and client real-time at priority " + realtime);
+                        : ", robot, daemon and client real-time at priority " + realtime,
+                ownThreads ? ", each light method on its own thread" : ", the light chain on its link's reader");
         if (realtime >= 0) {
             System.setProperty(RealtimeThreads.PROPERTY, Integer.toString(realtime)); // the robot's and client's threads
         }
@@ -111,7 +120,7 @@ final class IsolationBench {
         }
     }
 
-    private static LatencyBench.Figures round(LatencyBench latency, int r, Setup setup) throws Exception {
+    private LatencyBench.Figures round(LatencyBench latency, int r, Setup setup) throws Exception {
         return latency.measure("round " + r + ": " + setup.label, robot -> rig(robot.port(), setup),
                 IsolationBench::accounting);
     }
@@ -197,7 +206,7 @@ final class IsolationBench {
     }
 
     /** A daemon process with the light chain, alone or in config/aibo.json beside the simulated Aibo. */
-    private static LatencyBench.Path rig(int robotPort, Setup setup) throws Exception {
+    private LatencyBench.Path rig(int robotPort, Setup setup) throws Exception {
         boolean aibo = setup != Setup.ALONE;
         Path dir = Files.createTempDirectory("habla-isolation");
         int offset = PortBlock.freeOffset();
@@ -220,7 +229,8 @@ final class IsolationBench {
         ((ArrayNode) root.get("interfaces")).add(JSON.readTree("""
                 {"id": "bench", "driver": "habla", "address": "127.0.0.1:%d", "params": {"channels": %s}}
                 """.formatted(robotPort, BenchRobot.CHANNELS_JSON)));
-        String relay = "\"params\": {\"kind\": \"number\", \"delivery\": \"queue\", \"capacity\": 4096}";
+        String relay = "\"params\": {\"kind\": \"number\", \"delivery\": \"queue\", \"capacity\": 4096}"
+                + (ownThreads ? ", \"thread\": \"own\"" : "");
         ArrayNode methods = (ArrayNode) root.get("methods");
         methods.add(JSON.readTree("{\"id\": \"bench-s\", \"type\": \"channel\", \"layer\": \"sensors_actuators\","
                 + " \"inputs\": {\"in\": \"@bench.value\"}, " + relay + "}"));

@@ -7,7 +7,8 @@ import org.habla.daemon.Daemon;
 
 /**
  * Benchmark (a): end-to-end latency of one reading through the daemon over loopback, from the moment the
- * robot stamps it to the moment a control client has parsed it, with readings at a fixed rate; and the
+ * robot stamps it to the moment a control client has parsed it, with readings at a fixed rate — the light chains
+ * as the engine runs them (on the robot link's reader thread) and with each method on a thread of its own; and the
  * same hops through {@link PlainRelay}, on one thread and with four thread hand-offs (as many as the
  * daemon's path: link reader → three method threads → the client's writer), the latter also with its
  * socket reader and writer on virtual threads as in the daemon, as the floor. The Pioneer's obstacle chain runs
@@ -38,22 +39,35 @@ final class LatencyBench {
             Daemon d = BenchDaemon.start(robot.port());
             return new Path(d.port("value"), d::close);
         };
+        PathFactory numbersOwn = robot -> {
+            Daemon d = BenchDaemon.startOwnThreads(robot.port());
+            return new Path(d.port("value"), d::close);
+        };
         PathFactory sonar = robot -> {
             Daemon d = BenchDaemon.startSonarChain(robot.port());
+            return new Path(d.port("value"), d::close);
+        };
+        PathFactory sonarOwn = robot -> {
+            Daemon d = BenchDaemon.startSonarChain(robot.port(), true);
             return new Path(d.port("value"), d::close);
         };
         System.out.printf("(JIT warm-up: each daemon path runs %d s unmeasured first, so that no path is measured "
                 + "while the compiler still works on the engine's code)%n", JIT_WARMUP_S);
         LatencyBench warmUp = new LatencyBench(rateHz, JIT_WARMUP_S, 0);
         warmUp.quietly(numbers, BenchRobot.Channels.NUMBER);
+        warmUp.quietly(numbersOwn, BenchRobot.Channels.NUMBER);
         warmUp.quietly(sonar, BenchRobot.Channels.SONAR);
-        measure("daemon: channel -> pass-through x2", numbers);
-        measure("daemon: sonar -> nearest-distance -> relay", BenchRobot.Channels.SONAR, sonar, null);
-        measure("plain relay, 1 thread", robot -> {
+        warmUp.quietly(sonarOwn, BenchRobot.Channels.SONAR);
+        Figures chain = measure("daemon: channel -> pass-through x2", numbers);
+        Figures chainOwn = measure("  the same, each method on its own thread", numbersOwn);
+        Figures sonarChain = measure("daemon: sonar -> nearest-distance -> relay", BenchRobot.Channels.SONAR, sonar, null);
+        Figures sonarChainOwn = measure("  the same, each method on its own thread", BenchRobot.Channels.SONAR,
+                sonarOwn, null);
+        Figures relay1 = measure("plain relay, 1 thread", robot -> {
             PlainRelay r = new PlainRelay(robot.port(), 0, false);
             return new Path(r.port(), r::close);
         });
-        measure("plain relay, 4 thread hand-offs", robot -> {
+        Figures relay4 = measure("plain relay, 4 thread hand-offs", robot -> {
             PlainRelay r = new PlainRelay(robot.port(), 4, false);
             return new Path(r.port(), r::close);
         });
@@ -61,6 +75,17 @@ final class LatencyBench {
             PlainRelay r = new PlainRelay(robot.port(), 4, true);
             return new Path(r.port(), r::close);
         });
+        System.out.println("  ratios to the plain relay on 1 thread (p50 / p99), and to the one with 4 hand-offs:");
+        ratios("daemon: channel -> pass-through x2", chain, relay1, relay4);
+        ratios("  the same, own threads", chainOwn, relay1, relay4);
+        ratios("daemon: sonar -> nearest-distance -> relay", sonarChain, relay1, relay4);
+        ratios("  the same, own threads", sonarChainOwn, relay1, relay4);
+    }
+
+    private static void ratios(String name, Figures f, Figures relay1, Figures relay4) {
+        System.out.printf("  %-44s %5.2f / %5.2f   %5.2f / %5.2f%n", name, f.p50() / (double) Math.max(1, relay1.p50()),
+                f.p99() / (double) Math.max(1, relay1.p99()), f.p50() / (double) Math.max(1, relay4.p50()),
+                f.p99() / (double) Math.max(1, relay4.p99()));
     }
 
     /** What the client connects to, how to take it down, and how the client connects (plain by default). */

@@ -16,9 +16,10 @@ import org.habla.sample.Sample;
  * Benchmark (b): samples per second through a chain of three methods in one process, no sockets:
  * a producer thread writes numbers into a virtual method's control input; they pass
  * {@code pass-through} (virtual) → {@code pass-through} (processing) → {@code pass-through} (virtual),
- * every input a bounded queue, each method on its own thread; a listener counts what leaves the last
- * one. A write the first queue refuses (full) is retried, so nothing is lost and the rate is what the
- * chain sustains.
+ * every input a bounded queue; a listener counts what leaves the last one. A write the first queue refuses
+ * (full) is retried, so nothing is lost and the rate is what the chain sustains. The first method has a thread of
+ * its own (control clients write to it), and the two light ones after it run on that thread; then the same chain
+ * with each method on a thread of its own ({@code "thread": "own"}).
  */
 final class ThroughputBench {
 
@@ -33,7 +34,14 @@ final class ThroughputBench {
     void run() throws Exception {
         System.out.printf("%n(b) in-process throughput, 3-method chain on queue inputs (capacity 4096), %d s warm-up, %d s measured%n",
                 warmupS, seconds);
-        String relay = "\"params\": {\"kind\": \"number\", \"delivery\": \"queue\", \"capacity\": 4096}";
+        chain("the two light methods on the first one's thread", "");
+        chain("each method on its own thread", ", \"thread\": \"own\"");
+    }
+
+    /** One chain, each method's entry ending with {@code thread}. */
+    private void chain(String label, String thread) throws Exception {
+        System.out.printf("  %s:%n", label);
+        String relay = "\"params\": {\"kind\": \"number\", \"delivery\": \"queue\", \"capacity\": 4096}" + thread;
         String json = """
                 {"system": "bench-throughput", "status": {"port": 0},
                  "methods": [
@@ -76,9 +84,9 @@ final class ThroughputBench {
                 long f1 = refused.sum();
                 long cpu1 = processCpuNanos();
                 double s = (System.nanoTime() - t0) / 1e9;
-                System.out.printf("  %,.0f samples/s through the chain (%,d in %.1f s); the producer found the first queue full %,d times%n",
+                System.out.printf("    %,.0f samples/s through the chain (%,d in %.1f s); the producer found the first queue full %,d times%n",
                         (r1 - r0) / s, r1 - r0, s, f1 - f0);
-                System.out.printf("  processor time of the whole process per sample: %.2f µs (less sensitive to other processes than the rate)%n",
+                System.out.printf("    processor time of the whole process per sample: %.2f µs (less sensitive to other processes than the rate)%n",
                         (cpu1 - cpu0) / 1e3 / Math.max(1, r1 - r0));
             } finally {
                 producer.interrupt();

@@ -38,5 +38,11 @@ public final class ChannelReader extends SensorActuatorMethod {
             super("channel", "Hands the readings of one interface channel to the processing layer unchanged",
                     RelayParams.class, RelayPorts::ports, (layer, p) -> new ChannelReader(p), Layer.SENSORS_ACTUATORS);
         }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
+        }
     }
 }

@@ -72,5 +72,11 @@ public final class PassThrough {
                     RelayParams.class, RelayPorts::ports, PassThrough::create,
                     Layer.SENSORS_ACTUATORS, Layer.PROCESSING, Layer.VIRTUAL);
         }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
+        }
     }
 }

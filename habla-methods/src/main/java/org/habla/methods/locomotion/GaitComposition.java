@@ -74,5 +74,11 @@ public final class GaitComposition extends ProcessingMethod {
             super("gait-composition", "Turns a planar motion [v, w] into a walk [forward, strafe, rotate] within the walk limits",
                     GaitCompositionParams.class, PORTS, (layer, p) -> new GaitComposition(p), Layer.PROCESSING);
         }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
+        }
     }
 }

@@ -180,5 +180,11 @@ public final class NearestDistance extends ProcessingMethod {
             super("nearest-distance", "The nearest obstacle of one or more range scans, and the nearest ahead and behind",
                     NearestDistanceParams.class, PORTS, (layer, p) -> new NearestDistance(p), Layer.PROCESSING);
         }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
+        }
     }
 }

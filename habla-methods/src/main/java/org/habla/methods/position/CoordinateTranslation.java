@@ -200,5 +200,11 @@ public final class CoordinateTranslation extends ProcessingMethod {
                     "Places the target in the robot frame (and the world frame) from a range reading or a camera blob",
                     CoordinateTranslationParams.class, PORTS, (layer, p) -> new CoordinateTranslation(p), Layer.PROCESSING);
         }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
+        }
     }
 }

@@ -82,5 +82,11 @@ public final class Buttons extends SensorActuatorMethod {
             super("buttons", "Says which buttons and touch sensors are pressed, and names each new press",
                     ButtonsParams.class, PORTS, (layer, p) -> new Buttons(p), Layer.SENSORS_ACTUATORS);
         }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
+        }
     }
 }

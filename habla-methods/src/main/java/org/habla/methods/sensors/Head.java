@@ -89,5 +89,11 @@ public final class Head extends SensorActuatorMethod {
             super("head", "Reads a pan-and-tilt head's pose and sends head commands clamped to its joint limits",
                     HeadParams.class, PORTS, (layer, p) -> new Head(p), Layer.SENSORS_ACTUATORS);
         }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
+        }
     }
 }

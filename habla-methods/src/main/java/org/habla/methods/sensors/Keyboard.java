@@ -88,5 +88,11 @@ public final class Keyboard extends SensorActuatorMethod {
             super("keyboard", "Typed lines, trimmed and without control characters, cut to a maximum length",
                     KeyboardParams.class, PORTS, (layer, p) -> new Keyboard(p), Layer.SENSORS_ACTUATORS);
         }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
+        }
     }
 }

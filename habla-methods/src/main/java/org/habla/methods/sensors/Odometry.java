@@ -95,5 +95,11 @@ public final class Odometry extends SensorActuatorMethod {
             super("odometry", "The base's pose and velocity from a driver's odometry record",
                     OdometryParams.class, PORTS, (layer, p) -> new Odometry(p), Layer.SENSORS_ACTUATORS);
         }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
+        }
     }
 }

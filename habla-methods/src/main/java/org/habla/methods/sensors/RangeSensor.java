@@ -173,6 +173,12 @@ public final class RangeSensor extends SensorActuatorMethod {
             super("sonar", "Cleans sonar ranges (nothing seen = maximum range) and adds each transducer's pose",
                     RangeSensorParams.class, PORTS, (layer, p) -> new RangeSensor(p, 5.0), Layer.SENSORS_ACTUATORS);
         }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
+        }
     }
 
     /**
@@ -191,6 +197,12 @@ public final class RangeSensor extends SensorActuatorMethod {
         public InfraredProvider() {
             super("infrared", "Cleans infrared ranges (nothing seen = maximum range) and adds each sensor's pose",
                     RangeSensorParams.class, PORTS, (layer, p) -> new RangeSensor(p, 1.5), Layer.SENSORS_ACTUATORS);
+        }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
         }
     }
 }

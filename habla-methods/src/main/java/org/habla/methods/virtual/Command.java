@@ -85,5 +85,11 @@ public final class Command extends VirtualMethod {
             super("command", "Maps a heard note or phrase to the teacher's command label",
                     CommandParams.class, PORTS, (layer, p) -> new Command(p), Layer.VIRTUAL);
         }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
+        }
     }
 }

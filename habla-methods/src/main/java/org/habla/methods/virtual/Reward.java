@@ -96,5 +96,11 @@ public final class Reward extends VirtualMethod {
             super("reward", "The teacher's pleasure or pain as a number in [-1, 1], from text lines or touch sensors",
                     RewardParams.class, PORTS, (layer, p) -> new Reward(p), Layer.VIRTUAL);
         }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
+        }
     }
 }

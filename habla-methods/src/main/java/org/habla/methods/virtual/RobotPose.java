@@ -58,5 +58,11 @@ public final class RobotPose extends VirtualMethod {
             super("robot-pose", "The robot's pose {xM, yM, thetaRad} for the control architecture",
                     NoParams.class, PORTS, (layer, p) -> new RobotPose(), Layer.VIRTUAL);
         }
+
+        /** Microseconds per sample, no ticks, nothing that blocks: may run on the thread that delivers to it. */
+        @Override
+        public boolean light() {
+            return true;
+        }
     }
 }

@@ -73,6 +73,7 @@ function paintGraph(st) {
     const lat = m.latency || {};
     title.textContent = `${m.id} (${m.type}): ${m.state}${m.stale ? ", stale" : ""}${m.ready ? "" : ", not ready"}` +
       `\n${(m.handledPerS || 0).toFixed(1)} handled/s, p50 ${ms(lat.p50Us)} ms, p99 ${ms(lat.p99Us)} ms` +
+      (m.thread ? `\n${m.thread.inline ? "runs on " + m.thread.name + " (shared)" : "own thread"}: ${m.thread.reason}` : "") +
       (m.failure ? `\nfailed: ${m.failure}` : "") + (m.staleBecause ? `\nstale: ${m.staleBecause.why}` : "");
   }
   for (const i of st.interfaces || []) {
