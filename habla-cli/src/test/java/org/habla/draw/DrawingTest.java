@@ -77,7 +77,7 @@ class DrawingTest {
         base.methods().values().forEach(t -> types.add(t.name().equals("nearest-distance") ? new Light<>(t) : t));
         org.habla.plugin.PluginRegistry registry = org.habla.plugin.PluginRegistry.of(types,
                 List.copyOf(base.drivers().values()));
-        Path file = Path.of(DrawingTest.class.getResource("/configs/valid/pioneer-like.json").toURI());
+        Path file = TestConfigs.file("valid/pioneer-like.json");
         GraphPicture p = GraphPicture.of(new ConfigLoader(registry).load(file), registry);
 
         assertThat(p.node("method:nearest").lines()).contains("on sonar's thread");
