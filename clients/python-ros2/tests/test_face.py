@@ -61,6 +61,9 @@ def test_every_socket_is_a_topic_of_the_type_its_shape_gives(rig, probe):
 def test_stream_topics_carry_the_sockets_samples_with_their_source_time(rig, probe):
     probe.listen(String, NS + "/distance_angle", SENSOR)
     probe.listen(PoseStamped, NS + "/pose", SENSOR)
+    # DDS discovery may take longer than the samples below last: read them once the probe hears both topics
+    probe.wait_for(lambda: probe.messages(NS + "/distance_angle") and probe.messages(NS + "/pose"), WAIT_S,
+                   "the first messages of both topics")
     with sample_of(rig, "distance_angle") as da, sample_of(rig, "pose") as pose:
         seen_da = {s.seq: s for s in (da.next_sample(10) for _ in range(30))}
         seen_pose = {s.t_us: s for s in (pose.next_sample(10) for _ in range(30))}

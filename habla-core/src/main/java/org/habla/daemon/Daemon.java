@@ -65,9 +65,9 @@ public final class Daemon implements AutoCloseable {
     }
 
     /**
-     * Builds and starts everything; if a port cannot be bound, whatever was started is stopped again
-     * and the exception says which port. A worker that cannot run a method placed on it stops the start
-     * with a {@link PlacementRefusedException}.
+     * Builds and starts everything; if a port cannot be bound, whatever was started is stopped again and the
+     * exception says which port. A worker that cannot run a method placed on it stops the start with a {@link
+     * PlacementRefusedException}.
      */
     public static Daemon start(HablaConfig config, PluginRegistry registry, EngineClock clock) throws IOException {
         return start(config, registry, clock, GraphTap.NONE);
@@ -89,8 +89,8 @@ public final class Daemon implements AutoCloseable {
             Map<String, List<ChannelDescriptor>> channels, RecordedSkips skips) throws IOException {
         checkPlacements(config);
         // A replay carries no bridge: what it computes again must not reach a broker as if it were live.
-        return assemble(config, registry, MethodGraph.replaying(config, registry, clock, tap, channels, skips), clock,
-                false);
+        MethodGraph graph = MethodGraph.replaying(config, registry, clock, tap, channels, skips);
+        return assemble(config, registry, graph, clock, false);
     }
 
     /** Asks every worker the config places methods on whether it can run them. */
@@ -102,9 +102,8 @@ public final class Daemon implements AutoCloseable {
     }
 
     /**
-     * Checks that every port the config names can be listened on, without listening on any.
-     *
-     * @throws PortsUnavailableException naming each port that cannot be had, at its JSON path
+     * Checks that every port the config names can be listened on, without listening on any: a port that cannot be
+     * had is a {@link PortsUnavailableException} naming it at its JSON path.
      */
     public static void checkPorts(HablaConfig config) throws PortsUnavailableException {
         List<ConfigError> taken = PortCheck.unavailable(config);
@@ -114,10 +113,9 @@ public final class Daemon implements AutoCloseable {
     }
 
     /**
-     * Binds every port first — the control sockets and the status endpoint — then starts the extensions (the
-     * monitor binds its port), and only when all are held starts serving the control sockets and the status
-     * endpoint, then the config's bridges (when {@code withBridges}), then the graph. A port that cannot be had stops
-     * the start before any control socket served, any bridge connected or anything moved.
+     * Binds every port first — the control sockets and the status endpoint — then starts the extensions (the monitor
+     * binds its port), and only when all are held serves the control sockets and the status endpoint, then starts the
+     * bridges (when {@code withBridges}), then the graph: a port that cannot be had stops the start first.
      */
     private static Daemon assemble(HablaConfig config, PluginRegistry registry, MethodGraph graph, EngineClock clock,
             boolean withBridges) throws IOException {

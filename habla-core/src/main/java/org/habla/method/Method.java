@@ -17,11 +17,10 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * A method: one small unit of the HABLA's three-layer graph, with named typed inputs and
- * outputs. Subclass the base class of its layer — {@link SensorActuatorMethod},
- * {@link ProcessingMethod} or {@link VirtualMethod} — declare its ports once as constants ({@link InputPort},
- * {@link OutputPort}, listed in one {@link Ports} that the type's provider hands to HABLA), bind them, and
- * handle samples:
+ * A method: one small unit of the HABLA's three-layer graph, with named typed inputs and outputs. Subclass the
+ * base class of its layer — {@link SensorActuatorMethod}, {@link ProcessingMethod} or {@link VirtualMethod} —
+ * declare its ports once as constants ({@link InputPort}, {@link OutputPort}, listed in one {@link Ports} that
+ * the type's provider hands to HABLA), bind them, and handle samples:
  *
  * <pre>{@code
  * public final class Threshold extends ProcessingMethod {
@@ -50,20 +49,17 @@ import org.slf4j.LoggerFactory;
  * }
  * }</pre>
  *
- * (the whole plugin, with its params record, provider and test, is {@code examples/custom-method};
- * docs/writing-a-method.md walks through it).
+ * (the whole plugin, with its params record, provider and test, is {@code examples/custom-method}).
  *
  * <h2>Threading contract</h2>
  * The engine hands a method one message at a time — a sample, a tick or the result of background
  * work — each after the previous one has returned, so method code needs no locks: keep state in plain
- * fields. Method code never sleeps, never starts a thread and never opens a socket; slow work goes
- * through {@link #background}, periodic work through {@link #tickEvery}, time through {@link #nowMicros}.
- * Which thread hands over the messages is the engine's choice: a method's own, or, for a method of a
- * light type ({@code MethodProvider.light}) fed from one thread, that thread, which runs it and the
- * light methods after it in one pass. So {@link #emit} may return after the light methods downstream
- * have handled the value; a value that comes back to the method while it handles waits in its input
- * until the handler returns. Inputs keep their delivery ({@code latest}, {@code queue}) either way. A
- * light type takes microseconds, asks for no ticks (refused when made) and no background work (fails).
+ * fields. It never sleeps, starts a thread or opens a socket; slow work goes through {@link #background},
+ * periodic work through {@link #tickEvery}, time through {@link #nowMicros}. The engine chooses the thread
+ * that hands over the messages: the method's own, or, for a light type ({@code MethodProvider.light}: no
+ * ticks, no background work, microseconds) fed from one thread, that thread, which runs it and the light
+ * methods after it in one pass; so {@link #emit} may return after those have handled the value, and a value
+ * that comes back meanwhile waits in the input. Inputs keep their delivery ({@code latest}, {@code queue}).
  *
  * <h2>Life cycle</h2>
  * The engine owns it, through a {@link MethodLifecycle} that a method never sees:
