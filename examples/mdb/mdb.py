@@ -347,8 +347,6 @@ class Brain:
     SECOND_STEP = 0.5  # what the second step of a plan counts for: it is predicted from a prediction
     APPROVED = 0.5  # relevance above which a move counts as one the teacher has rewarded
     LOST_AFTER = 3  # decisions without seeing the target after which, uncommanded, the robot tries moves at random
-    LOSING_AFTER = 3  # uncommanded decisions in a row, each farther from the target, after which every move is weighed
-    LOSING_M = 0.05  # how much farther, at least, over those decisions
 
     def __init__(self, seed=0, memory=80, population=16, generations=3, epsilon=0.2, epsilon_decay=0.97,
                  epsilon_min=0.02, distance_scale_m=0.2, angle_scale_rad=0.5, horizon=2):
@@ -363,7 +361,6 @@ class Brain:
         self.errors = {}
         self.predictions = {}
         self.unseen = 0  # decisions in a row taken while the target was not seen
-        self.alone = []  # (distance, action) of the last uncommanded decisions taken seeing the target, oldest first
 
     def confidence(self, action):
         """How far the world model of `action` can be trusted, 0..1: n / TRUSTED_AFTER, n being the
@@ -401,8 +398,6 @@ class Brain:
         everything known makes matters worse. The relevance table needs no such care: its untried entries
         sit at 0, below rewarded ones."""
         self.unseen = 0 if perception.seen else self.unseen + 1
-        if perception.command in COMMANDS or not perception.seen:
-            self.alone = []
         self.predictions = {a: self.world.predict(perception, a) for a in ACTIONS}
         if perception.command in COMMANDS:
             scores = {a: self.score(perception, a) for a in ACTIONS}
@@ -416,26 +411,11 @@ class Brain:
         if explored:
             action = self.rng.choice(ACTIONS)
         else:
-            candidates = ACTIONS if perception.command in COMMANDS else self.uncommanded(perception)
+            candidates = ACTIONS if perception.command in COMMANDS else self.approved()
             top = max(scores[a] for a in candidates)
             action = self.rng.choice([a for a in candidates if scores[a] >= top - 1e-9])
-        if perception.command not in COMMANDS and perception.seen:
-            self.alone = (self.alone + [(perception.distance_m, action)])[-self.LOSING_AFTER:]
         self.decisions += 1
         return action, explored, scores
-
-    def uncommanded(self, perception):
-        """The moves weighed when no command is heard: the approved ones, unless they have been losing ground — the
-        target farther after each of the last LOSING_AFTER decisions — when every move but those just made is. A
-        teacher who never asked for a turn leaves it unapproved; alone, with the object on that side, the Pioneer
-        drove on forward, the object passing behind it, and ended 5.5 m away."""
-        trail = [d for d, _ in self.alone] + [perception.distance_m]
-        losing = (len(self.alone) == self.LOSING_AFTER and all(b > a for a, b in zip(trail, trail[1:]))
-                  and trail[-1] - trail[0] >= self.LOSING_M)
-        if not losing:
-            return self.approved()
-        made = {a for _, a in self.alone}
-        return [a for a in ACTIONS if a not in made] or list(ACTIONS)
 
     def approved(self):
         """The moves the robot makes when no command is heard: those the teacher has rewarded after some command

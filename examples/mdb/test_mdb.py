@@ -398,41 +398,6 @@ class ApprovedMovesTest(unittest.TestCase):
         self.assertNotEqual("back", brain.decide(here)[0])
 
 
-class LosingGroundTest(unittest.TestCase):
-
-    def test_alone_a_robot_losing_ground_weighs_the_moves_it_was_never_asked_for(self):
-        # The teacher had the object to the left or ahead every time, and never said "right": turning right is
-        # not approved. Alone, with the object behind on the right, the approved moves take the robot farther
-        # decision after decision; then it weighs the others, turning right among them.
-        for seed in range(1, 4):
-            rng = random.Random(seed)
-            brain = mdb.Brain(seed=seed, epsilon=0.0, epsilon_min=0.0)
-            for e in taught(rng, 150, obedience=0.8):
-                if e.before.command != "right":
-                    brain.remember(e)
-            for _ in range(20):
-                brain.learn()
-            self.assertNotIn("right", brain.approved(), "seed %d: the premise" % seed)
-            made = [brain.decide(mdb.Perception(1.38 + 0.05 * i, -1.6, True, None))[0] for i in range(3)]
-            self.assertTrue(set(made) <= set(brain.approved()), "seed %d: %s" % (seed, made))
-            farther = mdb.Perception(1.55, -1.6, True, None)
-            self.assertIn("right", brain.uncommanded(farther), "seed %d" % seed)
-            self.assertNotIn(brain.decide(farther)[0], made, "seed %d" % seed)
-
-    def test_approved_moves_that_close_in_are_kept(self):
-        rng = random.Random(2)
-        brain = mdb.Brain(seed=2, epsilon=0.0, epsilon_min=0.0)
-        for e in taught(rng, 150, obedience=0.8):
-            if e.before.command != "right":
-                brain.remember(e)
-        for _ in range(20):
-            brain.learn()
-        for i in range(4):
-            here = mdb.Perception(1.6 - 0.1 * i, -0.3, True, None)
-            self.assertEqual(brain.approved(), brain.uncommanded(here))
-            brain.decide(here)
-
-
 class LostTargetTest(unittest.TestCase):
 
     def test_a_robot_that_has_lost_its_target_tries_other_moves(self):
