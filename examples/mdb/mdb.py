@@ -38,6 +38,7 @@ from habla_contract import ContractLink
 
 ACTIONS = ("forward", "left", "right", "back")
 COMMANDS = ("forward", "left", "right", "back")  # labels the teacher may use; their meaning is learned
+MIRROR = {"forward": "forward", "left": "right", "right": "left", "back": "back"}  # each move seen in a mirror
 
 
 JUMP = 4.0  # a distance change beyond JUMP * distance scale is not the robot's doing
@@ -419,10 +420,14 @@ class Brain:
 
     def approved(self):
         """The moves the robot makes when no command is heard: those the teacher has rewarded after some command
-        (relevance above APPROVED), or every move while it has rewarded none. A move the teacher never asked for is
-        known to the satisfaction model only from the few times exploration or a mistake made it; alone, the Pioneer
-        trusted such a model of `back` and backed away from an object straight ahead."""
-        approved = [a for a in ACTIONS if max(self.world.relevance_of(a, c) for c in COMMANDS) > self.APPROVED]
+        (relevance above APPROVED) and their mirror images (MIRROR: the body is the same on both sides, so a turn
+        rewarded one way is a move it knows the other way too), or every move while it has rewarded none. A move the
+        teacher never asked for is known to the satisfaction model only from the few times exploration or a mistake
+        made it; alone, the Pioneer trusted such a model of `back` and backed away from an object straight ahead. A
+        teacher who never needed to say "right" leaves only its mirror rewarded: without the mirror, the robots drove
+        on with the object passing behind them on that side."""
+        rewarded = {a for a in ACTIONS if max(self.world.relevance_of(a, c) for c in COMMANDS) > self.APPROVED}
+        approved = [a for a in ACTIONS if a in rewarded or MIRROR[a] in rewarded]
         return approved or list(ACTIONS)
 
     def _plan_scores(self, perception):

@@ -398,6 +398,26 @@ class ApprovedMovesTest(unittest.TestCase):
         self.assertNotEqual("back", brain.decide(here)[0])
 
 
+class MirrorTest(unittest.TestCase):
+
+    def test_a_turn_its_teacher_never_asked_for_is_approved_with_its_mirror(self):
+        # The teacher had the object to the left or ahead every time and never said "right". Alone, with the
+        # object on the right, the robot turns right, the mirror of the left turn it was rewarded for; `back`,
+        # never rewarded and its own mirror, stays out.
+        rng = random.Random(4)
+        brain = mdb.Brain(seed=4, epsilon=0.0, epsilon_min=0.0)
+        for e in taught(rng, 150, obedience=0.8):
+            if e.before.command != "right":
+                brain.remember(e)
+        for _ in range(20):
+            brain.learn()
+        self.assertLess(max(brain.world.relevance_of("right", c) for c in mdb.COMMANDS), brain.APPROVED,
+                        "the premise: turning right was never rewarded")
+        self.assertIn("right", brain.approved())
+        self.assertNotIn("back", brain.approved())
+        self.assertEqual("right", brain.decide(mdb.Perception(1.4, -1.2, True, None))[0])
+
+
 class LostTargetTest(unittest.TestCase):
 
     def test_a_robot_that_has_lost_its_target_tries_other_moves(self):
