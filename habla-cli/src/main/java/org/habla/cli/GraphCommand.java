@@ -1,9 +1,6 @@
 package org.habla.cli;
 
-import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.habla.command.ExitCodes;
@@ -77,21 +74,7 @@ public final class GraphCommand implements Callable<Integer> {
             return ExitCodes.USAGE_OR_CONFIG;
         }
         String text = f.write(GraphPicture.of(cfg, r));
-        if (output == null) {
-            PrintWriter out = spec.commandLine().getOut();
-            out.print(text);
-            out.flush();
-            return ExitCodes.OK;
-        }
-        try {
-            Path parent = output.toAbsolutePath().getParent();
-            if (parent != null) {
-                Files.createDirectories(parent);
-            }
-            Files.writeString(output, text, StandardCharsets.UTF_8);
-        } catch (IOException e) {
-            err.println("habla graph: cannot write " + output + ": " + e);
-            err.flush();
+        if (!CommandOutput.put(spec, output, text)) {
             return ExitCodes.RUNTIME_FAILURE;
         }
         return ExitCodes.OK;

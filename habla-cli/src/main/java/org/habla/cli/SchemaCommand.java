@@ -1,9 +1,6 @@
 package org.habla.cli;
 
-import java.io.IOException;
 import java.io.PrintWriter;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import org.habla.command.ExitCodes;
@@ -45,23 +42,11 @@ public final class SchemaCommand implements Callable<Integer> {
     public Integer call() {
         PluginRegistry r = registry != null ? registry : PluginRegistry.discover(Thread.currentThread().getContextClassLoader());
         String schema = ConfigSchema.text(r);
-        if (output == null) {
-            PrintWriter out = spec.commandLine().getOut();
-            out.print(schema);
-            out.flush();
-            return ExitCodes.OK;
-        }
-        try {
-            Path parent = output.toAbsolutePath().getParent();
-            if (parent != null) {
-                Files.createDirectories(parent);
-            }
-            Files.writeString(output, schema, StandardCharsets.UTF_8);
-        } catch (IOException e) {
-            PrintWriter err = spec.commandLine().getErr();
-            err.println("habla schema: cannot write " + output + ": " + e);
-            err.flush();
+        if (!CommandOutput.put(spec, output, schema)) {
             return ExitCodes.RUNTIME_FAILURE;
+        }
+        if (output == null) {
+            return ExitCodes.OK;
         }
         PrintWriter out = spec.commandLine().getOut();
         out.println("wrote " + output + " (" + r.methods().size() + " method types, " + r.drivers().size()
