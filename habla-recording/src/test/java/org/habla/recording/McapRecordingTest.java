@@ -3,8 +3,6 @@ package org.habla.recording;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
-import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.nio.ByteBuffer;
 import java.nio.ByteOrder;
 import java.nio.file.Files;
@@ -12,16 +10,13 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.Map;
 import java.util.Optional;
 import java.util.Random;
-import org.habla.driver.ChannelDescriptor;
 import org.habla.graph.ManualClock;
 import org.habla.sample.AudioChunk;
 import org.habla.sample.AudioFormat;
 import org.habla.sample.ImageFrame;
 import org.habla.sample.NumberValue;
-import org.habla.sample.PayloadKind;
 import org.habla.sample.RecordValue;
 import org.habla.sample.Sample;
 import org.habla.sample.TextValue;
@@ -38,12 +33,7 @@ class McapRecordingTest {
     Path dir;
 
     private static RecordingHeader header() {
-        ObjectNode config = JsonNodeFactory.instance.objectNode().put("system", "test-rover");
-        ObjectNode poses = JsonNodeFactory.instance.objectNode();
-        poses.putArray("poses").add(0.1).add(0.2);
-        return new RecordingHeader(1_000_000, 2.0, config, "/configs",
-                Map.of("robot", List.of(ChannelDescriptor.reading("sonar", PayloadKind.VECTOR, "m").withMetadata(poses),
-                        ChannelDescriptor.command("motion", PayloadKind.VECTOR, "m/s", true))));
+        return RecordingFileTest.header();
     }
 
     /** Every kind of event and payload, through the recorder's tap as the engine would; a pause every few rounds. */

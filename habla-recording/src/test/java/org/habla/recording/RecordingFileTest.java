@@ -37,7 +37,8 @@ class RecordingFileTest {
     @TempDir
     Path dir;
 
-    private static RecordingHeader header() {
+    /** A small rover's header: a sonar reading with its poses, a motion command (the MCAP test records it too). */
+    static RecordingHeader header() {
         ObjectNode config = JsonNodeFactory.instance.objectNode().put("system", "test-rover");
         ObjectNode poses = JsonNodeFactory.instance.objectNode();
         poses.putArray("poses").add(0.1).add(0.2);
