@@ -7,7 +7,10 @@ import java.util.Objects;
  * that brings the robot towards the target (|bearing| above {@code turnThresholdRad} → {@code left}/{@code right},
  * else {@code forward}), then {@code judgeAfterS} after the command got across (at once for a note, at the end
  * of a spoken phrase) judges what the robot did meanwhile: +1 if the heading
- * changed the commanded way (turns) or the robot moved forward/back as commanded, −1 otherwise. Commands and
+ * changed the commanded way (turns) or the robot moved forward/back as commanded, −1 otherwise. A robot that has
+ * not moved at all by then is given up to {@code patienceS} more, and judged on its first visible move: a teacher
+ * watches for the robot's answer, and a robot that heard the words late (a recogniser on a busy computer) is not
+ * punished for a correct move the teacher did not wait for. Commands and
  * rewards go out through a {@link TeacherVoice}. An operator (the ground-truth server) may also make it say a
  * command or give a reward at once, present or not.
  *
@@ -24,6 +27,7 @@ public final class Teacher {
     private String pendingLabel;
     private Pose2 pendingFrom;
     private double judgeAtS;
+    private double judgeByS;
     private String lastCommand;
     private Double lastReward;
     private int episodeCommands;
@@ -54,9 +58,10 @@ public final class Teacher {
     /** Advances the teacher to sim time {@code now}: judges a due command, then gives the next one if due. */
     public synchronized void step(double now, Pose2 robot, Target target) {
         nowS = now;
-        if (pendingLabel != null && now >= judgeAtS - 1e-9) {
+        if (pendingLabel != null && now >= judgeAtS - 1e-9 && (moved(pendingFrom, robot) || now >= judgeByS - 1e-9)) {
             double reward = obeyed(pendingLabel, pendingFrom, robot) ? 1 : -1;
             pendingLabel = null;
+            nextCommandS = Math.max(nextCommandS, now + 0.5);
             reward(reward);
         }
         if (present && pendingLabel == null && now >= nextCommandS - 1e-9) {
@@ -132,6 +137,12 @@ public final class Teacher {
         };
     }
 
+    /** Whether a robot that went from {@code from} to {@code to} visibly did anything: turned or moved either way. */
+    boolean moved(Pose2 from, Pose2 to) {
+        return Math.abs(Pose2.normalize(to.thetaRad() - from.thetaRad())) > settings.minTurnRad()
+                || Math.abs(from.forwardTo(to)) > settings.minMoveM();
+    }
+
     private void command(String label, Pose2 robot) {
         pendingLabel = label;
         pendingFrom = robot;
@@ -141,6 +152,7 @@ public final class Teacher {
         double soundS = voice.giveCommand(label);
         // Judged from the end of the note or the utterance: a robot cannot act on a command before it heard it.
         judgeAtS = nowS + soundS + settings.judgeAfterS();
+        judgeByS = judgeAtS + settings.patienceS();
         nextCommandS = Math.max(nowS + settings.commandEveryS(), judgeAtS + 0.5);
     }
 

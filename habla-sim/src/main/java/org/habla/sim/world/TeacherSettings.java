@@ -12,6 +12,8 @@ import java.util.Map;
  * <tr><td>present</td><td>boolean</td><td></td><td>true</td><td>whether the teacher is there at the start</td></tr>
  * <tr><td>commandEveryS</td><td>number</td><td>s</td><td>3</td><td>sim time between two commands</td></tr>
  * <tr><td>judgeAfterS</td><td>number</td><td>s</td><td>1.5</td><td>how long the robot has to obey before the reward</td></tr>
+ * <tr><td>patienceS</td><td>number</td><td>s</td><td>1.5</td><td>how much longer the teacher waits for a robot that has
+ * not moved at all yet; it judges the robot's first visible move</td></tr>
  * <tr><td>turnThresholdRad</td><td>number</td><td>rad</td><td>0.35</td><td>|bearing| above which the teacher says left/right</td></tr>
  * <tr><td>minTurnRad</td><td>number</td><td>rad</td><td>0.05</td><td>heading change that counts as having turned</td></tr>
  * <tr><td>minMoveM</td><td>number</td><td>m</td><td>0.02</td><td>displacement that counts as having moved</td></tr>
@@ -19,7 +21,7 @@ import java.util.Map;
  * <tr><td>phrases</td><td>object</td><td></td><td>go forward/…</td><td>label → phrase the Aibo teacher says</td></tr>
  * </table>
  */
-public record TeacherSettings(boolean present, double commandEveryS, double judgeAfterS, double turnThresholdRad,
+public record TeacherSettings(boolean present, double commandEveryS, double judgeAfterS, double patienceS, double turnThresholdRad,
                               double minTurnRad, double minMoveM, Map<String, String> notes,
                               Map<String, String> phrases) {
 
@@ -27,13 +29,16 @@ public record TeacherSettings(boolean present, double commandEveryS, double judg
     public static final List<String> LABELS = List.of("forward", "left", "right", "back");
 
     /** The contract's defaults. */
-    public static final TeacherSettings DEFAULTS = new TeacherSettings(true, 3.0, 1.5, 0.35, 0.05, 0.02,
+    public static final TeacherSettings DEFAULTS = new TeacherSettings(true, 3.0, 1.5, 1.5, 0.35, 0.05, 0.02,
             Map.of("forward", "C5", "left", "E5", "right", "G5", "back", "C6"),
             Map.of("forward", "go forward", "left", "turn left", "right", "turn right", "back", "go back"));
 
     public TeacherSettings {
         positive("commandEveryS", commandEveryS);
         positive("judgeAfterS", judgeAfterS);
+        if (!(patienceS >= 0) || !Double.isFinite(patienceS)) {
+            throw new IllegalArgumentException("teacher.patienceS must be a number of seconds, 0 or more, was " + patienceS);
+        }
         positive("turnThresholdRad", turnThresholdRad);
         positive("minTurnRad", minTurnRad);
         positive("minMoveM", minMoveM);
@@ -69,6 +74,6 @@ public record TeacherSettings(boolean present, double commandEveryS, double judg
 
     /** The same settings with the teacher present or away. */
     public TeacherSettings withPresent(boolean p) {
-        return new TeacherSettings(p, commandEveryS, judgeAfterS, turnThresholdRad, minTurnRad, minMoveM, notes, phrases);
+        return new TeacherSettings(p, commandEveryS, judgeAfterS, patienceS, turnThresholdRad, minTurnRad, minMoveM, notes, phrases);
     }
 }

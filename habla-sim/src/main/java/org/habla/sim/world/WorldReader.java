@@ -89,7 +89,7 @@ final class WorldReader {
 
     private static TeacherSettings teacher(JsonNode t) {
         String p = "$.teacher";
-        object(t, p, Set.of("present", "commandEveryS", "judgeAfterS", "turnThresholdRad", "minTurnRad", "minMoveM",
+        object(t, p, Set.of("present", "commandEveryS", "judgeAfterS", "patienceS", "turnThresholdRad", "minTurnRad", "minMoveM",
                 "notes", "phrases"));
         TeacherSettings d = TeacherSettings.DEFAULTS;
         boolean present = d.present();
@@ -102,6 +102,7 @@ final class WorldReader {
         return new TeacherSettings(present,
                 t.has("commandEveryS") ? number(t, "commandEveryS", p) : d.commandEveryS(),
                 t.has("judgeAfterS") ? number(t, "judgeAfterS", p) : d.judgeAfterS(),
+                t.has("patienceS") ? number(t, "patienceS", p) : d.patienceS(),
                 t.has("turnThresholdRad") ? number(t, "turnThresholdRad", p) : d.turnThresholdRad(),
                 t.has("minTurnRad") ? number(t, "minTurnRad", p) : d.minTurnRad(),
                 t.has("minMoveM") ? number(t, "minMoveM", p) : d.minMoveM(),

@@ -49,9 +49,12 @@ class TeacherTest {
         teacher.step(4.5, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
         assertThat(voice.said).containsExactly("right", "+");
         assertThat(teacher.lastReward()).isEqualTo(1.0);
-        // Next command at 6.0; the robot stays put, so it is punished at 7.5.
+        // Next command at 6.0; the robot stays put, so it is punished once the teacher's patience is over, at 9.0.
         teacher.step(6.0, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
         teacher.step(7.5, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        teacher.step(8.99, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        assertThat(voice.said).as("still waiting for an answer").containsExactly("right", "+", "right");
+        teacher.step(9.0, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
         assertThat(voice.said).containsExactly("right", "+", "right", "-");
         assertThat(teacher.lastCommand()).isEqualTo("right");
         assertThat(teacher.lastReward()).isEqualTo(-1.0);
@@ -64,6 +67,7 @@ class TeacherTest {
         teacher.step(4.5, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
         teacher.step(6.0, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
         teacher.step(7.5, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
+        teacher.step(9.0, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
         teacher.rewardNow(0.5);
         assertThat(teacher.episodeTally()).isEqualTo(new Teacher.Tally(2, 2, 1));
         var json = new GroundTruth(7.5, facingAway, target, 1, 0, false, true, teacher.lastCommand(),
@@ -93,6 +97,37 @@ class TeacherTest {
         speaking.step(5.4, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
         speaking.step(5.5, new Pose2(1, 1, Math.PI / 2 - 0.3), target);
         assertThat(slow.said).as("judged 1.5 s after it ended").containsExactly("right", "+");
+    }
+
+    @Test
+    void aRobotThatHasNotMovedYetIsJudgedOnItsFirstMoveWithinTheTeachersPatience() {
+        Pose2 facingAway = new Pose2(1, 1, Math.PI / 2);
+        teacher.step(3.0, facingAway, target);
+        teacher.step(4.5, facingAway, target);
+        teacher.step(5.0, facingAway, target);
+        assertThat(voice.said).as("a robot that heard the command late has not answered yet").containsExactly("right");
+        teacher.step(5.9, new Pose2(1, 1, Math.PI / 2 - 0.1), target);
+        assertThat(voice.said).as("its late but right turn is rewarded").containsExactly("right", "+");
+        teacher.step(6.3, new Pose2(1, 1, Math.PI / 2 - 0.1), target);
+        assertThat(voice.said).as("the next command waits half a second after the judgement").containsExactly("right", "+");
+        teacher.step(6.4, new Pose2(1, 1, Math.PI / 2 - 0.1), target);
+        assertThat(voice.said).containsExactly("right", "+", "right");
+        // A wrong move, late, is punished as soon as it shows: the patience waits for an answer, not for the right one.
+        teacher.step(8.5, new Pose2(1, 1, Math.PI / 2 - 0.1), target);
+        assertThat(voice.said).containsExactly("right", "+", "right");
+        teacher.step(8.7, new Pose2(1, 1, Math.PI / 2 + 0.1), target);
+        assertThat(voice.said).containsExactly("right", "+", "right", "-");
+    }
+
+    @Test
+    void aRobotThatAlreadyMovedIsJudgedWithoutWaiting() {
+        Pose2 facingAway = new Pose2(1, 1, Math.PI / 2);
+        teacher.step(3.0, facingAway, target);
+        teacher.step(4.5, new Pose2(1, 1.1, Math.PI / 2), target);
+        assertThat(voice.said).as("it went forward when told to turn").containsExactly("right", "-");
+        assertThat(teacher.moved(facingAway, facingAway.moved(0, 0, 0.04))).isFalse();
+        assertThat(teacher.moved(facingAway, facingAway.moved(0, 0, -0.06))).isTrue();
+        assertThat(teacher.moved(facingAway, facingAway.moved(-0.03, 0, 0))).isTrue();
     }
 
     @Test
