@@ -348,6 +348,9 @@ class Brain:
     SECOND_STEP = 0.5  # what the second step of a plan counts for: it is predicted from a prediction
     APPROVED = 0.5  # relevance above which a move counts as one the teacher has rewarded
     LOST_AFTER = 3  # decisions without seeing the target after which, uncommanded, the robot tries moves at random
+    STUCK_AFTER = 6  # uncommanded decisions in sight without coming closer or facing the target better: stuck
+    STUCK_GAIN_M = 0.05  # what counts as having come closer, above the noise of a sighting
+    STUCK_GAIN_RAD = 0.2  # what counts as facing the target better
 
     def __init__(self, seed=0, memory=80, population=16, generations=3, epsilon=0.2, epsilon_decay=0.97,
                  epsilon_min=0.02, distance_scale_m=0.2, angle_scale_rad=0.5, horizon=2):
@@ -362,6 +365,10 @@ class Brain:
         self.errors = {}
         self.predictions = {}
         self.unseen = 0  # decisions in a row taken while the target was not seen
+        self.alone = collections.deque(maxlen=self.STUCK_AFTER + 1)  # (distance, |angle|) of the last uncommanded decisions in sight
+        self.proven = set()  # moves not approved by the teacher that, tried when stuck, brought the robot closer
+        self.trying = None  # the move not approved that the robot, stuck, is making now
+        self.failed = set()  # moves not approved that, tried since the robot got stuck, brought it no closer
 
     def confidence(self, action):
         """How far the world model of `action` can be trusted, 0..1: n / TRUSTED_AFTER, n being the
@@ -399,6 +406,10 @@ class Brain:
         everything known makes matters worse. The relevance table needs no such care: its untried entries
         sit at 0, below rewarded ones."""
         self.unseen = 0 if perception.seen else self.unseen + 1
+        if perception.command in COMMANDS or not perception.seen:
+            self.alone.clear()
+        else:
+            self.alone.append((perception.distance_m, abs(perception.angle_rad)))
         self.predictions = {a: self.world.predict(perception, a) for a in ACTIONS}
         if perception.command in COMMANDS:
             scores = {a: self.score(perception, a) for a in ACTIONS}
@@ -413,22 +424,46 @@ class Brain:
             action = self.rng.choice(ACTIONS)
         else:
             candidates = ACTIONS if perception.command in COMMANDS else self.approved()
-            top = max(scores[a] for a in candidates)
-            action = self.rng.choice([a for a in candidates if scores[a] >= top - 1e-9])
+            untried = self._untried(perception, candidates)
+            top = max(scores[a] for a in (untried or candidates))
+            action = self.rng.choice([a for a in (untried or candidates) if scores[a] >= top - 1e-9])
+        self.trying = action if action in self._untried(perception, self.approved()) else None
         self.decisions += 1
         return action, explored, scores
+
+    def stuck(self):
+        """Whether the robot, alone and in sight of the target, has made STUCK_AFTER decisions without coming
+        STUCK_GAIN_M closer or turning STUCK_GAIN_RAD more towards the target than it was before them. Under load the Aibo heard its teacher late and was never
+        rewarded for `forward`; alone, with the ball ahead, it turned left and right for half a minute, the only
+        moves approved, while its satisfaction model ranked `forward` first. Stuck, it tries the moves not approved,
+        one at a time, the best scored first: one that brings it closer is approved from then on (`proven`), one that
+        does not is left until the robot is no longer stuck. Moves that only happened
+        to bring it closer while exploring are not: exploration is where the models that misled it came from."""
+        if len(self.alone) <= self.STUCK_AFTER:
+            return False
+        (d0, a0), since = self.alone[0], list(self.alone)[1:]
+        return min(d for d, _ in since) > d0 - self.STUCK_GAIN_M and min(a for _, a in since) > a0 - self.STUCK_GAIN_RAD
+
+    def _untried(self, perception, approved):
+        """Stuck (uncommanded), the moves not approved that it has not yet tried since it got stuck, best first."""
+        if perception.command in COMMANDS or not self.stuck():
+            self.failed.clear()
+            return []
+        return [a for a in ACTIONS if a not in approved and a not in self.failed]
 
     def approved(self):
         """The moves the robot makes when no command is heard: those the teacher has rewarded after some command
         (relevance above APPROVED) and their mirror images (MIRROR: the body is the same on both sides, so a turn
-        rewarded one way is a move it knows the other way too), or every move while it has rewarded none. A move the
+        rewarded one way is a move it knows the other way too), those that brought it closer when it tried them
+        stuck (`proven`, see `stuck`), or every move while it has rewarded none. A move the
         teacher never asked for is known to the satisfaction model only from the few times exploration or a mistake
         made it; alone, the Pioneer trusted such a model of `back` and backed away from an object straight ahead. A
         teacher who never needed to say "right" leaves only its mirror rewarded: without the mirror, the robots drove
         on with the object passing behind them on that side."""
         rewarded = {a for a in ACTIONS if max(self.world.relevance_of(a, c) for c in COMMANDS) > self.APPROVED}
-        approved = [a for a in ACTIONS if a in rewarded or MIRROR[a] in rewarded]
-        return approved or list(ACTIONS)
+        if not rewarded:
+            return list(ACTIONS)
+        return [a for a in ACTIONS if a in rewarded or MIRROR[a] in rewarded or a in self.proven]
 
     def _plan_scores(self, perception):
         trust = {a: self.confidence(a) for a in ACTIONS}
@@ -448,6 +483,9 @@ class Brain:
 
     def remember(self, experience):
         self.memory.add(experience)
+        e = experience
+        if e.action == self.trying and e.sighted:
+            (self.proven if e.delta_distance < -self.STUCK_GAIN_M else self.failed).add(e.action)
 
     def learn_judgement(self):
         """What a judgement teaches at once: the relevance table, so that the next command is obeyed in its light

@@ -418,6 +418,49 @@ class MirrorTest(unittest.TestCase):
         self.assertEqual("right", brain.decide(mdb.Perception(1.4, -1.2, True, None))[0])
 
 
+class StuckTest(unittest.TestCase):
+
+    def walk_alone(self, brain, d, a, steps):
+        for _ in range(steps):
+            before = mdb.Perception(d, a, True, None)
+            action = brain.decide(before)[0]
+            d, a = move(d, a, action)
+            brain.remember(mdb.Experience(before, action, mdb.Perception(d, a, True, None), None))
+        return d
+
+    def test_a_robot_whose_approved_moves_bring_it_no_closer_makes_the_others_too(self):
+        # The teacher's rewards for `forward` never reached the robot (it heard "go forward" late, on a busy
+        # computer, and moved too late every time): alone, with the object ahead, the only approved moves were the
+        # turns, and the Aibo turned left and right for half a minute. Stuck, it goes forward, and keeps doing so.
+        for seed in range(1, 4):
+            rng = random.Random(seed)
+            brain = mdb.Brain(seed=seed, epsilon=0.0, epsilon_min=0.0)
+            for e in taught(rng, 150, obedience=0.8):
+                if not (e.action == "forward" and e.reward > 0):
+                    brain.remember(e)
+            for _ in range(20):
+                brain.learn()
+            self.assertNotIn("forward", brain.approved(), "seed %d: the premise" % seed)
+            end = self.walk_alone(brain, 1.4, 0.1, 30)
+            self.assertIn("forward", brain.approved(), "seed %d: forward, made alone, brought it closer" % seed)
+            self.assertLess(end, 0.6, "seed %d" % seed)
+
+    def test_a_robot_that_comes_closer_keeps_to_its_approved_moves(self):
+        brain = mdb.Brain(seed=1, epsilon=0.0, epsilon_min=0.0)
+        for d in (1.4, 1.3, 1.2, 1.1, 1.0, 0.9, 0.8, 0.7):
+            brain.decide(mdb.Perception(d, 0.1, True, None))
+        self.assertFalse(brain.stuck())
+        for a in (0.5, 0.1, 0.5, 0.1, 0.5, 0.1):
+            brain.decide(mdb.Perception(0.68, a, True, None))
+        self.assertTrue(brain.stuck(), "six decisions 2 cm closer and facing it no better than before them")
+        brain = mdb.Brain(seed=1, epsilon=0.0, epsilon_min=0.0)
+        for a in (2.9, 2.6, 2.3, 2.0, 1.7, 1.4, 1.1, 0.8, 0.5):
+            brain.decide(mdb.Perception(0.9, a, True, None))
+            self.assertFalse(brain.stuck(), "turning towards a target behind it")
+        brain.decide(mdb.Perception(0.68, 0.1, True, "left"))
+        self.assertFalse(brain.stuck(), "a command starts the count again")
+
+
 class LostTargetTest(unittest.TestCase):
 
     def test_a_robot_that_has_lost_its_target_tries_other_moves(self):
