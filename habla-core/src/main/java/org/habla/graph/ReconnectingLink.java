@@ -12,8 +12,8 @@ import org.habla.config.Reconnect;
  *
  * <pre>
  *   session = sessions.get()
- *   open() ──ok──▶ mark up ──▶ readNext() … readNext() ──IOException──▶ mark down, close() ──▶ back-off ──▶ next
- *     └──IOException (count it, log the outage)────────────────────▶ mark down, close() ──▶ back-off ──▶ next
+ *   open() ──ok──▶ log, mark up ──▶ readNext() … readNext() ──IOException──▶ mark down, close() ──▶ back-off ──▶ next
+ *     └──IOException (log the outage, count it)────────────────────▶ mark down, close() ──▶ back-off ──▶ next
  * </pre>
  *
  * <ul>
@@ -234,8 +234,9 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
                 connects.incrementAndGet();
                 lastError = "";
                 backOff.reset();
-                listener.flip(true, false, () -> live = s);
+                // Told before it shows: whoever sees the link up (the status, a test waiting for it) finds the line.
                 outages.up();
+                listener.flip(true, false, () -> live = s);
                 listener.wentUp();
                 while (running) {
                     s.readNext();
@@ -244,9 +245,9 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
             } catch (IOException | RuntimeException e) {
                 failure = e;
                 if (running) {
-                    failures.incrementAndGet();
                     lastError = e.getMessage() == null ? e.toString() : e.getMessage();
                     outages.failed(lastError);
+                    failures.incrementAndGet();
                 }
             } finally {
                 markDown(s);
