@@ -34,11 +34,13 @@ import org.junit.jupiter.api.io.TempDir;
  * exposed socket. The Pioneer's teacher plays notes into the laptop microphone (pcm-stream); the
  * Aibo's teacher speaks into its ears (Tekkotsu's microphone server), recognised by Sphinx-4.
  */
-@Timeout(180)
+@Timeout(300)
 class TeacherHeardThroughHablaTest {
 
     private static final ObjectMapper JSON = new ObjectMapper();
     private static final long HEAR_MS = 30_000;
+    /** The wait for a recogniser to load its model: beside a busy build, Sphinx-4 took more than 30 s. */
+    private static final long READY_MS = 120_000;
 
     private static ObjectNode method(ArrayNode methods, String id, String type, String layer, String input,
             String source) {
@@ -115,7 +117,7 @@ class TeacherHeardThroughHablaTest {
      * into a gap of the stream and never be heard.
      */
     private static void awaitListening(int statusPort, String analyser, String listener) throws InterruptedException {
-        long end = System.currentTimeMillis() + HEAR_MS;
+        long end = System.currentTimeMillis() + READY_MS;
         long flowingSince = -1;
         long lastHandled = -1;
         while (System.currentTimeMillis() < end) {
@@ -141,7 +143,7 @@ class TeacherHeardThroughHablaTest {
             }
             Thread.sleep(200);
         }
-        throw new AssertionError("the daemon did not start listening within " + HEAR_MS + " ms: " + status(statusPort));
+        throw new AssertionError("the daemon did not start listening within " + READY_MS + " ms: " + status(statusPort));
     }
 
     /** Waits until the daemon's status says the interface connection {@code name} is up. */
