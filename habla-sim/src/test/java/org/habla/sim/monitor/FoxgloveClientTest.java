@@ -18,6 +18,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.TimeUnit;
+import java.util.function.BooleanSupplier;
 import org.habla.config.ConfigLoader;
 import org.habla.config.HablaConfig;
 import org.habla.daemon.Daemon;
@@ -62,7 +63,9 @@ class FoxgloveClientTest {
                         Integer.toString(LISTEN_S), "/distance/distance_angle", "/camera/image")
                         .directory(NODE_DIR.toFile()).redirectError(ProcessBuilder.Redirect.INHERIT).start();
                 long camerasBefore = emitted(daemon, "camera", "image");
-                Map<Long, JsonNode> control = readControlSocket(daemon.port("distance_angle"), LISTEN_S * 1000L);
+                // The control socket listens from before the Foxglove client has started until it has ended, so that
+                // its window holds the client's however slowly node starts on a busy machine.
+                Map<Long, JsonNode> control = readControlSocket(daemon.port("distance_angle"), probe::isAlive, 60_000);
                 long camerasDuring = emitted(daemon, "camera", "image") - camerasBefore;
                 assertThat(probe.waitFor(60, TimeUnit.SECONDS)).as("the Foxglove client ended").isTrue();
                 JsonNode out = JSON.readTree(new String(probe.getInputStream().readAllBytes(), StandardCharsets.UTF_8));
@@ -171,13 +174,14 @@ class FoxgloveClientTest {
     }
 
     /** The samples a control client reads from a socket for a while, by sequence number. */
-    private static Map<Long, JsonNode> readControlSocket(int port, long millis) throws Exception {
+    /** The samples of the control socket at {@code port}, read while {@code reading} holds (at most {@code maxMillis}). */
+    private static Map<Long, JsonNode> readControlSocket(int port, BooleanSupplier reading, long maxMillis) throws Exception {
         Map<Long, JsonNode> samples = new HashMap<>();
         try (Socket s = new Socket("127.0.0.1", port)) {
             s.setSoTimeout(200);
             BufferedReader in = new BufferedReader(new InputStreamReader(s.getInputStream(), StandardCharsets.UTF_8));
-            long end = System.currentTimeMillis() + millis;
-            while (System.currentTimeMillis() < end) {
+            long end = System.currentTimeMillis() + maxMillis;
+            while (reading.getAsBoolean() && System.currentTimeMillis() < end) {
                 String line;
                 try {
                     line = in.readLine();
