@@ -97,6 +97,11 @@ public final class WorkerServer implements AutoCloseable {
         return sessions.size();
     }
 
+    /** Placed methods running now: the connections that count against {@code --max-methods}. */
+    public int methodsRunning() {
+        return guard.clients();
+    }
+
     /** Bytes held now for blocks still arriving from daemons (the worker's own count). */
     public long blockBytesInFlight() {
         return budget.reserved();

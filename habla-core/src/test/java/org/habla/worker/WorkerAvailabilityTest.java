@@ -122,7 +122,7 @@ class WorkerAvailabilityTest {
     }
 
     private static void await(String what, BooleanSupplier condition) throws InterruptedException {
-        long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+        long until = System.nanoTime() + TimeUnit.SECONDS.toNanos(30);
         while (!condition.getAsBoolean()) {
             if (System.nanoTime() > until) {
                 throw new AssertionError("timed out waiting until " + what);
@@ -229,6 +229,9 @@ class WorkerAvailabilityTest {
                     Frame placed = good.nextNotHeartbeat();
                     assertThat(placed.type()).as(placed.header().toString()).isEqualTo("placed");
                 }
+                // The worker stops a method when its daemon's connection closes, on its session's thread: the next
+                // daemon comes once that one has given its place back, so that only the attackers could take it.
+                await("the good daemon's method has stopped", () -> w.methodsRunning() == 0);
             }
         } finally {
             attacking.set(false);
