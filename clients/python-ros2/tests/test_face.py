@@ -84,11 +84,11 @@ def test_stream_topics_carry_the_sockets_samples_with_their_source_time(rig, pro
 
 
 def test_words_and_rewards_arrive_reliably_with_their_samples(rig, probe):
-    probe.listen(String, NS + "/command", RELIABLE)
-    probe.listen(String, NS + "/command/sample", RELIABLE)
-    probe.listen(Float64, NS + "/reward", RELIABLE)
-    probe.listen(String, NS + "/reward/sample", RELIABLE)
-    probe.wait_for(lambda: rig.face.alive() and probe.node.count_publishers(NS + "/reward") > 0, WAIT_S, "the face")
+    subs = [probe.listen(String, NS + "/command", RELIABLE), probe.listen(String, NS + "/command/sample", RELIABLE),
+            probe.listen(Float64, NS + "/reward", RELIABLE), probe.listen(String, NS + "/reward/sample", RELIABLE)]
+    # A word and a reward are published once: wait until the face's publisher of every topic is matched with this
+    # node's subscription (DDS discovery), not only seen in the graph, or on a busy machine they are gone unheard.
+    probe.wait_for(lambda: rig.face.alive() and all(s.get_publisher_count() > 0 for s in subs), WAIT_S, "the face")
     rig.truth.send({"op": "note", "label": "left"})      # the teacher plays E5 on the microphone
     rig.truth.send({"op": "reward", "value": -1})        # and types -1 on the keyboard
     probe.wait_for(lambda: probe.messages(NS + "/command") and probe.messages(NS + "/reward"), WAIT_S, "word and reward")
