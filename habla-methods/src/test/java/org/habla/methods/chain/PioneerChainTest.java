@@ -63,7 +63,8 @@ class PioneerChainTest {
         String hello = "{\"type\":\"hello\",\"protocol\":\"habla-interface/1\",\"robot\":\"rover\",\"channels\":"
                 + CHANNELS + "}";
         try (InterfaceRobot robot = new InterfaceRobot(hello.replaceAll("\\s+", " "), 3.0, 2.0, 4.0)) {
-            String json = CONFIG.formatted(robot.port(), CHANNELS, freePort(), freePort());
+            int[] sockets = org.habla.testing.DaemonProcess.freePorts(2); // held together, so never the same port twice
+            String json = CONFIG.formatted(robot.port(), CHANNELS, sockets[0], sockets[1]);
             PluginRegistry registry = PluginRegistry.discover();
             try (Daemon daemon = Daemon.start(new ConfigLoader(registry).parse(json), registry, EngineClock.system());
                     Socket action = new Socket("127.0.0.1", daemon.port("action"));

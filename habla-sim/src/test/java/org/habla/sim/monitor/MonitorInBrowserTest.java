@@ -7,6 +7,8 @@ import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import org.habla.config.ConfigLoader;
 import org.habla.config.HablaConfig;
 import org.habla.daemon.Daemon;
@@ -107,9 +109,21 @@ class MonitorInBrowserTest {
         return json.writeValueAsString(root);
     }
 
+    /** Ports {@link #freePort} has handed out in this JVM. */
+    private static final Set<Integer> GIVEN = ConcurrentHashMap.newKeySet();
+
+    /**
+     * A free port not handed out before in this JVM: the kernel may give the same free port to two binds in a row,
+     * and a config asking for one twice is refused ("duplicate port").
+     */
     static int freePort() throws Exception {
-        try (ServerSocket s = new ServerSocket(0)) {
-            return s.getLocalPort();
+        for (int attempt = 0; attempt < 1000; attempt++) {
+            try (ServerSocket s = new ServerSocket(0)) {
+                if (GIVEN.add(s.getLocalPort())) {
+                    return s.getLocalPort();
+                }
+            }
         }
+        throw new java.io.IOException("no free port left that was not handed out before");
     }
 }
