@@ -207,7 +207,9 @@ class AiboSimulatorTest {
         int before = sink.on("audio").size();
         JsonNode reply = op("{\"op\":\"say\",\"label\":\"left\"}");
         assertThat(reply.has("ok")).isTrue();
-        assertThat(truth.next(n -> n.has("t"), 10).path("aibo").path("lastPhrase").asText()).isEqualTo("turn left");
+        // Lines the server wrote before the operation took effect may still be on their way: wait for the state.
+        JsonNode said = truth.next(n -> n.has("t") && n.path("aibo").path("lastPhrase").asText().equals("turn left"), LINES);
+        assertThat(said).as("a ground-truth line with the phrase").isNotNull();
         assertThat(DriverLink.await(LIMIT, () -> loudest(before) > 10 * quiet)).as("an utterance over the noise")
                 .isTrue();
     }
