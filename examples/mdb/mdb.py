@@ -420,25 +420,27 @@ class Brain:
         # the ball it had lost 0.74 m "ahead"; when its moves change nothing it sees, it tries moves at random.
         lost = perception.command not in COMMANDS and self.unseen > self.LOST_AFTER
         explored = lost or self.rng.random() < self.epsilon
+        candidates = ACTIONS if perception.command in COMMANDS else self.approved()
+        untried = self._untried(perception, candidates)
         if explored:
             action = self.rng.choice(ACTIONS)
         else:
-            candidates = ACTIONS if perception.command in COMMANDS else self.approved()
-            untried = self._untried(perception, candidates)
-            top = max(scores[a] for a in (untried or candidates))
-            action = self.rng.choice([a for a in (untried or candidates) if scores[a] >= top - 1e-9])
-        self.trying = action if action in self._untried(perception, self.approved()) else None
+            pool = untried or candidates
+            top = max(scores[a] for a in pool)
+            action = self.rng.choice([a for a in pool if scores[a] >= top - 1e-9])
+        self.trying = action if action in untried else None
         self.decisions += 1
         return action, explored, scores
 
     def stuck(self):
         """Whether the robot, alone and in sight of the target, has made STUCK_AFTER decisions without coming
-        STUCK_GAIN_M closer or turning STUCK_GAIN_RAD more towards the target than it was before them. Under load the Aibo heard its teacher late and was never
-        rewarded for `forward`; alone, with the ball ahead, it turned left and right for half a minute, the only
-        moves approved, while its satisfaction model ranked `forward` first. Stuck, it tries the moves not approved,
-        one at a time, the best scored first: one that brings it closer is approved from then on (`proven`), one that
-        does not is left until the robot is no longer stuck. Moves that only happened
-        to bring it closer while exploring are not: exploration is where the models that misled it came from."""
+        STUCK_GAIN_M closer or turning STUCK_GAIN_RAD more towards the target than it was before them. Under load
+        the Aibo heard its teacher late and was never rewarded for `forward`; alone, with the ball ahead, it turned
+        left and right for half a minute, the only moves approved, while its satisfaction model ranked `forward`
+        first. Stuck, it tries the moves not approved, one at a time, the best scored first: one that brings it
+        closer is approved from then on (`proven`), one that does not is left until the robot is no longer stuck.
+        Moves that only happened to bring it closer while exploring are not: exploration is where the models that
+        misled it came from."""
         if len(self.alone) <= self.STUCK_AFTER:
             return False
         (d0, a0), since = self.alone[0], list(self.alone)[1:]
