@@ -14,6 +14,8 @@ public final class Microphone {
     public static final int RATE_HZ = 16_000;
     /** The room's noise, in 16-bit sample units (about -55 dB full scale). */
     static final double NOISE_RMS = 60;
+    /** How long after its end a sound is kept for a client still behind it: ten seconds. */
+    private static final long KEPT_SAMPLES = 10L * RATE_HZ;
 
     private record Sound(long start, short[] pcm) {
         long end() {
@@ -33,7 +35,8 @@ public final class Microphone {
      * queued. Returns the sample at which it starts.
      */
     public synchronized long play(short[] mono, long nowSample) {
-        while (!sounds.isEmpty() && sounds.peekFirst().end() <= nowSample) {
+        // a sound over for a while is forgotten; one just over may still be owed to a client a little behind
+        while (!sounds.isEmpty() && sounds.peekFirst().end() <= nowSample - KEPT_SAMPLES) {
             sounds.removeFirst();
         }
         long start = sounds.isEmpty() ? nowSample : Math.max(nowSample, sounds.peekLast().end());

@@ -110,7 +110,8 @@ public final class DaemonReadiness {
         return out;
     }
 
-    private static JsonNode snapshot(int port) throws IOException {
+    /** One answer of the status endpoint on loopback {@code port}: every method, link and socket as the daemon sees it. */
+    public static JsonNode snapshot(int port) throws IOException {
         try (Socket s = new Socket()) {
             s.connect(new InetSocketAddress("127.0.0.1", port), READ_TIMEOUT_MILLIS);
             s.setSoTimeout(READ_TIMEOUT_MILLIS);

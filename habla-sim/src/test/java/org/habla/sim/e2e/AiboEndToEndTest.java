@@ -76,21 +76,35 @@ class AiboEndToEndTest {
     @Order(2)
     void aSpokenCommandReachesTheCommandSocket() throws Exception {
         double longest = longestTake("go forward");
-        Process client = rig.probeAsync("first", "" + rig.port("command"), "30");
-        try (BufferedReader out = new BufferedReader(new InputStreamReader(client.getInputStream(), StandardCharsets.UTF_8))) {
-            assertThat(out.readLine()).contains("ready");
-            long said = System.currentTimeMillis();
-            rig.truth.send(TruthLink.op("say").put("label", "forward"));
-            JsonNode got = new ObjectMapper().readTree(out.readLine());
-            assertThat(got.path("value").asText()).isEqualTo("forward");
-            // How soon is a figure of bench/run worker (docs/performance.md), not of a test on a busy machine.
-            double delayS = got.path("wall").asDouble() - said / 1000.0;
-            System.out.printf("end to end: 'forward' on the command socket %.2f s after the teacher began a take of "
-                    + "at most %.2f s%n", delayS, longest);
-        } finally {
-            client.waitFor(5, TimeUnit.SECONDS);
-            client.destroyForcibly();
+        // A teacher whose command went unheard says it again, as the paper's teacher did: up to three takes, each
+        // a recording picked at random. Whatever reaches the socket must be the command said; a take that reaches
+        // nothing is reported with what the daemon's chain says of it, so a miss is explained, not only counted.
+        String heard = null;
+        for (int take = 1; take <= 3 && heard == null; take++) {
+            Process client = rig.probeAsync("first", "" + rig.port("command"), "20");
+            try (BufferedReader out = new BufferedReader(new InputStreamReader(client.getInputStream(), StandardCharsets.UTF_8))) {
+                assertThat(out.readLine()).contains("ready");
+                long said = System.currentTimeMillis();
+                rig.truth.send(TruthLink.op("say").put("label", "forward"));
+                String line = out.readLine();
+                if (line == null) {
+                    System.out.printf("end to end: take %d of 'go forward' reached nothing in 20 s; the chain says:%n%s%n",
+                            take, rig.methodStatus("microphone", "audio", "speech", "command"));
+                    continue;
+                }
+                JsonNode got = new ObjectMapper().readTree(line);
+                heard = got.path("value").asText();
+                assertThat(heard).as("what take %d of 'go forward' gave", take).isEqualTo("forward");
+                // How soon is a figure of bench/run worker (docs/performance.md), not of a test on a busy machine.
+                System.out.printf("end to end: 'forward' on the command socket %.2f s after the teacher began take %d "
+                        + "(each at most %.2f s)%n", got.path("wall").asDouble() - said / 1000.0, take, longest);
+            } finally {
+                client.waitFor(5, TimeUnit.SECONDS);
+                client.destroyForcibly();
+            }
         }
+        assertThat(heard).as("a phrase on the command socket from one of three takes; the daemon's chain says:%n%s",
+                rig.methodStatus("microphone", "audio", "speech", "command")).isNotNull();
     }
 
     @Test

@@ -106,6 +106,25 @@ final class SimulatedDeployment implements AutoCloseable {
         DaemonReadiness.await(port, timeoutMs, () -> daemon.alive());
     }
 
+    /**
+     * What the daemon's status endpoint says of these methods (readiness, inputs with their dropped and conflated
+     * counts): the account of where a sample went when an end-to-end check misses it.
+     */
+    String methodStatus(String... ids) {
+        try {
+            int port = JSON.readTree(Files.readString(config)).path("status").path("port").asInt();
+            List<String> out = new ArrayList<>();
+            for (JsonNode m : DaemonReadiness.snapshot(port).path("methods")) {
+                if (List.of(ids).contains(m.path("id").asText())) {
+                    out.add(m.toString());
+                }
+            }
+            return String.join("\n", out);
+        } catch (IOException e) {
+            return "(no status: " + e.getMessage() + ")";
+        }
+    }
+
     /** Puts the robot at a pose (world frame) and returns the first ground truth after it. */
     JsonNode place(double x, double y, double theta) throws Exception {
         ObjectNode reset = TruthLink.op("reset");
