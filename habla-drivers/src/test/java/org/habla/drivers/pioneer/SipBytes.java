@@ -21,6 +21,8 @@ final class SipBytes {
     boolean tail;
     int batteryX10 = 130;
     int rotVel;
+    /** The controller's temperature in the tail, °C; -127 (0x81) says it has none. */
+    int temperature = -127;
 
     SipBytes sonar(int index, int range) {
         sonar.put(index, range);
@@ -52,7 +54,7 @@ final class SipBytes {
             u16(b, rotVel);
             u16(b, 0);
             u16(b, 0);
-            b.write(0x81);
+            b.write(temperature & 0xFF);
             b.write(77);
         }
         return ArcosPacket.of(b.toByteArray());

@@ -161,4 +161,39 @@ class SipTranslatorTest {
         assertThat(status.text("robotName")).isEqualTo("AMRISim");
         assertThat(status.text("robotSubclass")).isEqualTo("p2dx");
     }
+
+    @Test
+    void theStallBumperAndStatusRecordsAreWrittenAsTheDriverDocumentsThem() {
+        SipBytes b = new SipBytes();
+        b.type = StandardSip.TYPE_MOVING;
+        b.stallAndBumpers = 0x0001 | (1 << 9) | (1 << 5);
+        b.flags = 0x21;
+        translator.identity(new RobotIdentity("AMRISim", "Pioneer", "p2dx"));
+        translator.ignoredPackets(3);
+        translate(b);
+        assertThat(json("stall")).isEqualTo("{\"left\":true,\"right\":false}");
+        assertThat(json("bumpers")).isEqualTo("{\"front\":[true,false,false,false,false],"
+                + "\"rear\":[false,false,false,false,true],\"frontHit\":true,\"rearHit\":true}");
+        assertThat(json("status")).isEqualTo("{\"motorsEnabled\":true,\"sonarOn\":false,\"stopButton\":true,"
+                + "\"eStall\":false,\"moving\":true,\"flags\":33,\"robotName\":\"AMRISim\",\"robotClass\":\"Pioneer\","
+                + "\"robotSubclass\":\"p2dx\",\"ignoredPackets\":3}");
+
+        b.tail = true;
+        b.stallAndBumpers = 0;
+        translate(b);
+        assertThat(json("bumpers")).isEqualTo("{\"front\":[false,false,false,false,false],"
+                + "\"rear\":[false,false,false,false,false],\"frontHit\":false,\"rearHit\":false}");
+        assertThat(json("status")).as("the newer firmware's tail; -127 is no temperature").isEqualTo(
+                "{\"motorsEnabled\":true,\"sonarOn\":false,\"stopButton\":true,\"eStall\":false,\"moving\":true,"
+                + "\"flags\":33,\"robotName\":\"AMRISim\",\"robotClass\":\"Pioneer\",\"robotSubclass\":\"p2dx\","
+                + "\"ignoredPackets\":3,\"chargeState\":0,\"faultFlags\":0,\"stateOfChargePct\":77}");
+        b.temperature = 31;
+        translate(b);
+        assertThat(json("status")).endsWith("\"chargeState\":0,\"faultFlags\":0,\"temperatureC\":31,"
+                + "\"stateOfChargePct\":77}");
+    }
+
+    private String json(String channel) {
+        return ((RecordValue) sink.last(channel)).jsonView().toString();
+    }
 }

@@ -59,6 +59,22 @@ class WorldStateSessionTest {
     }
 
     @Test
+    void theHeadPoseAndButtonRecordsAreWrittenAsTheDriverDocumentsThem() throws IOException {
+        float[] outputs = new float[Ers7.NUM_OUTPUTS];
+        outputs[Ers7.HEAD_TILT] = -0.5f;
+        outputs[Ers7.HEAD_PAN] = 0.25f;
+        outputs[Ers7.HEAD_NOD] = 0.125f;
+        session.readNext(new ByteArrayInputStream(TekkotsuPackets.worldState("ERS-7", outputs,
+                TekkotsuPackets.ers7Sensors(), TekkotsuPackets.ers7Buttons(), new float[Ers7.NUM_PID_JOINTS])), sink);
+
+        assertThat(((RecordValue) sink.on("head-pose").get(0)).jsonView().toString())
+                .isEqualTo("{\"tiltRad\":-0.5,\"panRad\":0.25,\"nodRad\":0.125}");
+        assertThat(((RecordValue) sink.on("buttons").get(0)).jsonView().toString()).isEqualTo("{\"leftFrontPaw\":1.0,"
+                + "\"rightFrontPaw\":0.0,\"leftBackPaw\":1.0,\"rightBackPaw\":0.0,\"chin\":1.0,\"headTouch\":0.5,"
+                + "\"backFront\":0.25,\"backMiddle\":0.75,\"backRear\":1.0,\"wirelessSwitch\":1.0}");
+    }
+
+    @Test
     void packetsSplitIntoSingleBytesDecodeTheSame() throws IOException {
         byte[] two = concat(TekkotsuPackets.ers7WorldState(), TekkotsuPackets.ers7WorldState());
         InputStream in = new OneByteAtATime(two);

@@ -121,4 +121,18 @@ class MovementSafetyTest {
         h.push("nearest", nearest(5, 5)).push("motion", VectorValue.of(0.4, 0.4));
         assertThat(h.last("motion")).isEqualTo(VectorValue.of(0.1, 0.1));
     }
+
+    @Test
+    void aVetosDetailIsWrittenForControlClientsFieldByFieldAsTheProtocolDocumentsIt() {
+        MethodHarness h = safety();
+        h.push("motion", VectorValue.of(0.2, 0.1));
+        h.push("nearest", nearest(0.25, 3.0)).push("motion", VectorValue.of(0.5, 0));
+        h.advanceMillis(1_500).push("motion", VectorValue.of(-0.1, -0.5));
+        assertThat(h.notices()).extracting(n -> n.detail().jsonView().toString()).containsExactly(
+                "{\"askedMps\":0.2,\"askedRadps\":0.1,\"reason\":\"no_range_data\",\"maxAgeMs\":1000}",
+                "{\"askedMps\":0.5,\"askedRadps\":0.0,\"reason\":\"obstacle_ahead\",\"obstacleM\":0.25,"
+                        + "\"stopDistanceM\":0.3}",
+                "{\"askedMps\":-0.1,\"askedRadps\":-0.5,\"reason\":\"no_range_data\",\"maxAgeMs\":1000,"
+                        + "\"ageMs\":1500}");
+    }
 }

@@ -68,4 +68,17 @@ class LampTest {
         h.push("level", new NumberValue(0.8));
         assertThat(h.values("command")).as("switched off at the wall: sent again").hasSize(2);
     }
+
+    @Test
+    void theCommandsAreWrittenInTheZigbeeLightSchema() {
+        MethodHarness dimmable = MethodHarness.started("lamp", new Lamp(ParamsJson.of(Lamp.Params.class, "{}")));
+        dimmable.push("level", new NumberValue(0.5)).push("level", new NumberValue(0));
+        MethodHarness plain = MethodHarness.started("lamp",
+                new Lamp(ParamsJson.of(Lamp.Params.class, "{\"dimmable\": false}")));
+        plain.push("level", new NumberValue(1));
+        assertThat(dimmable.values("command")).extracting(v -> ((RecordValue) v).jsonView().toString())
+                .containsExactly("{\"state\":\"ON\",\"brightness\":127}", "{\"state\":\"OFF\"}");
+        assertThat(plain.values("command")).extracting(v -> ((RecordValue) v).jsonView().toString())
+                .containsExactly("{\"state\":\"ON\"}");
+    }
 }

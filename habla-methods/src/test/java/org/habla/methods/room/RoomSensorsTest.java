@@ -58,4 +58,15 @@ class RoomSensorsTest {
         assertThat(speaker.values("command")).containsExactly(
                 RecordValue.builder().put("say", "hello").put("volume", 30).build());
     }
+
+    @Test
+    void theBlindsAndSpeakerCommandsAreTheJsonTheDevicesTake() {
+        MethodHarness blinds = MethodHarness.started("blinds", new Blinds(ParamsJson.of(Blinds.Params.class, "{}")));
+        blinds.push("open", new NumberValue(0.42));
+        assertThat(((RecordValue) blinds.last("command")).jsonView().toString()).isEqualTo("{\"position\":42}");
+        MethodHarness speaker = MethodHarness.started("speaker", new RoomSpeaker(ParamsJson.of(RoomSpeaker.Params.class, "{}")));
+        speaker.push("text", new TextValue("dinner is ready"));
+        assertThat(((RecordValue) speaker.last("command")).jsonView().toString())
+                .isEqualTo("{\"say\":\"dinner is ready\",\"volume\":50}");
+    }
 }
