@@ -208,6 +208,11 @@ public final class RecordLayout<F extends RecordForm> {
             return field(name, "integer", f -> value.applyAsLong(f));
         }
 
+        /** A whole number that a record may lack, written as a long: null leaves it out. */
+        public Builder<F> optionalLongInteger(String name, Function<F, Long> value) {
+            return field(name, "integer", value::apply).optional();
+        }
+
         public Builder<F> flag(String name, Predicate<F> value) {
             return field(name, "boolean", value::test);
         }

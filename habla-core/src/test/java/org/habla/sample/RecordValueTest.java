@@ -82,6 +82,30 @@ class RecordValueTest {
         assertThat(made).as("the JSON is made once").hasValue(1);
     }
 
+    /** A count that a record may lack. */
+    record Count(Long items) implements RecordForm {
+        static final RecordLayout<Count> LAYOUT = RecordLayout.of(Count.class)
+                .optionalLongInteger("items", Count::items).doc("how many, when known").build();
+
+        @Override
+        public RecordLayout<Count> layout() {
+            return LAYOUT;
+        }
+    }
+
+    @Test
+    void anOptionalWholeNumberIsWrittenAsALongOrLeftOut() {
+        RecordValue some = RecordValue.of(new Count(5_000_000_000L));
+        assertThat(some.jsonView().toString()).isEqualTo("{\"items\":5000000000}");
+        assertThat(some).isEqualTo(RecordValue.builder().put("items", 5_000_000_000L).build());
+        assertThat(RecordValue.of(new Count(3L))).isEqualTo(RecordValue.builder().put("items", 3).build())
+                .hasSameHashCodeAs(RecordValue.builder().put("items", 3).build());
+        assertThat(RecordValue.of(new Count(null)).jsonView().toString()).isEqualTo("{}");
+        assertThat(RecordValue.of(new Count(null)).has("items")).isFalse();
+        assertThat(Count.LAYOUT.fields().get(0).optional()).isTrue();
+        assertThat(Count.LAYOUT.fields().get(0).type()).isEqualTo("integer");
+    }
+
     @Test
     void aRecordThatCameAsJsonIsReadByTheFormsReader() {
         RecordValue r = RecordValue.of(JsonNodeFactory.instance.objectNode().put("tiltRad", 0.25));
