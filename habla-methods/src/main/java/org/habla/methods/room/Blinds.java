@@ -23,7 +23,7 @@ public final class Blinds extends SensorActuatorMethod {
 
     private static final InputPort<NumberValue> OPEN = InputPort.of("open", NumberValue.class, Delivery.queue(16));
     private static final OutputPort<RecordValue> COMMAND = OutputPort.of("command", RecordValue.class,
-            Shape.record("the cover command: position in percent", "position"));
+            Shape.record("the cover command: position in percent", CoverCommand.LAYOUT));
     static final Ports PORTS = Ports.of(OPEN, COMMAND);
 
     private final Params params;
@@ -49,7 +49,7 @@ public final class Blinds extends SensorActuatorMethod {
         int position = params.invert() ? 100 - percent : percent;
         if (last == null || last != position) {
             last = position;
-            emit(command, RecordValue.builder().put("position", position).build());
+            emit(command, RecordValue.of(new CoverCommand(position)));
         }
     }
 

@@ -35,7 +35,7 @@ public final class Lamp extends SensorActuatorMethod {
     private static final InputPort<RecordValue> STATE = InputPort.optional("state", RecordValue.class,
             Delivery.latest());
     private static final OutputPort<RecordValue> COMMAND = OutputPort.of("command", RecordValue.class,
-            Shape.record("the lamp command: state ON/OFF and brightness", "state", "brightness"));
+            Shape.record("the lamp command: state ON/OFF and brightness", LampCommand.LAYOUT));
     private static final OutputPort<NumberValue> ECHO = OutputPort.of("level", NumberValue.class,
             Shape.number("", "the level the lamp was told, 0..1"));
     private static final OutputPort<NumberValue> REPORTED = OutputPort.of("reported", NumberValue.class,
@@ -49,7 +49,7 @@ public final class Lamp extends SensorActuatorMethod {
     /** What the lamp last said it does; null until it says. */
     private RecordValue reported;
     /** The last command sent while fresh that the lamp has not answered since; null when none. */
-    private RecordValue pending;
+    private LampCommand pending;
     private long pendingMicros;
 
     /**
@@ -87,15 +87,15 @@ public final class Lamp extends SensorActuatorMethod {
             return;
         }
         v = Math.max(0, Math.min(1, v));
-        RecordValue next;
+        LampCommand next;
         double sent;
         if (params.dimmable()) {
             int brightness = (int) Math.round(v * params.maxBrightness());
-            next = brightness == 0 ? off() : RecordValue.builder().put("state", "ON").put("brightness", brightness).build();
+            next = brightness == 0 ? LampCommand.OFF : LampCommand.dimmedTo(brightness);
             sent = brightness / (double) params.maxBrightness();
         } else {
             boolean on = v > params.onAbove();
-            next = on ? RecordValue.builder().put("state", "ON").build() : off();
+            next = on ? LampCommand.ON : LampCommand.OFF;
             sent = on ? 1 : 0;
         }
         boolean fresh = !stale();
@@ -108,7 +108,7 @@ public final class Lamp extends SensorActuatorMethod {
         }
         pending = fresh ? next : null;
         pendingMicros = now;
-        emit(command, next);
+        emit(command, RecordValue.of(next));
         emit(echo, new NumberValue(sent));
     }
 
@@ -119,16 +119,16 @@ public final class Lamp extends SensorActuatorMethod {
         emit(reportedLevel, new NumberValue(level(state)));
     }
 
-    /** Whether a lamp in state {@code state} already does what {@code command} asks. */
-    private boolean does(RecordValue state, RecordValue command) {
+    /** Whether a lamp in state {@code state} (its own message) already does what {@code command} asks. */
+    private boolean does(RecordValue state, LampCommand command) {
         boolean on = isOn(state);
-        if (!isOn(command)) {
+        if (!command.on()) {
             return !on;
         }
         if (!on) {
             return false;
         }
-        return !params.dimmable() || Math.abs(brightness(state) - brightness(command)) <= 1;
+        return !params.dimmable() || Math.abs(brightness(state) - command.brightness()) <= 1;
     }
 
     private double level(RecordValue state) {
@@ -145,10 +145,6 @@ public final class Lamp extends SensorActuatorMethod {
 
     private static double brightness(RecordValue r) {
         return r.get("brightness").isNumber() ? r.get("brightness").doubleValue() : Double.NaN;
-    }
-
-    private static RecordValue off() {
-        return RecordValue.builder().put("state", "OFF").build();
     }
 
     /** Makes {@code lamp} methods. */

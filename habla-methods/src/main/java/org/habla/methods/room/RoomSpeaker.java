@@ -23,7 +23,7 @@ public final class RoomSpeaker extends SensorActuatorMethod {
 
     private static final InputPort<TextValue> TEXT = InputPort.of("text", TextValue.class, Delivery.queue(16));
     private static final OutputPort<RecordValue> COMMAND = OutputPort.of("command", RecordValue.class,
-            Shape.record("what to say and how loud (percent)", "say", "volume"));
+            Shape.record("what to say and how loud (percent)", SpeakerCommand.LAYOUT));
     static final Ports PORTS = Ports.of(TEXT, COMMAND);
 
     private final Params params;
@@ -51,7 +51,7 @@ public final class RoomSpeaker extends SensorActuatorMethod {
         if (text.length() > params.maxLength()) {
             text = text.substring(0, params.maxLength());
         }
-        emit(command, RecordValue.builder().put("say", text).put("volume", params.volume()).build());
+        emit(command, RecordValue.of(new SpeakerCommand(text, params.volume())));
     }
 
     /** Makes {@code room-speaker} methods. */

@@ -14,7 +14,10 @@ import org.habla.methods.perception.NearestObstacle;
 import org.habla.methods.position.TargetPosition;
 import org.habla.methods.room.Climate;
 import org.habla.methods.room.ComfortReport;
+import org.habla.methods.room.CoverCommand;
+import org.habla.methods.room.LampCommand;
 import org.habla.methods.room.LampLevels;
+import org.habla.methods.room.SpeakerCommand;
 import org.habla.methods.sensors.ButtonStates;
 import org.habla.methods.virtual.LinkStatus;
 import org.habla.methods.virtual.TargetBearing;
@@ -65,7 +68,10 @@ class RecordFormsTest {
             Map.entry(TeacherEmotion.class, "{\"emotion\":\"happy\",\"valence\":0.6,\"arousal\":0.4,"
                     + "\"words\":\"good dog\",\"intensity\":-18.0,\"source\":\"words\"}"),
             Map.entry(ButtonStates.class, "{\"backMiddle\":true,\"headTouch\":false}"),
-            Map.entry(LampLevels.class, "{\"desk\":0.5,\"sofa\":0.0}"));
+            Map.entry(LampLevels.class, "{\"desk\":0.5,\"sofa\":0.0}"),
+            Map.entry(LampCommand.class, "{\"state\":\"ON\",\"brightness\":127}"),
+            Map.entry(CoverCommand.class, "{\"position\":75}"),
+            Map.entry(SpeakerCommand.class, "{\"say\":\"dinner is ready\",\"volume\":50}"));
 
     private static final List<Case<?>> CASES = List.of(
             new Case<>(RangeScan.class, List.of(SCAN, SCAN_WITHOUT_POSES), RangeScan::fromRecord),
@@ -91,7 +97,10 @@ class RecordFormsTest {
             new Case<>(TeacherEmotion.class, List.of(new TeacherEmotion("happy", 0.6, 0.4, "good dog", -18.0,
                     "words")), null),
             new Case<>(ButtonStates.class, List.of(new ButtonStates(orderedFlags())), null),
-            new Case<>(LampLevels.class, List.of(new LampLevels(orderedLevels())), null));
+            new Case<>(LampLevels.class, List.of(new LampLevels(orderedLevels())), null),
+            new Case<>(LampCommand.class, List.of(LampCommand.dimmedTo(127), LampCommand.ON, LampCommand.OFF), null),
+            new Case<>(CoverCommand.class, List.of(new CoverCommand(75)), null),
+            new Case<>(SpeakerCommand.class, List.of(new SpeakerCommand("dinner is ready", 50)), null));
 
     private static Map<String, Boolean> orderedFlags() {
         Map<String, Boolean> m = new java.util.LinkedHashMap<>();

@@ -80,5 +80,7 @@ class LampTest {
                 .containsExactly("{\"state\":\"ON\",\"brightness\":127}", "{\"state\":\"OFF\"}");
         assertThat(plain.values("command")).extracting(v -> ((RecordValue) v).jsonView().toString())
                 .containsExactly("{\"state\":\"ON\"}");
+        assertThat(((RecordValue) dimmable.last("command")).form(LampCommand.class)).as("typed inside the daemon")
+                .contains(LampCommand.OFF);
     }
 }

@@ -64,9 +64,12 @@ class RoomSensorsTest {
         MethodHarness blinds = MethodHarness.started("blinds", new Blinds(ParamsJson.of(Blinds.Params.class, "{}")));
         blinds.push("open", new NumberValue(0.42));
         assertThat(((RecordValue) blinds.last("command")).jsonView().toString()).isEqualTo("{\"position\":42}");
+        assertThat(((RecordValue) blinds.last("command")).form(CoverCommand.class)).contains(new CoverCommand(42));
         MethodHarness speaker = MethodHarness.started("speaker", new RoomSpeaker(ParamsJson.of(RoomSpeaker.Params.class, "{}")));
         speaker.push("text", new TextValue("dinner is ready"));
         assertThat(((RecordValue) speaker.last("command")).jsonView().toString())
                 .isEqualTo("{\"say\":\"dinner is ready\",\"volume\":50}");
+        assertThat(((RecordValue) speaker.last("command")).form(SpeakerCommand.class))
+                .contains(new SpeakerCommand("dinner is ready", 50));
     }
 }
