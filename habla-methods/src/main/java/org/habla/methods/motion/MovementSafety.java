@@ -141,7 +141,7 @@ public final class MovementSafety extends ProcessingMethod {
                 emit(vetoOut, new TextValue(v.message()));
             }
             if (asked || veto.isEmpty()) {
-                tellControl("veto", v.message(), v.detail());
+                tellControl("veto", v.message(), RecordValue.of(v.detail()));
             }
         }
         veto = v == null ? "" : v.message();
@@ -158,28 +158,23 @@ public final class MovementSafety extends ProcessingMethod {
             return null;
         }
         String direction = v > 0 ? "forward" : "backward";
-        RecordValue.Builder detail = RecordValue.builder().put("askedMps", v).put("askedRadps", vw[1]);
         long now = nowMicros();
         if (!fresh(now)) {
-            detail.put("reason", "no_range_data").put("maxAgeMs", params.maxAgeMs());
-            if (nearestMicros != Long.MIN_VALUE) {
-                detail.put("ageMs", (now - nearestMicros) / 1_000);
-            }
+            Long ageMs = nearestMicros == Long.MIN_VALUE ? null : (now - nearestMicros) / 1_000;
             return new Veto(String.format(Locale.ROOT, "%s motion vetoed: no fresh range data (none in the last %d ms)",
-                    direction, params.maxAgeMs()), detail.build());
+                    direction, params.maxAgeMs()), new VetoDetail.NoRangeData(v, vw[1], params.maxAgeMs(), ageMs));
         }
         double obstacle = v > 0 ? aheadM : behindM;
         if (obstacle >= params.stopDistanceM()) {
             return null;
         }
-        detail.put("reason", v > 0 ? "obstacle_ahead" : "obstacle_behind").put("obstacleM", obstacle)
-                .put("stopDistanceM", params.stopDistanceM());
         return new Veto(String.format(Locale.ROOT, "%s motion vetoed: obstacle %.2f m %s (stop distance %.2f m)",
-                direction, obstacle, v > 0 ? "ahead" : "behind", params.stopDistanceM()), detail.build());
+                direction, obstacle, v > 0 ? "ahead" : "behind", params.stopDistanceM()),
+                new VetoDetail.Obstacle(v, vw[1], obstacle, params.stopDistanceM()));
     }
 
     /** A veto: the sentence for people and the fields for programs. */
-    private record Veto(String message, RecordValue detail) {
+    private record Veto(String message, VetoDetail detail) {
     }
 
     /** The engine stopped the robot: nothing is wanted any more, and the next motion is decided afresh. */

@@ -134,5 +134,8 @@ class MovementSafetyTest {
                         + "\"stopDistanceM\":0.3}",
                 "{\"askedMps\":-0.1,\"askedRadps\":-0.5,\"reason\":\"no_range_data\",\"maxAgeMs\":1000,"
                         + "\"ageMs\":1500}");
+        assertThat(h.notices()).extracting(n -> n.detail().carriesForm()).as("typed until a socket writes it")
+                .containsExactly(new VetoDetail.NoRangeData(0.2, 0.1, 1000, null),
+                        new VetoDetail.Obstacle(0.5, 0, 0.25, 0.3), new VetoDetail.NoRangeData(-0.1, -0.5, 1000, 1500L));
     }
 }
