@@ -6,6 +6,8 @@ import java.io.IOException;
 import java.io.InputStream;
 import java.util.Arrays;
 import java.util.HexFormat;
+import java.util.LinkedHashMap;
+import java.util.Map;
 import java.util.Optional;
 import org.habla.driver.LinkSession;
 import org.habla.driver.ReadingSink;
@@ -109,21 +111,18 @@ final class WorldStateSession implements LinkSession {
             joints[i] = out[i];
         }
         jointsChannel.publish(sink, VectorValue.wrap(joints));
-        headPoseChannel.publish(sink, RecordValue.builder()
-                .put("tiltRad", (double) out[Ers7.HEAD_TILT])
-                .put("panRad", (double) out[Ers7.HEAD_PAN])
-                .put("nodRad", (double) out[Ers7.HEAD_NOD])
-                .build());
+        headPoseChannel.publish(sink, RecordValue.of(
+                new HeadPoseReading(out[Ers7.HEAD_TILT], out[Ers7.HEAD_PAN], out[Ers7.HEAD_NOD])));
         float[] s = p.sensors();
         irChannel.publish(sink, VectorValue.of(
                 s[Ers7.NEAR_IR] / 1000.0, s[Ers7.FAR_IR] / 1000.0, s[Ers7.CHEST_IR] / 1000.0));
         accelChannel.publish(sink, VectorValue.of(s[Ers7.B_ACCEL], s[Ers7.L_ACCEL], s[Ers7.D_ACCEL]));
-        RecordValue.Builder buttons = RecordValue.builder();
+        Map<String, Double> buttons = new LinkedHashMap<>();
         float[] b = p.buttons();
         for (int i = 0; i < b.length; i++) {
             buttons.put(Ers7.BUTTON_NAMES.get(i), unit(b[i]));
         }
-        buttonsChannel.publish(sink, buttons.build());
+        buttonsChannel.publish(sink, RecordValue.of(new ButtonsReading(buttons)));
     }
 
     /** A button value clamped to 0..1; NaN reads as not pressed. */

@@ -72,6 +72,9 @@ class WorldStateSessionTest {
         assertThat(((RecordValue) sink.on("buttons").get(0)).jsonView().toString()).isEqualTo("{\"leftFrontPaw\":1.0,"
                 + "\"rightFrontPaw\":0.0,\"leftBackPaw\":1.0,\"rightBackPaw\":0.0,\"chin\":1.0,\"headTouch\":0.5,"
                 + "\"backFront\":0.25,\"backMiddle\":0.75,\"backRear\":1.0,\"wirelessSwitch\":1.0}");
+        assertThat(((RecordValue) sink.on("head-pose").get(0)).form(HeadPoseReading.class)).as("typed inside the daemon")
+                .contains(new HeadPoseReading(-0.5, 0.25, 0.125));
+        assertThat(((RecordValue) sink.on("buttons").get(0)).form(ButtonsReading.class)).isPresent();
     }
 
     @Test

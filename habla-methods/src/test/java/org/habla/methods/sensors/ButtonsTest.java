@@ -2,8 +2,12 @@ package org.habla.methods.sensors;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import org.habla.method.MethodHarness;
+import org.habla.sample.RecordForm;
+import org.habla.sample.RecordLayout;
 import org.habla.sample.RecordValue;
 import org.habla.sample.TextValue;
 import org.junit.jupiter.api.Test;
@@ -43,5 +47,30 @@ class ButtonsTest {
         h.push("buttons", reading(0.4, 0));
         h.push("buttons", reading(0.85, 0));
         assertThat(h.values("touch")).containsExactly(new TextValue("headTouch"), new TextValue("headTouch"));
+    }
+
+    /** Button values typed by a driver, which this module does not know: read field by field, as JSON would be. */
+    record DriverButtons(Map<String, Double> values) implements RecordForm {
+        static final RecordLayout<DriverButtons> LAYOUT = RecordLayout.of(DriverButtons.class)
+                .entries("<button>", "number", DriverButtons::values).doc("each button's value").build();
+
+        @Override
+        public RecordLayout<DriverButtons> layout() {
+            return LAYOUT;
+        }
+    }
+
+    @Test
+    void buttonValuesTypedByTheDriverAreReadByName() {
+        Map<String, Double> values = new LinkedHashMap<>();
+        values.put("chin", 1.0);
+        values.put("headTouch", 0.25);
+        MethodHarness all = MethodHarness.started("buttons", new Buttons(ButtonsParams.defaults()));
+        all.push("buttons", RecordValue.of(new DriverButtons(values)));
+        assertThat(((RecordValue) all.last("pressed")).jsonView().toString())
+                .isEqualTo("{\"chin\":true,\"headTouch\":false}");
+        MethodHarness named = MethodHarness.started("buttons", new Buttons(new ButtonsParams(0.8, 0.5, List.of("chin"))));
+        named.push("buttons", RecordValue.of(new DriverButtons(values)));
+        assertThat(named.values("touch")).containsExactly(new TextValue("chin"));
     }
 }

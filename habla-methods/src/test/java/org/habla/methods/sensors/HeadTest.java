@@ -7,7 +7,10 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import org.habla.driver.ChannelDescriptor;
 import org.habla.method.MethodHarness;
+import org.habla.methods.gaze.HeadPose;
 import org.habla.sample.PayloadKind;
+import org.habla.sample.RecordForm;
+import org.habla.sample.RecordLayout;
 import org.habla.sample.RecordValue;
 import org.habla.sample.VectorValue;
 import org.junit.jupiter.api.Test;
@@ -54,5 +57,27 @@ class HeadTest {
         assertThat(((RecordValue) h.last("pose")).number("panRad")).isCloseTo(0.4, within(1e-12));
         assertThat(h.values("head")).isEmpty();
         assertThat(head.rejected()).isEqualTo(2);
+    }
+
+    /** A head pose typed by a driver, which this module does not know: read field by field, as JSON would be. */
+    record DriverHeadPose(double tiltRad, double panRad, double nodRad) implements RecordForm {
+        static final RecordLayout<DriverHeadPose> LAYOUT = RecordLayout.of(DriverHeadPose.class)
+                .number("tiltRad", DriverHeadPose::tiltRad).doc("tilt")
+                .number("panRad", DriverHeadPose::panRad).doc("pan")
+                .number("nodRad", DriverHeadPose::nodRad).doc("nod")
+                .build();
+
+        @Override
+        public RecordLayout<DriverHeadPose> layout() {
+            return LAYOUT;
+        }
+    }
+
+    @Test
+    void aPoseReadingTypedByTheDriverIsHandedOnAsAHeadPose() {
+        MethodHarness h = MethodHarness.started("head", new Head(HeadParams.defaults()));
+        h.push("pose", RecordValue.of(new DriverHeadPose(-0.5, 0.25, 0.125)));
+        RecordValue pose = (RecordValue) h.last("pose");
+        assertThat(pose.form(HeadPose.class)).contains(new HeadPose(-0.5, 0.25, 0.125));
     }
 }
