@@ -1,7 +1,5 @@
 package org.habla.drivers.pioneer;
 
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import org.habla.driver.ReadingSink;
 import org.habla.driver.SessionChannel;
 import org.habla.sample.NumberValue;
@@ -47,10 +45,9 @@ final class SipTranslator {
     void translate(StandardSip sip, ReadingSink sink) {
         odometry.publish(sink, odometry(sip));
         battery.publish(sink, new NumberValue(batteryV(sip)));
-        bumpers.publish(sink, bumpers(sip));
-        stall.publish(sink, RecordValue.builder()
-                .put("left", sip.leftStalled()).put("right", sip.rightStalled()).build());
-        status.publish(sink, status(sip));
+        bumpers.publish(sink, RecordValue.of(BumperReading.of(sip, params.frontBumpers(), params.rearBumpers())));
+        stall.publish(sink, RecordValue.of(StallReading.of(sip)));
+        status.publish(sink, RecordValue.of(StatusReading.of(sip, identity, ignoredPackets)));
         if (!sip.sonar().isEmpty()) {
             for (StandardSip.SonarReading r : sip.sonar()) {
                 if (!sonar.put(r.index(), r.range() * params.rangeConvFactor() / 1000.0)) {
@@ -79,47 +76,6 @@ final class SipTranslator {
     private static double batteryV(StandardSip sip) {
         int dv = sip.batteryX10().isPresent() && sip.batteryX10().getAsInt() > 0 ? sip.batteryX10().getAsInt() : sip.batteryDv();
         return dv / 10.0;
-    }
-
-    private RecordValue bumpers(StandardSip sip) {
-        ArrayNode front = JsonNodeFactory.instance.arrayNode();
-        ArrayNode rear = JsonNodeFactory.instance.arrayNode();
-        boolean frontHit = false;
-        boolean rearHit = false;
-        for (int i = 0; i < params.frontBumpers(); i++) {
-            front.add(sip.frontBumper(i));
-            frontHit |= sip.frontBumper(i);
-        }
-        for (int i = 0; i < params.rearBumpers(); i++) {
-            rear.add(sip.rearBumper(i));
-            rearHit |= sip.rearBumper(i);
-        }
-        return RecordValue.builder().set("front", front).set("rear", rear)
-                .put("frontHit", frontHit).put("rearHit", rearHit).build();
-    }
-
-    private RecordValue status(StandardSip sip) {
-        RobotIdentity id = identity;
-        RecordValue.Builder b = RecordValue.builder()
-                .put("motorsEnabled", sip.motorsEnabled())
-                .put("sonarOn", (sip.flags() & 0x1E) != 0)
-                .put("stopButton", (sip.flags() & 0x20) != 0)
-                .put("eStall", (sip.flags() & 0x40) != 0)
-                .put("moving", sip.moving())
-                .put("flags", sip.flags())
-                .put("robotName", id.name())
-                .put("robotClass", id.robotClass())
-                .put("robotSubclass", id.subclass())
-                .put("ignoredPackets", ignoredPackets);
-        sip.chargeState().ifPresent(v -> b.put("chargeState", v));
-        sip.faultFlags().ifPresent(v -> b.put("faultFlags", v));
-        sip.temperatureC().ifPresent(v -> {
-            if (v != -127) {
-                b.put("temperatureC", v);
-            }
-        });
-        sip.stateOfCharge().ifPresent(v -> b.put("stateOfChargePct", v));
-        return b.build();
     }
 
     /** The angle in (-π, π]. */

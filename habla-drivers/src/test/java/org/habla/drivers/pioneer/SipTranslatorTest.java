@@ -191,6 +191,10 @@ class SipTranslatorTest {
         translate(b);
         assertThat(json("status")).endsWith("\"chargeState\":0,\"faultFlags\":0,\"temperatureC\":31,"
                 + "\"stateOfChargePct\":77}");
+        assertThat(((RecordValue) sink.last("status")).form(StatusReading.class)).as("typed inside the daemon")
+                .hasValueSatisfying(s -> assertThat(s.temperatureC()).isEqualTo(31));
+        assertThat(((RecordValue) sink.last("stall")).form(StallReading.class)).contains(new StallReading(false, false));
+        assertThat(((RecordValue) sink.last("bumpers")).form(BumperReading.class)).isPresent();
     }
 
     private String json(String channel) {
