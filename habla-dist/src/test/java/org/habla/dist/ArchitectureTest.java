@@ -49,7 +49,7 @@ class ArchitectureTest {
     @Test
     void everyModuleIsImported() {
         for (String module : new String[] {"org.habla.graph", "org.habla.methods.speech", "org.habla.drivers.pioneer",
-            "org.habla.recording", "org.habla.monitor", "org.habla.cli", "org.habla.sim.pioneer"}) {
+            "org.habla.recording", "org.habla.monitor", "org.habla.cli", "org.habla.sim.pioneer", "org.habla.bench"}) {
             assertThat(classes.containPackage(module)).as(module).isTrue();
         }
         assertThat(classes.stream().filter(c -> c.getSimpleName().endsWith("Test"))).isEmpty();

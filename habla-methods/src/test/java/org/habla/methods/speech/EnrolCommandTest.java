@@ -55,9 +55,9 @@ class EnrolCommandTest {
         List<SpeechChain.Heard> heardAfter = after.run(stream, 32);
         System.out.printf("speech-recognition: before enrolment %s%n  after %s%n", heardBefore, heardAfter);
         StreamScore scoreBefore = new StreamScore();
-        scoreBefore.add(teacher.name(), teacher.items(), heardBefore, SpeechTuning.GRAMMAR);
+        scoreBefore.add(teacher.name(), teacher.items(), heardBefore, EvalSet.GRAMMAR);
         StreamScore scoreAfter = new StreamScore();
-        scoreAfter.add(teacher.name(), teacher.items(), heardAfter, SpeechTuning.GRAMMAR);
+        scoreAfter.add(teacher.name(), teacher.items(), heardAfter, EvalSet.GRAMMAR);
         assertThat(heardAfter.stream().map(SpeechChain.Heard::confidence).toList())
                 .as("the adapted model scores the teacher's utterances differently")
                 .isNotEqualTo(heardBefore.stream().map(SpeechChain.Heard::confidence).toList());

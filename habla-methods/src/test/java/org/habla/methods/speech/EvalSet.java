@@ -6,6 +6,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Set;
 
 /**
  * The speech evaluation set made by {@code bench/speech/make-eval-set.sh}: voices, each with streams in
@@ -35,6 +36,10 @@ public final class EvalSet {
     }
 
     public static final List<String> CONDITIONS = List.of("clean", "noise20", "noise10", "echo", "babble");
+
+    /** The phrases of config/grammars/commands.gram: an item is in the grammar when it says one of them. */
+    public static final Set<String> GRAMMAR = Set.of("go forward", "turn left", "turn right", "go back", "stop",
+            "good dog", "bad dog", "well done", "no");
 
     private EvalSet() {
     }

@@ -25,7 +25,7 @@ class HeldOutVoicesTest {
                 if (v.has(condition)) {
                     List<SpeechChain.Heard> heard = chain.run(Utterances.readWav(v.stream(condition)), 32);
                     StreamScore s = new StreamScore();
-                    s.add(v.name() + " " + condition, v.items(), heard, SpeechTuning.GRAMMAR);
+                    s.add(v.name() + " " + condition, v.items(), heard, EvalSet.GRAMMAR);
                     System.out.printf("speech-recognition (%s), held-out %s %s: %s%n", config, v.name(), condition, s);
                     all.add(s);
                 }

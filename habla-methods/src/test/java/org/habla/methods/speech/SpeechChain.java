@@ -60,7 +60,7 @@ public final class SpeechChain {
     }
 
     /** Whether the config hands the microphone's stream to speech-recognition's own audio input. */
-    static boolean direct(MethodConfig speech) {
+    public static boolean direct(MethodConfig speech) {
         return speech.inputs().containsKey("audio");
     }
 

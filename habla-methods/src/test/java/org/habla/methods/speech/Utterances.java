@@ -13,7 +13,7 @@ import org.habla.sample.AudioChunk;
 import org.habla.sample.AudioFormat;
 
 /** The teacher's recorded utterances the simulator plays, read from habla-sim's sources through their index. */
-final class Utterances {
+public final class Utterances {
 
     static final Path FOLDER = Path.of("../habla-sim/src/main/resources/utterances");
 
@@ -40,7 +40,7 @@ final class Utterances {
     }
 
     /** The PCM of a 16-bit PCM WAV file, with its format from the fmt chunk. */
-    static AudioChunk readWav(Path file) throws IOException {
+    public static AudioChunk readWav(Path file) throws IOException {
         ByteBuffer b = ByteBuffer.wrap(Files.readAllBytes(file)).order(ByteOrder.LITTLE_ENDIAN);
         if (b.getInt(0) != 0x46464952 || b.getInt(8) != 0x45564157) {
             throw new IOException(file + " is not a RIFF WAVE file");

@@ -1,4 +1,6 @@
-package org.habla.methods.speech;
+// Over 300 lines, on purpose: bench/run speech's three parts (the table per engine, enrolment, latency through a
+// daemon) read one evaluation set with one chain and print one report.
+package org.habla.bench.speech;
 
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -15,6 +17,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import org.HdrHistogram.Histogram;
+import org.habla.bench.Benchmarks;
 import org.habla.config.ConfigLoader;
 import org.habla.config.HablaConfig;
 import org.habla.config.MethodConfig;
@@ -22,6 +25,12 @@ import org.habla.config.ParamsJson;
 import org.habla.daemon.Daemon;
 import org.habla.graph.EngineClock;
 import org.habla.methods.audio.MonoAudio;
+import org.habla.methods.speech.Enrolment;
+import org.habla.methods.speech.EvalSet;
+import org.habla.methods.speech.SpeechChain;
+import org.habla.methods.speech.SpeechRecognitionParams;
+import org.habla.methods.speech.StreamScore;
+import org.habla.methods.speech.Utterances;
 import org.habla.net.Frame;
 import org.habla.net.FrameReader;
 import org.habla.net.FrameWriter;
@@ -113,7 +122,7 @@ public final class SpeechBench {
                 busyNs += System.nanoTime() - t0;
                 audioS += stream.frameCount() / (double) stream.format().sampleRateHz();
                 StreamScore s = new StreamScore();
-                s.add(v.name(), v.items(), heard, SpeechTuning.GRAMMAR);
+                s.add(v.name(), v.items(), heard, EvalSet.GRAMMAR);
                 if (s.accuracy() < worstAcc) {
                     worstAcc = s.accuracy();
                     worst = String.format("%s %.0f%%", v.name(), s.accuracy());
@@ -132,12 +141,12 @@ public final class SpeechBench {
         System.out.printf("out of grammar: the grammar's own words alone or out of order (\"go\", \"go left\") %d/%d "
                 + "gave nothing, other words and phrases %d/%d; load average %s%n", total.grammarWordItemsRejected,
                 total.grammarWordItems, total.outOfGrammarRejected - total.grammarWordItemsRejected,
-                total.outOfGrammar - total.grammarWordItems, loadAverage());
+                total.outOfGrammar - total.grammarWordItems, Benchmarks.loadAverage());
         System.out.printf("resident memory of this process after the %s table: %d MB%n", engine, residentMb());
     }
 
     /** This process's resident memory (VmRSS), in MB. */
-    static long residentMb() {
+    private static long residentMb() {
         try {
             for (String line : Files.readAllLines(Path.of("/proc/self/status"))) {
                 if (line.startsWith("VmRSS:")) {
@@ -197,8 +206,8 @@ public final class SpeechBench {
                     continue;
                 }
                 AudioChunk stream = Utterances.readWav(v.stream(condition));
-                scores[k][0].add(v.name(), v.items(), plain.run(stream, CHUNK_MS), SpeechTuning.GRAMMAR, used);
-                scores[k][1].add(v.name(), v.items(), adapted.run(stream, CHUNK_MS), SpeechTuning.GRAMMAR, used);
+                scores[k][0].add(v.name(), v.items(), plain.run(stream, CHUNK_MS), EvalSet.GRAMMAR, used);
+                scores[k][1].add(v.name(), v.items(), adapted.run(stream, CHUNK_MS), EvalSet.GRAMMAR, used);
             }
             Files.deleteIfExists(file);
         }
@@ -304,20 +313,10 @@ public final class SpeechBench {
                 + "load average %s)%n", h.getValueAtPercentile(50) / 1e3, h.getValueAtPercentile(90) / 1e3,
                 h.getValueAtPercentile(99) / 1e3, h.getMaxValue() / 1e3,
                 SpeechChain.direct(speech) ? "the microphone's stream, its own endpointing" : "audio-processing's segments",
-                loadAverage());
+                Benchmarks.loadAverage());
         byCondition.forEach((condition, hc) -> System.out.printf("  %-8s %3d phrases right: p50 %.0f ms   p90 %.0f ms   "
                 + "max %.0f ms%n", condition, hc.getTotalCount(), hc.getValueAtPercentile(50) / 1e3,
                 hc.getValueAtPercentile(90) / 1e3, hc.getMaxValue() / 1e3));
-    }
-
-    /** The machine's load averages (1, 5, 15 min), as /proc/loadavg gives them. */
-    static String loadAverage() {
-        try {
-            String[] f = Files.readString(Path.of("/proc/loadavg")).trim().split("\\s+");
-            return f[0] + " " + f[1] + " " + f[2];
-        } catch (IOException e) {
-            return "unknown";
-        }
     }
 
     private static void drainReplies(Socket s) {

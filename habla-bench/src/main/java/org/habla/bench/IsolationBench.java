@@ -1,3 +1,5 @@
+// Over 300 lines, on purpose: benchmark (k)'s rounds, its two rigs and the accounting printed under each round
+// (CPU time, collector pauses, per-method latency) read the same processes of the rig being measured.
 package org.habla.bench;
 
 import com.fasterxml.jackson.databind.JsonNode;

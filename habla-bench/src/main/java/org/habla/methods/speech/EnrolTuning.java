@@ -16,7 +16,9 @@ import org.habla.sample.AudioChunk;
 /**
  * Tuning of enrolment (on the tune voices only): {@code EnrolTuning SETDIR tune|held-out PRIOR,PRIOR,...
  * [condition...]}. Each voice enrols with its first nine clean in-grammar utterances; the model as it
- * comes and each prior's adaptation are scored on the voice's other utterances.
+ * comes and each prior's adaptation are scored on the voice's other utterances. It is habla-bench's, in
+ * habla-methods' package: it writes adaptations with a prior of its choosing ({@code SphinxDecoder.writeAdaptation},
+ * {@code Mllr}), which the method keeps to its package.
  */
 public final class EnrolTuning {
 
@@ -67,7 +69,7 @@ public final class EnrolTuning {
                 for (String condition : conditions) {
                     if (v.has(condition)) {
                         s.add(v.name(), v.items(), chains.get(k).run(Utterances.readWav(v.stream(condition)), 32),
-                                SpeechTuning.GRAMMAR, used);
+                                EvalSet.GRAMMAR, used);
                     }
                 }
                 line.append(String.format("  %s %d/%d", k == 0 ? "plain" : "p" + (int) priors[k - 1], s.inGrammarRight,

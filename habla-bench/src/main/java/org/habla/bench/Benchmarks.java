@@ -101,7 +101,7 @@ public final class Benchmarks {
     }
 
     /** The first three fields of /proc/loadavg, or "unknown" off Linux. */
-    static String loadAverage() {
+    public static String loadAverage() {
         try {
             String[] f = java.nio.file.Files.readString(java.nio.file.Path.of("/proc/loadavg")).split(" ");
             return f[0] + " " + f[1] + " " + f[2];

@@ -1,10 +1,14 @@
-package org.habla.methods.speech;
+package org.habla.bench.speech;
 
 import java.nio.file.Path;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
+import org.habla.bench.Benchmarks;
+import org.habla.methods.speech.EvalSet;
+import org.habla.methods.speech.SpeechChain;
+import org.habla.methods.speech.StreamScore;
+import org.habla.methods.speech.Utterances;
 import org.habla.sample.AudioChunk;
 
 /**
@@ -13,9 +17,6 @@ import org.habla.sample.AudioChunk;
  * tuning (on the tune voices only); {@code bench/run speech} reports the held-out ones.
  */
 public final class SpeechTuning {
-
-    static final Set<String> GRAMMAR = Set.of("go forward", "turn left", "turn right", "go back", "stop", "good dog",
-            "bad dog", "well done", "no");
 
     public static void main(String[] args) throws Exception {
         Path set = Path.of(args[0]);
@@ -37,7 +38,7 @@ public final class SpeechTuning {
                 List<SpeechChain.Heard> heard = chain.run(stream, 32);
                 heard.forEach(h -> decodeMs.add(h.decodeMs()));
                 StreamScore s = new StreamScore();
-                s.add(v.name(), v.items(), heard, GRAMMAR);
+                s.add(v.name(), v.items(), heard, EvalSet.GRAMMAR);
                 perVoice.put(v.name(), s.inGrammarRight + "/" + s.inGrammar + " oog " + s.outOfGrammarRejected + "/"
                         + s.outOfGrammar);
                 score.add(s);
@@ -62,7 +63,7 @@ public final class SpeechTuning {
         List<Double> sorted = decodeMs.stream().sorted().toList();
         if (!sorted.isEmpty()) {
             System.out.printf("decoding time of the phrases said: p50 %.0f ms, p90 %.0f ms (load average %s)%n",
-                    sorted.get(sorted.size() / 2), sorted.get(sorted.size() * 9 / 10), SpeechBench.loadAverage());
+                    sorted.get(sorted.size() / 2), sorted.get(sorted.size() * 9 / 10), Benchmarks.loadAverage());
         }
         for (double t : new double[] {0.02, 0.05, 0.1, 0.15, 0.2, 0.25, 0.3, 0.4, 0.5}) {
             System.out.println("         " + all.atThreshold(t));

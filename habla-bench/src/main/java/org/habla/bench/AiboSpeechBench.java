@@ -10,8 +10,6 @@ import java.io.IOException;
 import java.io.InputStreamReader;
 import java.net.InetAddress;
 import java.net.Socket;
-import java.nio.ByteBuffer;
-import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -24,7 +22,10 @@ import org.HdrHistogram.Histogram;
 import org.habla.cli.DaemonJvm;
 import org.habla.net.Frame;
 import org.habla.net.FrameReader;
+import org.habla.methods.speech.EvalSet;
+import org.habla.methods.speech.Utterances;
 import org.habla.net.FrameWriter;
+import org.habla.sample.AudioChunk;
 import org.habla.sim.scenario.DaemonReadiness;
 import org.habla.sim.scenario.DerivedConfig;
 
@@ -117,7 +118,8 @@ final class AiboSpeechBench {
     }
 
     private void play(Process daemon, int micPort, int wordsPort, int statusPort) throws Exception {
-        List<Voice> heldOut = Voice.heldOut(PioneerRig.home().resolve("target/speech-eval"));
+        List<EvalSet.Voice> heldOut = EvalSet.read(PioneerRig.home().resolve("target/speech-eval")).stream()
+                .filter(EvalSet.Voice::heldOut).toList();
         Histogram all = new Histogram(60_000_000L, 3);
         int right = 0;
         int items = 0;
@@ -129,9 +131,9 @@ final class AiboSpeechBench {
             FrameWriter w = new FrameWriter(in.getOutputStream());
             long ticks0 = cpuTicks(daemon);
             long wall0 = System.nanoTime();
-            for (Voice v : heldOut.subList(0, Math.min(voices, heldOut.size()))) {
+            for (EvalSet.Voice v : heldOut.subList(0, Math.min(voices, heldOut.size()))) {
                 for (String condition : List.of("clean", "noise20")) {
-                    byte[] pcm = v.pcm(condition);
+                    byte[] pcm = pcm(v, condition);
                     arrivals.clear();
                     int chunk = RATE_HZ * CHUNK_MS / 1000 * 2;
                     long t0 = System.nanoTime();
@@ -147,12 +149,12 @@ final class AiboSpeechBench {
                     Thread.sleep(TAIL_MS);
                     audioS += pcm.length / (RATE_HZ * 2.0);
                     Histogram h = new Histogram(60_000_000L, 3);
-                    java.util.Set<Item> matched = new java.util.HashSet<>();
+                    java.util.Set<EvalSet.Item> matched = new java.util.HashSet<>();
                     for (Object[] arrival : arrivals) {
                         double atS = ((Long) arrival[0] - t0) / 1e9;
                         // the latest item of this phrase that ended before it, not matched yet, however late it came
-                        Item said = null;
-                        for (Item it : v.items()) {
+                        EvalSet.Item said = null;
+                        for (EvalSet.Item it : v.items()) {
                             if (it.endS() <= atS && atS - it.endS() <= MATCH_WITHIN_S && it.inGrammar()
                                     && it.text().equals(arrival[1]) && !matched.contains(it)) {
                                 said = it;
@@ -165,7 +167,7 @@ final class AiboSpeechBench {
                     }
                     all.add(h);
                     right += (int) h.getTotalCount();
-                    int in2 = (int) v.items().stream().filter(Item::inGrammar).count();
+                    int in2 = (int) v.items().stream().filter(EvalSet.Item::inGrammar).count();
                     items += in2;
                     System.out.printf("  %-20s %-8s %3d of %d phrases right: p50 %5.0f ms   p90 %5.0f ms   max %5.0f ms"
                             + "   (load %s)%n", v.name(), condition, h.getTotalCount(), in2,
@@ -263,53 +265,12 @@ final class AiboSpeechBench {
         return -1;
     }
 
-    /** One item of a stream of the evaluation set. */
-    record Item(double startS, double endS, String text, boolean inGrammar) {
-    }
-
-    /** A held-out voice of the evaluation set: its folder and its items. */
-    record Voice(String name, Path dir, List<Item> items) {
-
-        static List<Voice> heldOut(Path set) throws IOException {
-            Path index = set.resolve("voices.tsv");
-            if (!Files.isRegularFile(index)) {
-                throw new IOException("no speech evaluation set in " + set + " (bench/speech/make-eval-set.sh makes it)");
-            }
-            List<Voice> out = new ArrayList<>();
-            for (String line : Files.readAllLines(index, StandardCharsets.UTF_8)) {
-                String[] f = line.split("\t");
-                if (f.length < 3 || !f[2].equals("held-out")) {
-                    continue;
-                }
-                List<Item> items = new ArrayList<>();
-                for (String l : Files.readAllLines(set.resolve(f[0]).resolve("labels.tsv"), StandardCharsets.UTF_8)) {
-                    String[] g = l.split("\t");
-                    if (g.length >= 4) {
-                        items.add(new Item(Double.parseDouble(g[0]), Double.parseDouble(g[1]), g[2], g[3].equals("in")));
-                    }
-                }
-                out.add(new Voice(f[0], set.resolve(f[0]), List.copyOf(items)));
-            }
-            return out;
+    /** The 16 kHz mono 16-bit PCM of one condition's stream of a voice (the set's WAV files are written so). */
+    private static byte[] pcm(EvalSet.Voice v, String condition) throws IOException {
+        AudioChunk stream = Utterances.readWav(v.stream(condition));
+        if (stream.format().sampleRateHz() != RATE_HZ || stream.format().channels() != 1) {
+            throw new IOException(v.stream(condition) + " is not 16 kHz mono");
         }
-
-        /** The 16 kHz mono 16-bit PCM of one condition's stream (the set's WAV files are written so). */
-        byte[] pcm(String condition) throws IOException {
-            ByteBuffer b = ByteBuffer.wrap(Files.readAllBytes(dir.resolve(condition + ".wav"))).order(ByteOrder.LITTLE_ENDIAN);
-            int at = 12;
-            while (at + 8 <= b.limit()) {
-                int id = b.getInt(at);
-                int size = b.getInt(at + 4);
-                if (id == 0x20746d66 && (b.getInt(at + 12) != RATE_HZ || b.getShort(at + 10) != 1)) {
-                    throw new IOException(dir + "/" + condition + ".wav is not 16 kHz mono");
-                }
-                if (id == 0x61746164) { // "data"
-                    int n = Math.min(size, b.limit() - at - 8) & ~1;
-                    return Arrays.copyOfRange(b.array(), at + 8, at + 8 + n);
-                }
-                at += 8 + size + (size & 1);
-            }
-            throw new IOException(dir + "/" + condition + ".wav has no data chunk");
-        }
+        return stream.pcm();
     }
 }

@@ -4,6 +4,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.BufferedWriter;
+import java.lang.management.ManagementFactory;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -28,7 +29,9 @@ import org.habla.sample.Sample;
  * (log-probability, shortfall from the model's own choice, steps, the worst step's log-probability) and whether it
  * passed the voice check (utterances that fail it are scored too), and one line per stream with its items. Rules
  * are then compared offline on the tune voices ({@code bench/speech/moonshine-rules.py}).
- * {@code MoonshineScores SETDIR SPLIT OUT.jsonl [encoder decoder]}: the model files default to the cache's.
+ * {@code MoonshineScores SETDIR SPLIT OUT.jsonl [encoder decoder]}: the model files default to the cache's. It is
+ * habla-bench's, in habla-methods' package: it scores with the model's own parts (MoonshineModel, VoiceCheck,
+ * UtteranceTrim, GrammarExpansion), which the method keeps to its package.
  */
 public final class MoonshineScores {
 
@@ -100,7 +103,8 @@ public final class MoonshineScores {
                         w.write(u + "\n");
                     }
                     w.flush();
-                    System.out.printf("%s %s %s done (load %s)%n", split, v.name(), condition, SpeechBench.loadAverage());
+                    System.out.printf("%s %s %s done (load %.2f)%n", split, v.name(), condition,
+                            ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
                 }
             }
         }

@@ -1,3 +1,5 @@
+// Over 300 lines, on purpose: benchmark (e)'s three rows (latency, audio, speech) share one worker set-up per place
+// (loopback, another network namespace) and print side by side; a file per row would pass the set-up around.
 package org.habla.bench;
 
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
