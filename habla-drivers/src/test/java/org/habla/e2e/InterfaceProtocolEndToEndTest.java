@@ -125,10 +125,10 @@ class InterfaceProtocolEndToEndTest {
 
                         // SIGTERM: the actuators are stopped first, then the link says goodbye; exit 0.
                         assertThat(daemon.terminate(15_000)).as(daemon.output()).isZero();
-                        assertThat(again.next("stop", 15_000)).as("stop on shutdown; the daemon said:%n%s",
-                                daemon.output()).isNotNull();
-                        assertThat(again.next("bye", 15_000)).as("bye on shutdown; the daemon said:%n%s",
-                                daemon.output()).isNotNull();
+                        assertThat(again.next("stop", 15_000)).as(() -> String.format(
+                                "stop on shutdown; the daemon said:%n%s", daemon.output())).isNotNull();
+                        assertThat(again.next("bye", 15_000)).as(() -> String.format(
+                                "bye on shutdown; the daemon said:%n%s", daemon.output())).isNotNull();
                     }
                 }
             }

@@ -103,8 +103,8 @@ class AiboEndToEndTest {
                 client.destroyForcibly();
             }
         }
-        assertThat(heard).as("a phrase on the command socket from one of three takes; the daemon's chain says:%n%s",
-                rig.methodStatus("microphone", "audio", "speech", "command")).isNotNull();
+        assertThat(heard).as(() -> String.format("a phrase on the command socket from one of three takes; the daemon's "
+                + "chain says:%n%s", rig.methodStatus("microphone", "audio", "speech", "command"))).isNotNull();
     }
 
     @Test
