@@ -1,6 +1,8 @@
 package org.habla.graph;
 
 import java.io.IOException;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.function.Supplier;
 import org.habla.config.Reconnect;
@@ -21,7 +23,8 @@ import org.habla.config.Reconnect;
  *       {@code lastError} (cleared once a session is up).</li>
  *   <li>The wait between attempts ({@link BackOff}): it starts again from the shortest once a session has been
  *       up. The outage log ({@link OutageLog}, made by the owner with its own logger and name).</li>
- *   <li>{@link #stop}: no more attempts; a session that is up says goodbye; the connection is closed, a back-off
+ *   <li>{@link #stop}: no more attempts; a session that is up says goodbye (the thread keeps it up and open until
+ *       then, even if a reading ended its read loop as the stop began); the connection is closed, a back-off
  *       wait ends at once, and the thread is given two seconds to end.</li>
  * </ul>
  *
@@ -137,6 +140,12 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
     private volatile S current;
     /** The session that is up, or null while the link is down. */
     private volatile S live;
+    /**
+     * Opened by {@link #stop} once its goodbye is said (or there was none to say): until then, a link thread
+     * whose read loop ends because of the stop keeps its session up and open, so the goodbye is written to an
+     * open connection even when a reading arrived as the stop began.
+     */
+    private final CountDownLatch farewell = new CountDownLatch(1);
     private Thread thread;
 
     /**
@@ -169,8 +178,12 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
     void stop() {
         running = false;
         S up = live;
-        if (up != null) {
-            up.goodbye();
+        try {
+            if (up != null) {
+                up.goodbye();
+            }
+        } finally {
+            farewell.countDown();
         }
         S attempt = current;
         if (attempt != null) {
@@ -250,11 +263,23 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
                     failures.incrementAndGet();
                 }
             } finally {
+                if (!running) {
+                    awaitFarewell();
+                }
                 markDown(s);
             }
             if (running && !backOff.pause(failure, () -> running)) {
                 running = false;
             }
+        }
+    }
+
+    /** Waits (bounded) until {@link #stop} has said its goodbye through the session this thread still holds. */
+    private void awaitFarewell() {
+        try {
+            farewell.await(STOP_JOIN_MILLIS, TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
     }
 
