@@ -97,6 +97,16 @@ class Experience(collections.namedtuple("Experience", "before action after rewar
         return self.before.seen and self.after.seen
 
 
+def mirrored(experience):
+    """The same step seen in a mirror: the target on the other side, the mirror image of the move (MIRROR). The
+    body is the same on both sides, so a left turn with the target 0.4 rad to the left tells what a right turn
+    does with it 0.4 rad to the right. The teacher's judgement is left out: what a command means is learned, not
+    mirrored."""
+    b, a = experience.before, experience.after
+    return Experience(Perception(b.distance_m, -b.angle_rad, b.seen, None), MIRROR[experience.action],
+                      Perception(a.distance_m, -a.angle_rad, a.seen, None), None)
+
+
 def usable(experience, distance_scale_m):
     """Whether an experience can teach the models: the target was seen before and after, and the distance
     did not jump by more than JUMP steps' worth (the target was moved, or another object taken for it)."""
@@ -210,7 +220,8 @@ class WorldModel:
     Per action a motion model (8 parameters): the change of distance and of angle are each a linear
     function of `motion_features`, in units of `distance_scale_m` and `angle_scale_rad`. One relevance
     table (actions x commands): the reward the teacher is expected to give for an action after a command.
-    Each part is its own evolving population, scored on the experiences it can explain."""
+    Each part is its own evolving population, scored on the experiences it can explain. A motion model learns
+    from its action's steps and from its mirror image's steps seen in a mirror (`mirrored`)."""
 
     MOTION_DIM = 8
     RELEVANCE_DECAY = 0.05  # pulls untried entries of the table towards 0: neither good nor bad
@@ -273,7 +284,11 @@ class WorldModel:
         errors = {}
         sighted = [e for e in memory.experiences() if usable(e, self.ds)]
         for action, population in self.motion.items():
-            mine = [e for e in sighted if e.action == action]
+            # Every move learns from its mirror image's steps too: with a teacher who only ever said "left" (the
+            # ball always started on the robot's left), the right turn had two or three steps behind it; alone,
+            # with the ball 0.36 rad to its right at 0.28 m, the Aibo turned left, away, on the left turn's model
+            # (the right one was barely trusted), lost the ball and searched for it until its time ran out.
+            mine = [e for e in sighted if e.action == action] + [mirrored(e) for e in sighted if MIRROR[e.action] == action]
             if mine:
                 errors["motion." + action] = population.run(lambda p: self.motion_error(p, mine), generations)
         errors.update(self.learn_relevance(memory, generations))
@@ -372,9 +387,9 @@ class Brain:
 
     def confidence(self, action):
         """How far the world model of `action` can be trusted, 0..1: n / TRUSTED_AFTER, n being the
-        experiences of that action it has learned from, at most 1. An action tried a few times has a model
+        experiences of that action and of its mirror image it has learned from, at most 1. An action tried a few times has a model
         fitted to a few points, whose guesses away from them are anybody's."""
-        n = sum(1 for e in self.memory.experiences() if e.action == action and usable(e, self.world.ds))
+        n = sum(1 for e in self.memory.experiences() if e.action in (action, MIRROR[action]) and usable(e, self.world.ds))
         return min(1.0, n / self.TRUSTED_AFTER)
 
     @property
