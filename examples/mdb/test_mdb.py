@@ -332,7 +332,9 @@ class SonarBearingTest(unittest.TestCase):
         print("\nMDB sonar bearings: reached from %d of 24 starts looking one step ahead, %d of 24 looking two"
               % (one, two), file=sys.stderr)
         self.assertGreaterEqual(two, 21)
-        self.assertGreater(two, one + 3)
+        # One step ahead dithered most (17 of 24) while the satisfaction model had a term for the |angle| after; on
+        # changes alone it dithers less (22), and looking two steps ahead is still never worse.
+        self.assertGreaterEqual(two, one)
 
 
 class CameraViewTest(unittest.TestCase):
