@@ -70,15 +70,34 @@ public final class DaemonProcess implements AutoCloseable {
         return false;
     }
 
-    /** {@code n} distinct free loopback ports. */
+    /**
+     * Ports this JVM has handed out: never handed out again. The kernel gives a port just closed to the next bind
+     * of port 0 as readily as any other, so a test that took five ports for its daemon and then started a broker on
+     * "a free port" had the broker on one of the daemon's ports (one suite run in five beside busy processes).
+     */
+    private static final java.util.Set<Integer> HANDED_OUT = java.util.concurrent.ConcurrentHashMap.newKeySet();
+    /** How many ports one call may look at before it gives up. */
+    private static final int LOOKS_PER_PORT = 200;
+
+    /**
+     * {@code n} distinct free loopback ports that no earlier call in this JVM returned. Each is free when returned
+     * and reserved against this JVM's later calls ({@link Mosquitto} and every test take theirs here); another
+     * process may still take one before the test binds it.
+     */
     public static int[] freePorts(int n) throws IOException {
         int[] ports = new int[n];
         List<ServerSocket> held = new ArrayList<>();
         try {
-            for (int i = 0; i < n; i++) {
+            int found = 0;
+            for (int look = 0; found < n; look++) {
+                if (look >= LOOKS_PER_PORT * n) {
+                    throw new IOException("no free port that this JVM had not handed out after " + look + " tries");
+                }
                 ServerSocket s = new ServerSocket(0);
-                held.add(s);
-                ports[i] = s.getLocalPort();
+                held.add(s); // held until the end, so the kernel does not give the same port again in this loop
+                if (HANDED_OUT.add(s.getLocalPort())) {
+                    ports[found++] = s.getLocalPort();
+                }
             }
         } finally {
             for (ServerSocket s : held) {

@@ -1,7 +1,6 @@
 package org.habla.testing;
 
 import java.io.IOException;
-import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -140,10 +139,9 @@ public final class Mosquitto implements AutoCloseable {
         stop();
     }
 
+    /** A free port no other caller in this JVM was given ({@link DaemonProcess#freePorts}). */
     private static int freePort() throws IOException {
-        try (ServerSocket s = new ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
-            return s.getLocalPort();
-        }
+        return DaemonProcess.freePorts(1)[0];
     }
 
     private static synchronized void ensureInstalled() throws IOException, InterruptedException {
