@@ -141,9 +141,9 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
     /** The session that is up, or null while the link is down. */
     private volatile S live;
     /**
-     * Opened by {@link #stop} once its goodbye is said (or there was none to say): until then, a link thread
-     * whose read loop ends because of the stop keeps its session up and open, so the goodbye is written to an
-     * open connection even when a reading arrived as the stop began.
+     * Opened by {@link #stop} once its goodbye is said (or there was none to say) and the connection closed: until
+     * then, a link thread whose read loop ends because of the stop keeps its session up and open, so the goodbye is
+     * written to an open connection even when a reading arrived as the stop began.
      */
     private final CountDownLatch farewell = new CountDownLatch(1);
     private Thread thread;
@@ -182,12 +182,12 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
             if (up != null) {
                 up.goodbye();
             }
+            S attempt = current;
+            if (attempt != null) {
+                attempt.close();
+            }
         } finally {
             farewell.countDown();
-        }
-        S attempt = current;
-        if (attempt != null) {
-            attempt.close();
         }
         backOff.wake();
         if (thread != null) {
