@@ -419,7 +419,6 @@ class MirrorTest(unittest.TestCase):
         self.assertNotIn("back", brain.approved())
         self.assertEqual("right", brain.decide(mdb.Perception(1.4, -1.2, True, None))[0])
 
-
     def test_a_turn_made_only_one_way_teaches_the_other_way_too(self):
         # Every left turn was made with the target on the left (a teacher who only said "left"), and the right
         # turn was made twice. With the target 0.4 rad to the right, the world model predicts that a right turn
@@ -431,13 +430,15 @@ class MirrorTest(unittest.TestCase):
             d, a = rng.uniform(0.5, 2.0), rng.uniform(0.2, 0.9)
             action = "right" if i < 2 else "left"
             d2, a2 = move(d, a, action)
-            brain.remember(mdb.Experience(mdb.Perception(d, a, True, None), action, mdb.Perception(d2, a2, True, None), None))
+            brain.remember(mdb.Experience(mdb.Perception(d, a, True, None), action,
+                                          mdb.Perception(d2, a2, True, None), None))
         for _ in range(30):
             brain.learn()
         self.assertEqual(1.0, brain.confidence("right"))
         _, truth = move(1.0, -0.4, "right")
         predicted = brain.world.predict(mdb.Perception(1.0, -0.4, True, None), "right").angle_rad
-        self.assertLess(abs(predicted - truth), 0.15, "right turn from -0.4 rad: predicted %.2f, truly %.2f" % (predicted, truth))
+        self.assertLess(abs(predicted - truth), 0.15,
+                        "right turn from -0.4 rad: predicted %.2f, truly %.2f" % (predicted, truth))
 
 
 class StuckTest(unittest.TestCase):

@@ -274,7 +274,7 @@ final class ReconnectingLink<S extends ReconnectingLink.Session> {
         }
     }
 
-    /** Waits (bounded) until {@link #stop} has said its goodbye through the session this thread still holds. */
+    /** Waits (bounded) until {@link #stop} has said goodbye through the session this thread holds, and closed it. */
     private void awaitFarewell() {
         try {
             farewell.await(STOP_JOIN_MILLIS, TimeUnit.MILLISECONDS);

@@ -81,8 +81,8 @@ public final class DaemonProcess implements AutoCloseable {
 
     /**
      * {@code n} distinct free loopback ports that no earlier call in this JVM returned. Each is free when returned
-     * and reserved against this JVM's later calls ({@link Mosquitto} and every test take theirs here); another
-     * process may still take one before the test binds it.
+     * and reserved against this JVM's later calls ({@link Mosquitto} takes its port here too); another process may
+     * still take one before the test binds it.
      */
     public static int[] freePorts(int n) throws IOException {
         int[] ports = new int[n];
