@@ -3,6 +3,7 @@ package org.habla.graph;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.function.LongSupplier;
 import org.habla.sample.Sample;
 
@@ -24,6 +25,11 @@ abstract sealed class MethodScheduler implements InputSlot.Taker permits OwnThre
     private final EngineClock clock;
     private final WorkCount work;
     private final ConcurrentLinkedQueue<Runnable> turns = new ConcurrentLinkedQueue<>();
+    /**
+     * How many turns wait in {@link #turns}: counted up after a turn is added, down after one is taken, so that a
+     * pass and {@link #nothingWaiting} (every sample, twice for a light method) ask one field, not the queue.
+     */
+    private final AtomicInteger turnsWaiting = new AtomicInteger();
     private final RateMeter handled = new RateMeter();
     private final LatencyStats latency = new LatencyStats();
     private volatile MethodHost host;
@@ -71,6 +77,7 @@ abstract sealed class MethodScheduler implements InputSlot.Taker permits OwnThre
     final void turn(Runnable turn) {
         work.begin();
         turns.add(turn);
+        turnsWaiting.incrementAndGet(); // a full fence before wake reads whether the method is held
         wake();
     }
 
@@ -89,7 +96,7 @@ abstract sealed class MethodScheduler implements InputSlot.Taker permits OwnThre
                 return false;
             }
         }
-        return turns.isEmpty();
+        return turnsWaiting.get() == 0;
     }
 
     /**
@@ -107,14 +114,16 @@ abstract sealed class MethodScheduler implements InputSlot.Taker permits OwnThre
                 handle(slot, s);
             }
         }
-        if (turns.isEmpty()) {
+        int waiting = turnsWaiting.get();
+        if (waiting == 0) {
             return worked;
         }
-        for (int n = turns.size(); n > 0; n--) {
+        for (int n = waiting; n > 0; n--) {
             Runnable turn = turns.poll();
             if (turn == null) {
                 break;
             }
+            turnsWaiting.decrementAndGet();
             worked = true;
             catchUpMotionReset();
             try {
