@@ -30,6 +30,8 @@ final class LatencyStats {
     private final long[] counts = new long[BUCKETS];
     /** The counts at the previous read; the reader's alone. */
     private final long[] seen = new long[BUCKETS];
+    /** What was recorded between the previous read and this one; the reader's alone. */
+    private final long[] interval = new long[BUCKETS];
 
     void record(long micros) {
         int i = index(Math.max(0, Math.min(MAX_MICROS, micros)));
@@ -38,7 +40,6 @@ final class LatencyStats {
 
     /** Percentiles (µs) over what was recorded since the previous call. */
     synchronized ObjectNode snapshot() {
-        long[] interval = new long[BUCKETS];
         long total = 0;
         int highest = -1;
         for (int i = 0; i < BUCKETS; i++) {
