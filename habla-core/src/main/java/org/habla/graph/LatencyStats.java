@@ -62,16 +62,16 @@ final class LatencyStats {
     }
 
     /** The highest value of the bucket below which {@code percentile} % of the {@code total} values fall. */
-    private static long atPercentile(long[] interval, long total, double percentile) {
+    private static long atPercentile(long[] buckets, long total, double percentile) {
         long wanted = Math.max(1, (long) Math.ceil(total * percentile / 100.0));
         long below = 0;
-        for (int i = 0; i < interval.length; i++) {
-            below += interval[i];
+        for (int i = 0; i < buckets.length; i++) {
+            below += buckets[i];
             if (below >= wanted) {
                 return highestIn(i);
             }
         }
-        return highestIn(interval.length - 1);
+        return highestIn(buckets.length - 1);
     }
 
     /** The bucket of {@code value} (0 ≤ value ≤ {@link #MAX_MICROS}). */

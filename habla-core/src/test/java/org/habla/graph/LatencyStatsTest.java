@@ -17,7 +17,8 @@ class LatencyStatsTest {
             int i = LatencyStats.index(v);
             assertThat(i).as("buckets follow the values (%d)", v).isGreaterThanOrEqualTo(previous);
             previous = i;
-            assertThat(LatencyStats.highestIn(i)).as("bucket of %d", v).isGreaterThanOrEqualTo(v).isLessThanOrEqualTo(v + v / 128);
+            assertThat(LatencyStats.highestIn(i)).as("bucket of %d", v)
+                    .isGreaterThanOrEqualTo(v).isLessThanOrEqualTo(v + v / 128);
         }
         for (int n = 0; n < 100_000; n++) {
             long v = (long) (random.nextDouble() * LatencyStats.MAX_MICROS);
