@@ -34,7 +34,7 @@ final class ControlFanout implements ControlPoint.Listener {
         }
         EncodedFrame frame;
         try {
-            frame = EncodedFrame.of(SampleCodec.sampleFrame(output.name(), sample));
+            frame = EncodedFrame.sample(output.name(), sample);
         } catch (RuntimeException e) {
             LOG.warn("control socket '{}': cannot encode a sample of {}: {}", socketName, output, e.toString());
             return;

@@ -21,6 +21,19 @@ record EncodedFrame(Frame frame, byte[] line) {
 
     private static final byte NEWLINE = '\n';
 
+    /** What a sample encoded straight to its line ({@link #sample}) says of its frame: its type, and no body. */
+    private static final Frame SAMPLE = Frame.of(com.fasterxml.jackson.databind.node.JsonNodeFactory.instance
+            .objectNode().put("type", "sample"));
+
+    /**
+     * Encodes the sample line of one output's sample, straight from its payload where it has no body
+     * ({@link SampleCodec#sampleLine}), else through its frame.
+     */
+    static EncodedFrame sample(String output, org.habla.sample.Sample sample) {
+        byte[] line = SampleCodec.sampleLine(output, sample);
+        return line != null ? new EncodedFrame(SAMPLE, line) : of(SampleCodec.sampleFrame(output, sample));
+    }
+
     /** Encodes {@code frame}; a frame with a body gets {@code "bytes"} set to the body's length. */
     static EncodedFrame of(Frame frame) {
         ObjectNode header = frame.header();

@@ -1,5 +1,6 @@
 package org.habla.sample;
 
+import com.fasterxml.jackson.core.JsonGenerator;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.BooleanNode;
@@ -9,6 +10,7 @@ import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.LongNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import com.fasterxml.jackson.databind.node.TextNode;
+import java.io.IOException;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.LinkedHashMap;
@@ -105,6 +107,105 @@ public final class RecordLayout<F extends RecordForm> {
             }
         }
         return o;
+    }
+
+    /**
+     * Writes the record's JSON object straight to {@code g}, byte for byte what {@link #json} would be written as,
+     * without making it: a non-finite number (which JSON cannot carry) as {@code null}. Returns false, having
+     * written nothing, when a field holds JSON with a non-finite number in it, which only {@link #json} copes with.
+     */
+    public boolean write(RecordForm value, JsonGenerator g) throws IOException {
+        F f = form.cast(value);
+        Object[] each = new Object[fields.size()];
+        java.util.Set<Object> named = null;
+        for (int i = 0; i < each.length; i++) {
+            each[i] = values.get(i).apply(f);
+            if (each[i] instanceof Map<?, ?> map && entries.get(i)) {
+                named = named == null ? new java.util.HashSet<>(index.keySet()) : named;
+                for (Map.Entry<?, ?> e : map.entrySet()) {
+                    if (!named.add(e.getKey()) || !finite(e.getValue())) {
+                        return false; // a name given twice is written once, where it came first: json's to do
+                    }
+                }
+            } else if (!finite(each[i])) {
+                return false;
+            }
+        }
+        g.writeStartObject();
+        for (int i = 0; i < each.length; i++) {
+            if (each[i] instanceof Map<?, ?> map && entries.get(i)) {
+                for (Map.Entry<?, ?> e : map.entrySet()) {
+                    g.writeFieldName((String) e.getKey());
+                    writeValue(e.getValue(), g);
+                }
+            } else if (each[i] != null) {
+                g.writeFieldName(fields.get(i).name());
+                writeValue(each[i], g);
+            }
+        }
+        g.writeEndObject();
+        return true;
+    }
+
+    /** False for JSON with a non-finite number in it; true for any other field value. */
+    private static boolean finite(Object v) {
+        return !(v instanceof JsonNode n) || allFinite(n);
+    }
+
+    /** Whether every number in {@code node} is finite, as JSON must have them. */
+    public static boolean allFinite(JsonNode node) {
+        if (node.isFloatingPointNumber()) {
+            return Double.isFinite(node.doubleValue());
+        }
+        if (node.isContainerNode()) {
+            for (JsonNode child : node) {
+                if (!allFinite(child)) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    }
+
+    private static void writeValue(Object v, JsonGenerator g) throws IOException {
+        switch (v) {
+            case Double d -> writeNumber(d, g);
+            case Integer i -> g.writeNumber(i);
+            case Long l -> g.writeNumber(l);
+            case Boolean b -> g.writeBoolean(b);
+            case String s -> g.writeString(s);
+            case JsonNode n -> g.writeTree(n);
+            case double[] numbers -> {
+                g.writeStartArray();
+                for (double d : numbers) {
+                    writeNumber(d, g);
+                }
+                g.writeEndArray();
+            }
+            case boolean[] flags -> {
+                g.writeStartArray();
+                for (boolean b : flags) {
+                    g.writeBoolean(b);
+                }
+                g.writeEndArray();
+            }
+            case List<?> texts -> {
+                g.writeStartArray();
+                for (Object t : texts) {
+                    g.writeString((String) t);
+                }
+                g.writeEndArray();
+            }
+            default -> throw new IllegalStateException("a record field cannot hold a " + v.getClass().getName());
+        }
+    }
+
+    private static void writeNumber(double d, JsonGenerator g) throws IOException {
+        if (Double.isFinite(d)) {
+            g.writeNumber(d);
+        } else {
+            g.writeNull();
+        }
     }
 
     /** The value of field {@code name} of {@code value} (see the class comment), or null when it has none. */

@@ -72,6 +72,11 @@ public final class RecordValue implements Payload {
         return fields();
     }
 
+    /** Whether this record's JSON exists: it came as JSON, or an edge has asked for it. */
+    public boolean hasJson() {
+        return fields != null;
+    }
+
     private ObjectNode fields() {
         ObjectNode f = fields;
         if (f == null) {
