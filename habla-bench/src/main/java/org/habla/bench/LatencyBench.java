@@ -1,6 +1,8 @@
 package org.habla.bench;
 
 import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.Callable;
 import org.HdrHistogram.Histogram;
 import org.habla.daemon.Daemon;
@@ -13,12 +15,17 @@ import org.habla.daemon.Daemon;
  * daemon's path: link reader → three method threads → the client's writer), the latter also with its
  * socket reader and writer on virtual threads as in the daemon, as the floor. The Pioneer's obstacle chain runs
  * the same way with its real payloads: eight sonar ranges in, a range scan and a nearest-obstacle record between
- * the methods.
+ * the methods. The paths are measured in turn, in rounds ({@link #ROUNDS}), so that each ratio between them is
+ * taken over the same stretch of the run.
  */
 final class LatencyBench {
 
     /** How long each daemon path runs before any is measured, in a JVM that has not run it yet. */
     static final int JIT_WARMUP_S = 10;
+    /** Into how many rounds the measured time of each path is cut. */
+    static final int ROUNDS = 5;
+    /** How long a path runs after it opens before a round measures it (the compiler is done by then). */
+    static final long SLICE_SETTLE_MS = 1_000;
 
     private final int rateHz;
     private final int warmupS;
@@ -58,28 +65,81 @@ final class LatencyBench {
         warmUp.quietly(numbersOwn, BenchRobot.Channels.NUMBER);
         warmUp.quietly(sonar, BenchRobot.Channels.SONAR);
         warmUp.quietly(sonarOwn, BenchRobot.Channels.SONAR);
-        Figures chain = measure("daemon: channel -> pass-through x2", numbers);
-        Figures chainOwn = measure("  the same, each method on its own thread", numbersOwn);
-        Figures sonarChain = measure("daemon: sonar -> nearest-distance -> relay", BenchRobot.Channels.SONAR, sonar, null);
-        Figures sonarChainOwn = measure("  the same, each method on its own thread", BenchRobot.Channels.SONAR,
-                sonarOwn, null);
-        Figures relay1 = measure("plain relay, 1 thread", robot -> {
-            PlainRelay r = new PlainRelay(robot.port(), 0, false);
-            return new Path(r.port(), r::close);
-        });
-        Figures relay4 = measure("plain relay, 4 thread hand-offs", robot -> {
-            PlainRelay r = new PlainRelay(robot.port(), 4, false);
-            return new Path(r.port(), r::close);
-        });
-        measure("plain relay, 4 hand-offs, virtual-thread I/O", robot -> {
-            PlainRelay r = new PlainRelay(robot.port(), 4, true);
-            return new Path(r.port(), r::close);
-        });
+        List<Route> routes = List.of(
+                new Route("daemon: channel -> pass-through x2", BenchRobot.Channels.NUMBER, numbers),
+                new Route("  the same, each method on its own thread", BenchRobot.Channels.NUMBER, numbersOwn),
+                new Route("daemon: sonar -> nearest-distance -> relay", BenchRobot.Channels.SONAR, sonar),
+                new Route("  the same, each method on its own thread", BenchRobot.Channels.SONAR, sonarOwn),
+                new Route("plain relay, 1 thread", BenchRobot.Channels.NUMBER, robot -> {
+                    PlainRelay r = new PlainRelay(robot.port(), 0, false);
+                    return new Path(r.port(), r::close);
+                }),
+                new Route("plain relay, 4 thread hand-offs", BenchRobot.Channels.NUMBER, robot -> {
+                    PlainRelay r = new PlainRelay(robot.port(), 4, false);
+                    return new Path(r.port(), r::close);
+                }),
+                new Route("plain relay, 4 hand-offs, virtual-thread I/O", BenchRobot.Channels.NUMBER, robot -> {
+                    PlainRelay r = new PlainRelay(robot.port(), 4, true);
+                    return new Path(r.port(), r::close);
+                }));
+        List<Figures> f = inRounds(routes);
+        Figures relay1 = f.get(4);
+        Figures relay4 = f.get(5);
         System.out.println("  ratios to the plain relay on 1 thread (p50 / p99), and to the one with 4 hand-offs:");
-        ratios("daemon: channel -> pass-through x2", chain, relay1, relay4);
-        ratios("  the same, own threads", chainOwn, relay1, relay4);
-        ratios("daemon: sonar -> nearest-distance -> relay", sonarChain, relay1, relay4);
-        ratios("  the same, own threads", sonarChainOwn, relay1, relay4);
+        ratios("daemon: channel -> pass-through x2", f.get(0), relay1, relay4);
+        ratios("  the same, own threads", f.get(1), relay1, relay4);
+        ratios("daemon: sonar -> nearest-distance -> relay", f.get(2), relay1, relay4);
+        ratios("  the same, own threads", f.get(3), relay1, relay4);
+    }
+
+    /** A path measured among others: its name, what its robot sends and how it is opened. */
+    record Route(String name, BenchRobot.Channels channels, PathFactory factory) {
+    }
+
+    /**
+     * Measures every route in {@link #ROUNDS} rounds of {@code seconds / ROUNDS} each, one route after the other in
+     * every round, and prints each route's figures over all its rounds: a machine whose load drifts during the run
+     * then weighs on every route alike, so the ratios between them hold.
+     */
+    private List<Figures> inRounds(List<Route> routes) throws Exception {
+        int rounds = Math.max(1, Math.min(ROUNDS, seconds));
+        long sliceMillis = seconds * 1000L / rounds;
+        System.out.printf("(%d rounds of %d ms per path, the paths in turn in each round, %d ms after each opens)%n",
+                rounds, sliceMillis, SLICE_SETTLE_MS);
+        List<Histogram> merged = new ArrayList<>();
+        long[] lost = new long[routes.size()];
+        for (int i = 0; i < routes.size(); i++) {
+            merged.add(new Histogram(60_000_000L, 3));
+        }
+        for (int r = 0; r < rounds; r++) {
+            for (int i = 0; i < routes.size(); i++) {
+                Route route = routes.get(i);
+                try (BenchRobot robot = new BenchRobot(1_000_000_000L / rateHz, route.channels())) {
+                    Path path = route.factory().open(robot);
+                    try (SampleClient client = path.connector().connect(path.port())) {
+                        await(() -> client.total() > 0, 20_000, route.name() + ": no sample reached the client");
+                        Thread.sleep(SLICE_SETTLE_MS);
+                        client.startRecording();
+                        Thread.sleep(sliceMillis);
+                        client.stopRecording();
+                        merged.get(i).add(client.latencyMicros());
+                        lost[i] += client.missing();
+                    } finally {
+                        path.closer().close();
+                    }
+                }
+            }
+        }
+        List<Figures> figures = new ArrayList<>();
+        for (int i = 0; i < routes.size(); i++) {
+            Histogram h = merged.get(i);
+            System.out.printf("%-44s %8d %8d %8d %8d %8d %8d%n", routes.get(i).name(), h.getTotalCount(), lost[i],
+                    h.getValueAtPercentile(50), h.getValueAtPercentile(99), h.getValueAtPercentile(99.9),
+                    h.getMaxValue());
+            figures.add(new Figures(h.getTotalCount(), h.getValueAtPercentile(50), h.getValueAtPercentile(99),
+                    h.getValueAtPercentile(99.9), h.getMaxValue()));
+        }
+        return figures;
     }
 
     private static void ratios(String name, Figures f, Figures relay1, Figures relay4) {
