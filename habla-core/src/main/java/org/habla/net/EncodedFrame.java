@@ -27,10 +27,10 @@ record EncodedFrame(Frame frame, byte[] line) {
 
     /**
      * Encodes the sample line of one output's sample, straight from its payload where it has no body
-     * ({@link SampleCodec#sampleLine}), else through its frame.
+     * ({@link SampleLine}), else through its frame.
      */
     static EncodedFrame sample(String output, org.habla.sample.Sample sample) {
-        byte[] line = SampleCodec.sampleLine(output, sample);
+        byte[] line = SampleLine.of(output, sample);
         return line != null ? new EncodedFrame(SAMPLE, line) : of(SampleCodec.sampleFrame(output, sample));
     }
 

@@ -1,13 +1,9 @@
 package org.habla.net;
 
-import com.fasterxml.jackson.core.JsonGenerator;
-import com.fasterxml.jackson.core.util.ByteArrayBuilder;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import java.io.IOException;
-import java.io.UncheckedIOException;
 import java.util.Iterator;
 import java.util.Map;
 import org.habla.sample.AudioChunk;
@@ -16,9 +12,8 @@ import org.habla.sample.ImageFrame;
 import org.habla.sample.NumberValue;
 import org.habla.sample.Payload;
 import org.habla.sample.PayloadKind;
-import org.habla.sample.RecordForm;
-import org.habla.sample.RecordLayout;
 import org.habla.sample.RecordValue;
+import org.habla.sample.RecordJson;
 import org.habla.sample.Sample;
 import org.habla.sample.TextValue;
 import org.habla.sample.VectorValue;
@@ -58,64 +53,6 @@ public final class SampleCodec {
         return withValue(header, sample.payload());
     }
 
-    /**
-     * The sample line of one output's sample as the bytes a socket gets, newline included, written straight from
-     * the payload without making its JSON tree: the same bytes as {@link #sampleFrame} encoded. Null for a payload
-     * with a body (audio, an image), which {@link #sampleFrame} encodes.
-     */
-    static byte[] sampleLine(String output, Sample sample) {
-        Payload payload = sample.payload();
-        if (payload instanceof AudioChunk || payload instanceof ImageFrame) {
-            return null;
-        }
-        try (ByteArrayBuilder bytes = new ByteArrayBuilder(256);
-                JsonGenerator g = FrameReader.JSON.createGenerator(bytes)) {
-            g.writeStartObject();
-            g.writeStringField("type", "sample");
-            g.writeStringField("output", output);
-            g.writeNumberField("seq", sample.sequence());
-            g.writeNumberField("t", sample.sourceMicros());
-            g.writeBooleanField("stale", sample.stale());
-            g.writeStringField("kind", payload.kind().wireName());
-            g.writeFieldName("value");
-            switch (payload) {
-                case NumberValue n -> writeNumber(n.value(), g);
-                case VectorValue v -> {
-                    g.writeStartArray();
-                    for (int i = 0; i < v.size(); i++) {
-                        writeNumber(v.get(i), g);
-                    }
-                    g.writeEndArray();
-                }
-                case TextValue t -> g.writeString(t.text());
-                case RecordValue r -> writeRecord(r, g);
-                default -> throw new IllegalStateException("a " + payload.kind() + " has a body");
-            }
-            g.writeEndObject();
-            g.flush();
-            bytes.write('\n');
-            return bytes.toByteArray();
-        } catch (IOException e) {
-            throw new UncheckedIOException("cannot encode a sample of " + output, e);
-        }
-    }
-
-    private static void writeRecord(RecordValue r, JsonGenerator g) throws IOException {
-        RecordForm form = r.carriesForm();
-        if (form != null && form.layout().write(form, g)) {
-            return;
-        }
-        g.writeTree(RecordLayout.allFinite(r.jsonView()) ? r.jsonView() : finite(r.json()));
-    }
-
-    private static void writeNumber(double v, JsonGenerator g) throws IOException {
-        if (Double.isFinite(v)) {
-            g.writeNumber(v);
-        } else {
-            g.writeNull();
-        }
-    }
-
     /** Adds {@code kind} and the value fields of {@code payload} to {@code header}; the body if binary. */
     public static Frame withValue(ObjectNode header, Payload payload) {
         header.put("kind", payload.kind().wireName());
@@ -128,7 +65,8 @@ public final class SampleCodec {
                 }
             }
             case TextValue t -> header.put("value", t.text());
-            case RecordValue r -> header.set("value", RecordLayout.allFinite(r.jsonView()) ? r.jsonView() : finite(r.json()));
+            case RecordValue r -> header.set("value",
+                    RecordJson.allFinite(r.jsonView()) ? r.jsonView() : finite(r.json()));
             case AudioChunk a -> {
                 header.put("rateHz", a.format().sampleRateHz())
                         .put("channels", a.format().channels())
@@ -297,7 +235,7 @@ public final class SampleCodec {
     }
 
     /** Replaces non-finite numbers, which JSON cannot carry, by null (in place; {@code node} is a copy). */
-    private static JsonNode finite(JsonNode node) {
+    static JsonNode finite(JsonNode node) {
         if (node.isFloatingPointNumber() && !Double.isFinite(node.doubleValue())) {
             return NODES.nullNode();
         }

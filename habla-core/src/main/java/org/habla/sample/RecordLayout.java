@@ -2,17 +2,10 @@ package org.habla.sample;
 
 import com.fasterxml.jackson.core.JsonGenerator;
 import com.fasterxml.jackson.databind.JsonNode;
-import com.fasterxml.jackson.databind.node.ArrayNode;
-import com.fasterxml.jackson.databind.node.BooleanNode;
-import com.fasterxml.jackson.databind.node.DoubleNode;
-import com.fasterxml.jackson.databind.node.IntNode;
 import com.fasterxml.jackson.databind.node.JsonNodeFactory;
-import com.fasterxml.jackson.databind.node.LongNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
-import com.fasterxml.jackson.databind.node.TextNode;
 import java.io.IOException;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -65,7 +58,7 @@ public final class RecordLayout<F extends RecordForm> {
                         + " twice");
             }
         }
-        this.index = Map.copyOf(byName);
+        this.index = java.util.Collections.unmodifiableMap(byName);
     }
 
     /** Starts the layout of {@code form}. */
@@ -85,13 +78,7 @@ public final class RecordLayout<F extends RecordForm> {
 
     /** The names of the fixed fields, in order (fields named at run time are not among them). */
     public List<String> names() {
-        List<String> names = new ArrayList<>();
-        for (int i = 0; i < fields.size(); i++) {
-            if (!entries.get(i)) {
-                names.add(fields.get(i).name());
-            }
-        }
-        return names;
+        return List.copyOf(index.keySet());
     }
 
     /** The record as JSON, field by field in declared order, leaving out the fields whose value is null. */
@@ -101,111 +88,18 @@ public final class RecordLayout<F extends RecordForm> {
         for (int i = 0; i < fields.size(); i++) {
             Object v = values.get(i).apply(f);
             if (v instanceof Map<?, ?> each && entries.get(i)) {
-                each.forEach((name, x) -> o.set((String) name, node(x)));
+                each.forEach((name, x) -> o.set((String) name, RecordJson.node(x)));
             } else if (v != null) {
-                o.set(fields.get(i).name(), node(v));
+                o.set(fields.get(i).name(), RecordJson.node(v));
             }
         }
         return o;
     }
 
-    /**
-     * Writes the record's JSON object straight to {@code g}, byte for byte what {@link #json} would be written as,
-     * without making it: a non-finite number (which JSON cannot carry) as {@code null}. Returns false, having
-     * written nothing, when a field holds JSON with a non-finite number in it, which only {@link #json} copes with.
-     */
+    /** Writes {@link #json}'s object straight to {@code g}, without making it; false, writing nothing, if it cannot. */
     public boolean write(RecordForm value, JsonGenerator g) throws IOException {
         F f = form.cast(value);
-        Object[] each = new Object[fields.size()];
-        java.util.Set<Object> named = null;
-        for (int i = 0; i < each.length; i++) {
-            each[i] = values.get(i).apply(f);
-            if (each[i] instanceof Map<?, ?> map && entries.get(i)) {
-                named = named == null ? new java.util.HashSet<>(index.keySet()) : named;
-                for (Map.Entry<?, ?> e : map.entrySet()) {
-                    if (!named.add(e.getKey()) || !finite(e.getValue())) {
-                        return false; // a name given twice is written once, where it came first: json's to do
-                    }
-                }
-            } else if (!finite(each[i])) {
-                return false;
-            }
-        }
-        g.writeStartObject();
-        for (int i = 0; i < each.length; i++) {
-            if (each[i] instanceof Map<?, ?> map && entries.get(i)) {
-                for (Map.Entry<?, ?> e : map.entrySet()) {
-                    g.writeFieldName((String) e.getKey());
-                    writeValue(e.getValue(), g);
-                }
-            } else if (each[i] != null) {
-                g.writeFieldName(fields.get(i).name());
-                writeValue(each[i], g);
-            }
-        }
-        g.writeEndObject();
-        return true;
-    }
-
-    /** False for JSON with a non-finite number in it; true for any other field value. */
-    private static boolean finite(Object v) {
-        return !(v instanceof JsonNode n) || allFinite(n);
-    }
-
-    /** Whether every number in {@code node} is finite, as JSON must have them. */
-    public static boolean allFinite(JsonNode node) {
-        if (node.isFloatingPointNumber()) {
-            return Double.isFinite(node.doubleValue());
-        }
-        if (node.isContainerNode()) {
-            for (JsonNode child : node) {
-                if (!allFinite(child)) {
-                    return false;
-                }
-            }
-        }
-        return true;
-    }
-
-    private static void writeValue(Object v, JsonGenerator g) throws IOException {
-        switch (v) {
-            case Double d -> writeNumber(d, g);
-            case Integer i -> g.writeNumber(i);
-            case Long l -> g.writeNumber(l);
-            case Boolean b -> g.writeBoolean(b);
-            case String s -> g.writeString(s);
-            case JsonNode n -> g.writeTree(n);
-            case double[] numbers -> {
-                g.writeStartArray();
-                for (double d : numbers) {
-                    writeNumber(d, g);
-                }
-                g.writeEndArray();
-            }
-            case boolean[] flags -> {
-                g.writeStartArray();
-                for (boolean b : flags) {
-                    g.writeBoolean(b);
-                }
-                g.writeEndArray();
-            }
-            case List<?> texts -> {
-                g.writeStartArray();
-                for (Object t : texts) {
-                    g.writeString((String) t);
-                }
-                g.writeEndArray();
-            }
-            default -> throw new IllegalStateException("a record field cannot hold a " + v.getClass().getName());
-        }
-    }
-
-    private static void writeNumber(double d, JsonGenerator g) throws IOException {
-        if (Double.isFinite(d)) {
-            g.writeNumber(d);
-        } else {
-            g.writeNull();
-        }
+        return RecordJson.write(fields, entries, index.keySet(), values.stream().map(v -> v.apply(f)).toArray(), g);
     }
 
     /** The value of field {@code name} of {@code value} (see the class comment), or null when it has none. */
@@ -238,36 +132,6 @@ public final class RecordLayout<F extends RecordForm> {
             }
         }
         return h;
-    }
-
-    /** A field's value as a JSON node; an array of numbers, flags or texts as a JSON array. */
-    static JsonNode node(Object v) {
-        return switch (v) {
-            case Double d -> DoubleNode.valueOf(d);
-            case Integer i -> IntNode.valueOf(i);
-            case Long l -> LongNode.valueOf(l);
-            case Boolean b -> BooleanNode.valueOf(b);
-            case String s -> TextNode.valueOf(s);
-            case JsonNode n -> n;
-            case double[] numbers -> {
-                ArrayNode a = NODES.arrayNode(numbers.length);
-                Arrays.stream(numbers).forEach(a::add);
-                yield a;
-            }
-            case boolean[] flags -> {
-                ArrayNode a = NODES.arrayNode(flags.length);
-                for (boolean f : flags) {
-                    a.add(f);
-                }
-                yield a;
-            }
-            case List<?> texts -> {
-                ArrayNode a = NODES.arrayNode(texts.size());
-                texts.forEach(t -> a.add((String) t));
-                yield a;
-            }
-            default -> throw new IllegalStateException("a record field cannot hold a " + v.getClass().getName());
-        };
     }
 
     @Override

@@ -90,7 +90,7 @@ public final class RecordValue implements Payload {
     public JsonNode get(String name) {
         if (form != null) {
             Object v = form.layout().value(form, name);
-            return v == null ? MissingNode.getInstance() : RecordLayout.node(v);
+            return v == null ? MissingNode.getInstance() : RecordJson.node(v);
         }
         return fields.path(name);
     }
