@@ -39,6 +39,11 @@ final class BenchDaemon {
         return start(robotPort, host, false);
     }
 
+    /** The same, with {@code security} (the config's "security" object, or null): a worker's secret, say. */
+    static Daemon start(int robotPort, String host, String security) throws IOException, ConfigException {
+        return start(robotPort, host, false, security, false, null);
+    }
+
     /** The same, with the live monitor on a free port if {@code monitor}. */
     static Daemon start(int robotPort, String host, boolean monitor) throws IOException, ConfigException {
         return start(robotPort, host, monitor, null, false, null);

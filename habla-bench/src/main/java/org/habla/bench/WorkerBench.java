@@ -49,14 +49,33 @@ final class WorkerBench {
     private static final int CHUNK_BYTES = 3_200;
     private static final int WINDOW = 32;
 
+    /** The secret the daemon and its workers share: a worker must have one to listen beyond loopback. */
+    private static final String SECRET = "habla-bench-worker-secret-" + Long.toHexString(System.nanoTime());
+
     private final int rateHz;
     private final int warmupS;
     private final int seconds;
+    /** The worker's secret file and the daemon's credentials file holding the same secret, owner-only. */
+    private final Path secretFile;
+    private final Path credentials;
 
     WorkerBench(int rateHz, int warmupS, int seconds) {
         this.rateHz = rateHz;
         this.warmupS = warmupS;
         this.seconds = seconds;
+        try {
+            Path dir = Files.createTempDirectory("habla-bench-worker");
+            secretFile = ownerOnly(dir.resolve("worker.secret"), SECRET + "\n");
+            credentials = ownerOnly(dir.resolve("credentials.json"), "{\"workerSecret\": \"" + SECRET + "\"}");
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    private static Path ownerOnly(Path file, String text) throws IOException {
+        Files.writeString(file, text);
+        Files.setPosixFilePermissions(file, java.nio.file.attribute.PosixFilePermissions.fromString("rw-------"));
+        return file;
     }
 
     /** Where a worker runs: its address, and the command prefix that starts it there. */
@@ -98,7 +117,7 @@ final class WorkerBench {
                 "max µs");
         latencyRow("in the daemon", null);
         for (Place place : places) {
-            try (Worker w = Worker.start(place)) {
+            try (Worker w = Worker.start(place, secretFile)) {
                 latencyRow("on a " + place.name(), w.host());
             }
         }
@@ -106,7 +125,7 @@ final class WorkerBench {
 
     private void latencyRow(String name, String host) throws Exception {
         try (BenchRobot robot = new BenchRobot(1_000_000_000L / rateHz)) {
-            Daemon d = BenchDaemon.start(robot.port(), host);
+            Daemon d = BenchDaemon.start(robot.port(), host, security(host));
             try (SampleClient client = new SampleClient(d.port("value"))) {
                 LatencyBench.await(() -> client.total() > 0, 30_000, name + ": no sample reached the client");
                 Thread.sleep(warmupS * 1000L);
@@ -130,7 +149,7 @@ final class WorkerBench {
         System.out.printf("%-52s %10s %10s %10s %10s%n", "pass-through p", "chunks/s", "MB/s", "x realtime", "refused");
         audioRow("in the daemon", null);
         for (Place place : places) {
-            try (Worker w = Worker.start(place)) {
+            try (Worker w = Worker.start(place, secretFile)) {
                 audioRow("on a " + place.name(), w.host());
             }
         }
@@ -239,7 +258,7 @@ final class WorkerBench {
                 "x realtime");
         speechRow("in the daemon", null, takes);
         for (Place place : places) {
-            try (Worker w = Worker.start(place)) {
+            try (Worker w = Worker.start(place, secretFile)) {
                 speechRow("on a " + place.name(), w.host(), takes);
             }
         }
@@ -331,8 +350,22 @@ final class WorkerBench {
         return host == null ? "" : ", \"host\": \"" + host + "\"";
     }
 
-    private static Daemon daemon(String json) throws Exception {
+    /** The config's "security" object for a daemon whose method is placed on {@code host}, or null for none. */
+    private String security(String host) {
+        return host == null ? null : securityObject();
+    }
+
+    /** The config's "security" object that gives the daemon the workers' secret. */
+    private String securityObject() {
+        return "{\"credentials\": \"" + credentials.toAbsolutePath() + "\"}";
+    }
+
+    /** A daemon of {@code json}; one that places a method on a worker proves the workers' secret to it. */
+    private Daemon daemon(String json) throws Exception {
         PluginRegistry registry = PluginRegistry.discover();
+        if (json.contains("\"host\"")) {
+            json = "{\"security\": " + securityObject() + ", " + json.strip().substring(1);
+        }
         HablaConfig config = new ConfigLoader(registry).parse(json);
         return Daemon.start(config, registry, EngineClock.system());
     }
@@ -347,11 +380,11 @@ final class WorkerBench {
     /** A {@code habla worker} JVM started for one row. */
     private record Worker(DaemonProcess process, String host) implements AutoCloseable {
 
-        static Worker start(Place place) throws Exception {
+        static Worker start(Place place, Path secretFile) throws Exception {
             int port = DaemonProcess.freePorts(1)[0];
             Path log = Files.createTempFile("habla-bench-worker", ".log");
             DaemonProcess p = DaemonProcess.startWrapped(place.wrapper(), log, "--log-level", "warn", "worker",
-                    "--port", "" + port, "--bind", place.address());
+                    "--port", "" + port, "--bind", place.address(), "--secret-file", secretFile.toString());
             if (!DaemonProcess.awaitPort(place.address(), port, 60_000)) {
                 p.close();
                 throw new IOException("the worker did not start: " + p.output());
