@@ -7,8 +7,10 @@
 # The model is Moonshine base-en (MIT licence): its ONNX Runtime files (encoder_model.ort, decoder_model_merged.ort)
 # and LICENSE come in the PyPI wheel moonshine-cpp 0.1.4, its tokenizer.json in useful-moonshine-onnx 20251121.
 # pip downloads both wheels (their own SHA-256 sums pinned below, so pip refuses any other file), the files are
-# extracted into a temporary folder, checked against the sums in ROOT/habla-methods/src/main/resources/org/habla/
-# methods/speech/moonshine-base-en.sha256 (the same sums the daemon checks when it loads the model), and only
+# extracted into a temporary folder, .mvn/moonshine_convert.py (Python's standard library only) turns the two
+# ONNX Runtime files into the ONNX models HABLA runs (encoder.onnx, decoder.onnx: the same network with its 8-bit
+# weights kept in 8 bits), the results are checked against the sums in ROOT/habla-methods/src/main/resources/org/
+# habla/methods/speech/moonshine-base-en.sha256 (the same sums the daemon checks when it loads the model), and only
 # then moved into the cache folder. A lab without a network copies that folder from a machine that fetched it.
 
 HABLA_MOONSHINE_WHEELS='moonshine-cpp==0.1.4 --hash=sha256:f7afc662bdd3ef98815ee3b940438b456e77d5a77cea5396ed9c572785412ebd
@@ -67,6 +69,9 @@ for wheel in wheels.glob("*.whl"):
 if wanted:
     sys.exit("habla: the wheels lack " + ", ".join(sorted(wanted)))
 PY
+  python3 "$_root/.mvn/moonshine_convert.py" "$_tmp/model/encoder_model.ort" "$_tmp/model/decoder_model_merged.ort" \
+    "$_tmp/model" || return 1
+  rm -f "$_tmp/model/encoder_model.ort" "$_tmp/model/decoder_model_merged.ort"
   if ! _habla_models_whole "$_root" "$_tmp/model"; then
     echo "habla: the extracted Moonshine files do not match their pinned SHA-256 sums; nothing was installed" >&2
     return 1
@@ -75,6 +80,8 @@ PY
   for _f in "$_tmp/model"/*; do
     mv -f "$_f" "$_folder/"
   done
+  # the wheel's own files, kept there by HABLA before it converted them
+  rm -f "$_folder/encoder_model.ort" "$_folder/decoder_model_merged.ort"
   echo "habla: the Moonshine model is in $_folder (every file matches its pinned SHA-256)" >&2
 }
 

@@ -13,7 +13,9 @@ import java.util.Map;
 
 /**
  * Moonshine base-en on ONNX Runtime: an encoder that turns 16 kHz audio into hidden states, and a decoder
- * that gives, for token sequences fed whole (teacher forcing), the log-probability of each next token.
+ * that gives, for token sequences fed whole (teacher forcing), the log-probability of each next token. Both
+ * are the ONNX models {@code ./habla models fetch} makes from the wheel's files ({@code .mvn/moonshine_convert.py}):
+ * the same network, its 8-bit weights multiplied in 8 bits, the decoder without its cache inputs.
  *
  * <pre>
  *   audio (1 × samples) ─ encoder ─→ hidden (1 × frames × 416)
@@ -26,11 +28,8 @@ import java.util.Map;
  */
 final class MoonshineModel implements AutoCloseable {
 
-    static final String ENCODER = "encoder_model.ort";
-    static final String DECODER = "decoder_model_merged.ort";
-    private static final int LAYERS = 8;
-    private static final int HEADS = 8;
-    private static final int HEAD_DIM = 52;
+    static final String ENCODER = "encoder.onnx";
+    static final String DECODER = "decoder.onnx";
     /** Logits this far below a step's best add less than e^-20 each to its normaliser: left out. */
     private static final float LOG_SUM_RANGE = 20f;
 
@@ -63,8 +62,8 @@ final class MoonshineModel implements AutoCloseable {
             o.setIntraOpNumThreads(threads);
             o.setInterOpNumThreads(1);
             o.setOptimizationLevel(OrtSession.SessionOptions.OptLevel.ALL_OPT);
-            // The decoder turns its 8-bit weights into floats on every run (hundreds of MB): without the arena and
-            // the memory pattern those buffers go back to the system after each utterance instead of staying.
+            // Without the arena and the memory pattern, a run's buffers (the logits of every phrase, a long
+            // utterance's attention) go back to the system after it instead of staying at their largest.
             o.setCPUArenaAllocator(false);
             o.setMemoryPatternOptimization(false);
             OrtSession enc = env.createSession(encoderFile.toString(), o);
@@ -122,16 +121,6 @@ final class MoonshineModel implements AutoCloseable {
             in.put("input_ids", OnnxTensor.createTensor(env, LongBuffer.wrap(ids), new long[] {b, steps}));
             in.put("encoder_hidden_states", OnnxTensor.createTensor(env, FloatBuffer.wrap(states),
                     new long[] {b, hidden.frames(), hidden.width()}));
-            in.put("use_cache_branch", OnnxTensor.createTensor(env, new boolean[] {false}));
-            FloatBuffer none = FloatBuffer.allocate(0);
-            for (int l = 0; l < LAYERS; l++) {
-                for (String part : new String[] {"decoder", "encoder"}) {
-                    for (String kv : new String[] {"key", "value"}) {
-                        in.put("past_key_values." + l + "." + part + "." + kv,
-                                OnnxTensor.createTensor(env, none, new long[] {b, HEADS, 0, HEAD_DIM}));
-                    }
-                }
-            }
             try (OrtSession.Result r = decoder.run(in, java.util.Set.of("logits"))) {
                 OnnxTensor logits = (OnnxTensor) r.get(0);
                 int vocab = (int) logits.getInfo().getShape()[2];

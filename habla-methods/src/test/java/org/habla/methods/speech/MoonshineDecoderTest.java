@@ -75,7 +75,7 @@ class MoonshineDecoderTest {
     void aModelFolderWithoutTheModelIsRefusedNamingTheCommandThatFetchesIt() throws IOException {
         Path empty = Files.createTempDirectory("habla-no-model");
         assertThatThrownBy(() -> MoonshineDecoder.load(SphinxDecoder.bundledGrammar(), empty, 1))
-                .hasMessageContaining(MoonshineFiles.FETCH).hasMessageContaining("encoder_model.ort");
+                .hasMessageContaining(MoonshineFiles.FETCH).hasMessageContaining("encoder.onnx");
         assertThatThrownBy(() -> SpeechRecognitionParams.defaults().withEngine("moonshine").withModel(empty.toString()))
                 .hasMessageContaining(MoonshineFiles.FETCH);
         Files.delete(empty);

@@ -85,8 +85,10 @@ public final class SpeechChain {
             values[i] = components[i].getAccessor().invoke(r);
             String v = System.getProperty(prefix + components[i].getName());
             if (v != null) {
-                values[i] = types[i] == Double.class ? Double.valueOf(v) : types[i] == Integer.class ? Integer.valueOf(v)
-                        : types[i] == Boolean.class ? Boolean.valueOf(v) : v;
+                Class<?> t = types[i];
+                values[i] = t == Double.class || t == double.class ? Double.valueOf(v)
+                        : t == Integer.class || t == int.class ? Integer.valueOf(v)
+                        : t == Boolean.class || t == boolean.class ? Boolean.valueOf(v) : v;
                 System.out.println("  " + prefix + components[i].getName() + " = " + v);
             }
         }
