@@ -99,12 +99,23 @@ final class AiboSpeechBench {
         }
     }
 
-    /** Feeds {@code audio} from a socket of its own and exposes {@code speech.words}; everything else stays. */
+    /**
+     * Feeds every method that reads the microphone's audio ({@code audio}, and {@code speech} when it cuts the stream
+     * itself) from a socket of its own and exposes {@code speech.words}; everything else stays.
+     */
     private static void rewire(ObjectNode root, int micPort, int wordsPort) throws IOException {
         ArrayNode methods = (ArrayNode) root.get("methods");
         for (JsonNode m : methods) {
-            if (m.path("id").asText().equals("audio")) {
-                ((ObjectNode) m.get("inputs")).put("audio", "bench-mic.out");
+            ObjectNode inputs = (ObjectNode) m.get("inputs");
+            if (inputs == null) {
+                continue;
+            }
+            List<String> ports = new ArrayList<>();
+            inputs.fieldNames().forEachRemaining(ports::add);
+            for (String port : ports) {
+                if (inputs.path(port).asText().equals("microphone.audio")) {
+                    inputs.put(port, "bench-mic.out");
+                }
             }
         }
         methods.add(JSON.readTree("""

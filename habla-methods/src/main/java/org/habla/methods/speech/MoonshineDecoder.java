@@ -15,7 +15,8 @@ import org.habla.sample.AudioFormat;
  * utterance goes through the encoder once; then every phrase of the grammar ({@link GrammarExpansion}),
  * written as a sentence ("Go forward"), is scored in one batched decoder pass, teacher-forced: the
  * log-probability of its tokens and of the sentence ending there (the end token, or "." "!" "?"). The best
- * phrase is the one said, if any.
+ * phrase, by that log-probability plus a bonus per step (without it, in noise, a one-word phrase such as "no"
+ * outscores the two-word phrase said: every token costs probability), is the one said, if any.
  *
  * <p>Confidence, for rejecting speech outside the grammar, compares the phrase with what the model would
  * say unconstrained: at each step, how far the phrase's token falls below the step's most likely token,
@@ -37,26 +38,29 @@ public final class MoonshineDecoder implements SpeechEngine {
     private final List<String> phrases;
     private final int[][] rows;
     private final int[] enders;
+    private final double stepBonus;
 
-    private MoonshineDecoder(MoonshineModel model, List<String> phrases, int[][] rows, int[] enders) {
+    private MoonshineDecoder(MoonshineModel model, List<String> phrases, int[][] rows, int[] enders, double stepBonus) {
         this.model = model;
         this.phrases = phrases;
         this.rows = rows;
         this.enders = enders;
+        this.stepBonus = stepBonus;
     }
 
     /**
      * Loads the model in {@code folder} (its files checked against the pinned sums) for the phrases of
-     * {@code grammar}, on {@code threads} threads.
+     * {@code grammar}, on {@code threads} threads; the best phrase is the one whose log-probability plus
+     * {@code stepBonus} per step (its tokens and its end) is highest.
      */
-    public static MoonshineDecoder load(Path grammar, Path folder, int threads) throws IOException {
+    public static MoonshineDecoder load(Path grammar, Path folder, int threads, double stepBonus) throws IOException {
         MoonshineFiles.verify(folder);
         List<String> phrases = GrammarExpansion.phrases(grammar);
         MoonshineTokenizer tokenizer = MoonshineTokenizer.load(folder.resolve("tokenizer.json"));
         int[][] rows = phrases.stream().map(p -> tokenizer.encode(sentence(p))).toArray(int[][]::new);
         int[] enders = IntStream.concat(IntStream.of(MoonshineTokenizer.END),
                 SENTENCE_ENDS.stream().mapToInt(tokenizer::piece).filter(id -> id >= 0)).toArray();
-        MoonshineDecoder d = new MoonshineDecoder(MoonshineModel.load(folder, threads), phrases, rows, enders);
+        MoonshineDecoder d = new MoonshineDecoder(MoonshineModel.load(folder, threads), phrases, rows, enders, stepBonus);
         d.warmUp();
         return d;
     }
@@ -93,17 +97,24 @@ public final class MoonshineDecoder implements SpeechEngine {
         } catch (OrtException e) {
             throw new IllegalStateException("ONNX Runtime failed on an utterance: " + e.getMessage(), e);
         }
-        int best = 0;
-        for (int i = 1; i < scores.length; i++) {
-            if (scores[i].logProb() > scores[best].logProb()) {
-                best = i;
-            }
-        }
+        int best = best(scores, stepBonus);
         MoonshineModel.RowScore s = scores[best];
         double confidence = Math.exp(-s.shortfall() / s.tokens());
         long ms = (System.nanoTime() - start) / 1_000_000;
         return Optional.of(new Decoded(phrases.get(best), confidence, s.logProb(), ms,
                 utterance.frameCount() * 1000L / RATE_HZ));
+    }
+
+    /** The index of the best row: the highest log-probability plus {@code stepBonus} per step. */
+    static int best(MoonshineModel.RowScore[] scores, double stepBonus) {
+        int best = 0;
+        for (int i = 1; i < scores.length; i++) {
+            if (scores[i].logProb() + stepBonus * scores[i].tokens()
+                    > scores[best].logProb() + stepBonus * scores[best].tokens()) {
+                best = i;
+            }
+        }
+        return best;
     }
 
     /** The utterance as the encoder takes it: floats scaled to {@link #PEAK}, padded to a quarter second. */

@@ -154,7 +154,8 @@ public final class SpeechRecognition extends ProcessingMethod {
     static SpeechEngine load(SpeechRecognitionParams p) throws java.io.IOException {
         if (p.engine().equals("moonshine")) {
             Path grammar = p.grammar().isEmpty() ? SphinxDecoder.bundledGrammar() : Path.of(p.grammar());
-            return MoonshineDecoder.load(grammar, SpeechRecognitionParams.modelFolder(p.model()), p.threads());
+            return MoonshineDecoder.load(grammar, SpeechRecognitionParams.modelFolder(p.model()), p.threads(),
+                    p.moonshineStepBonus());
         }
         return SphinxDecoder.load(settings(p), p.adaptationFile());
     }

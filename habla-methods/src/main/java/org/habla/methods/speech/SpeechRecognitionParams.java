@@ -19,9 +19,13 @@ public record SpeechRecognitionParams(
                 defaultValue = "\"\"")
         String model,
         @Param(value = "Moonshine: the lowest confidence a phrase is said with (e^-mean shortfall of its tokens from "
-                + "the model's own choice at each step); below it the utterance gives nothing; 0.2 silenced 90 % of speech outside the grammar on the tune voices",
-                defaultValue = "0.2", min = 0, max = 1)
+                + "the model's own choice at each step); below it the utterance gives nothing; 0.15 silenced 90 % of "
+                + "speech outside the grammar on the tune voices", defaultValue = "0.15", min = 0, max = 1)
         double moonshineMinConfidence,
+        @Param(value = "Moonshine: log-probability added per step (token or end) of a phrase when choosing the best "
+                + "one, so that a one-word phrase needs clearer evidence than a longer one; 8 measured best on the tune "
+                + "voices", defaultValue = "8", min = 0, max = 50)
+        double moonshineStepBonus,
         @Param(value = "Moonshine: threads ONNX Runtime uses for one utterance", defaultValue = "1", min = 1, max = 16)
         int threads,
         @Param(value = "Path of a JSGF grammar file (.gram) of the phrases to recognise; empty: the bundled "
@@ -98,42 +102,48 @@ public record SpeechRecognitionParams(
 
     /** These params with another grammar file. */
     public SpeechRecognitionParams withGrammar(String file) {
-        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, threads, file, adaptation,
+        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, moonshineStepBonus,
+                threads, file, adaptation,
                 minConfidence, outOfGrammarProbability, garbagePrior, denoise,
                 maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with a speaker's adaptation file. */
     public SpeechRecognitionParams withAdaptation(String file) {
-        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, threads, grammar, file,
+        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, moonshineStepBonus,
+                threads, grammar, file,
                 minConfidence, outOfGrammarProbability, garbagePrior, denoise,
                 maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with another confidence threshold. */
     public SpeechRecognitionParams withMinConfidence(double threshold) {
-        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, threads, grammar, adaptation,
+        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, moonshineStepBonus,
+                threads, grammar, adaptation,
                 threshold, outOfGrammarProbability, garbagePrior, denoise,
                 maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with another backlog. */
     public SpeechRecognitionParams withMaxPending(int n) {
-        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, threads, grammar, adaptation,
+        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, moonshineStepBonus,
+                threads, grammar, adaptation,
                 minConfidence, outOfGrammarProbability, garbagePrior, denoise, n,
                 minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }
 
     /** These params with another early endpoint (at hangoverMs or above: none). */
     public SpeechRecognitionParams withEndpointMs(double ms) {
-        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, threads, grammar, adaptation,
+        return new SpeechRecognitionParams(engine, model, moonshineMinConfidence, moonshineStepBonus,
+                threads, grammar, adaptation,
                 minConfidence, outOfGrammarProbability, garbagePrior, denoise,
                 maxPending, minVoicedMs, openAboveFloorDb, minLevelDb, hangoverMs, ms, endpointAboveFloorDb, queue);
     }
 
     /** These params with another engine. */
     public SpeechRecognitionParams withEngine(String name) {
-        return new SpeechRecognitionParams(name, model, moonshineMinConfidence, threads, grammar, adaptation,
+        return new SpeechRecognitionParams(name, model, moonshineMinConfidence, moonshineStepBonus,
+                threads, grammar, adaptation,
                 minConfidence,
                 outOfGrammarProbability, garbagePrior, denoise, maxPending, minVoicedMs, openAboveFloorDb, minLevelDb,
                 hangoverMs, endpointMs, endpointAboveFloorDb, queue);
@@ -141,7 +151,8 @@ public record SpeechRecognitionParams(
 
     /** These params with another Moonshine model folder. */
     public SpeechRecognitionParams withModel(String folder) {
-        return new SpeechRecognitionParams(engine, folder, moonshineMinConfidence, threads, grammar, adaptation,
+        return new SpeechRecognitionParams(engine, folder, moonshineMinConfidence, moonshineStepBonus,
+                threads, grammar, adaptation,
                 minConfidence,
                 outOfGrammarProbability, garbagePrior, denoise, maxPending, minVoicedMs, openAboveFloorDb, minLevelDb,
                 hangoverMs, endpointMs, endpointAboveFloorDb, queue);
@@ -149,7 +160,8 @@ public record SpeechRecognitionParams(
 
     /** These params with another Moonshine confidence threshold. */
     public SpeechRecognitionParams withMoonshineMinConfidence(double threshold) {
-        return new SpeechRecognitionParams(engine, model, threshold, threads, grammar, adaptation, minConfidence,
+        return new SpeechRecognitionParams(engine, model, threshold, moonshineStepBonus,
+                threads, grammar, adaptation, minConfidence,
                 outOfGrammarProbability, garbagePrior, denoise, maxPending, minVoicedMs, openAboveFloorDb, minLevelDb,
                 hangoverMs, endpointMs, endpointAboveFloorDb, queue);
     }

@@ -21,7 +21,8 @@ class MoonshineDecoderTest {
 
     private MoonshineDecoder decoder() throws IOException {
         if (decoder == null) {
-            decoder = MoonshineDecoder.load(SphinxDecoder.bundledGrammar(), MoonshineModelFolder.required(), 1);
+            decoder = MoonshineDecoder.load(SphinxDecoder.bundledGrammar(), MoonshineModelFolder.required(), 1,
+                    SpeechRecognitionParams.defaults().moonshineStepBonus());
         }
         return decoder;
     }
@@ -72,9 +73,19 @@ class MoonshineDecoderTest {
     }
 
     @Test
+    void theStepBonusLetsALongerPhraseWinOverAOneWordPhraseOnlyWhenItIsCloseEnough() {
+        MoonshineModel.RowScore no = new MoonshineModel.RowScore(-3, 0, 2, -2);
+        MoonshineModel.RowScore goBack = new MoonshineModel.RowScore(-8, 0, 3, -5);
+        MoonshineModel.RowScore[] scores = {no, goBack};
+        assertThat(MoonshineDecoder.best(scores, 0)).as("without a bonus the likelier phrase").isZero();
+        assertThat(MoonshineDecoder.best(scores, 8)).as("8 per step: -3 + 16 < -8 + 24").isOne();
+        assertThat(MoonshineDecoder.best(scores, 4)).as("4 per step: -3 + 8 > -8 + 12").isZero();
+    }
+
+    @Test
     void aModelFolderWithoutTheModelIsRefusedNamingTheCommandThatFetchesIt() throws IOException {
         Path empty = Files.createTempDirectory("habla-no-model");
-        assertThatThrownBy(() -> MoonshineDecoder.load(SphinxDecoder.bundledGrammar(), empty, 1))
+        assertThatThrownBy(() -> MoonshineDecoder.load(SphinxDecoder.bundledGrammar(), empty, 1, 0))
                 .hasMessageContaining(MoonshineFiles.FETCH).hasMessageContaining("encoder.onnx");
         assertThatThrownBy(() -> SpeechRecognitionParams.defaults().withEngine("moonshine").withModel(empty.toString()))
                 .hasMessageContaining(MoonshineFiles.FETCH);
