@@ -2,6 +2,7 @@
 # Sourced by the launcher (bash); defines
 #   habla_models_folder          prints the cache folder of the Moonshine model
 #   habla_models_fetch ROOT      fetches it, if the folder lacks a file or a file differs from its pinned sum
+#   habla_models_present ROOT    true when the folder holds every pinned file (the daemon checks their sums)
 #   habla_models_needed ARGS...  true when one of ARGS is a config file whose speech-recognition names moonshine
 #
 # The model is Moonshine base-en (MIT licence): its ONNX Runtime files (encoder_model.ort, decoder_model_merged.ort)
@@ -83,6 +84,14 @@ PY
   # the wheel's own files, kept there by HABLA before it converted them
   rm -f "$_folder/encoder_model.ort" "$_folder/decoder_model_merged.ort"
   echo "habla: the Moonshine model is in $_folder (every file matches its pinned SHA-256)" >&2
+}
+
+# True when every pinned file is in the cache folder (their sums are checked by the daemon when it loads them).
+habla_models_present() {
+  _folder=$(habla_models_folder)
+  for _f in $(grep -v '^#' "$(_habla_models_sums "$1")" | awk '{print $2}'); do
+    [ -f "$_folder/$_f" ] || return 1
+  done
 }
 
 habla_models_needed() {
