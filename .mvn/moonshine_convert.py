@@ -1,3 +1,5 @@
+# Over 300 lines, on purpose: one standard-library script reads ONNX Runtime's FlatBuffer, rewrites the graph and writes
+# ONNX's protobuf, so that fetching the model needs nothing but python3.
 """Turns Moonshine base-en's ONNX Runtime files into the two ONNX models HABLA scores grammar phrases with.
 
     python3 moonshine_convert.py ENCODER.ort DECODER_MERGED.ort OUT_FOLDER
