@@ -14,7 +14,8 @@ import java.util.Map;
 
 /**
  * Where the Moonshine model lives and whether it is whole. The files are never in the repository:
- * {@code ./habla models fetch} extracts them from their PyPI wheels into a cache folder outside it,
+ * {@code ./habla models fetch} extracts them from their PyPI wheels, makes the ONNX models HABLA runs from them
+ * ({@code .mvn/moonshine_convert.py}) and puts them into a cache folder outside it,
  * {@code $HABLA_MODELS/moonshine-base-en} (default {@code ~/.cache/habla/models/moonshine-base-en}), and
  * checks them against the SHA-256 sums pinned beside this class ({@code moonshine-base-en.sha256}). A lab
  * without a network copies that folder from a machine that fetched it.
