@@ -14,7 +14,8 @@ import org.habla.plugin.PluginRegistry;
  * rejection is to blame: every item is cut at its labelled start and end (with {@value #MARGIN_S} s either side),
  * trimmed as {@code speech-recognition} trims, and decoded by the engine with config/aibo.json's settings. Per
  * condition it prints how often the best phrase is the one said with every phrase said (no threshold), and, for a
- * few thresholds on the confidence, in-grammar right / outside the grammar gave nothing.
+ * few thresholds on the confidence, in-grammar right / outside the grammar gave nothing. The engine is loaded as the
+ * method loads it ({@link SpeechRecognition#load}).
  * {@code MoonshineCeiling SETDIR tune|held-out}. It is habla-bench's, in habla-methods' package, to reach the
  * engine's parts.
  */
@@ -29,17 +30,25 @@ public final class MoonshineCeiling {
     }
 
     public static void main(String[] args) throws Exception {
+        if (args.length != 2) {
+            System.err.println("usage: MoonshineCeiling SETDIR tune|held-out   (from the repository's root)");
+            System.exit(2);
+        }
         Path set = Path.of(args[0]);
         String split = args[1];
+        List<EvalSet.Voice> voices = EvalSet.read(set).stream().filter(v -> v.split().equals(split)).toList();
+        if (voices.isEmpty()) {
+            System.err.println("MoonshineCeiling: no voice of split '" + split + "' in " + set + "/voices.tsv");
+            System.exit(2);
+        }
         HablaConfig c = new ConfigLoader(PluginRegistry.discover()).load(Path.of("config/aibo.json"));
         SpeechRecognitionParams p = (SpeechRecognitionParams) c.method("speech").orElseThrow().params();
-        try (MoonshineDecoder engine = MoonshineDecoder.load(Path.of("config/grammars/commands.gram"),
-                MoonshineFiles.defaultFolder(), 2, p.moonshineStepBonus())) {
+        try (SpeechEngine engine = SpeechRecognition.load(p)) {
             List<Outcome> all = new ArrayList<>();
             for (String condition : EvalSet.CONDITIONS) {
                 List<Outcome> outcomes = new ArrayList<>();
-                for (EvalSet.Voice v : EvalSet.read(set)) {
-                    if (!v.split().equals(split) || !v.has(condition)) {
+                for (EvalSet.Voice v : voices) {
+                    if (!v.has(condition)) {
                         continue;
                     }
                     double[] stream = Utterances.readWav(v.stream(condition)).channel(0);
@@ -55,9 +64,9 @@ public final class MoonshineCeiling {
                 all.addAll(outcomes);
             }
             System.out.printf("%-8s %s%n", "all", line(all));
-            System.out.printf("(%s voices, step bonus %s; every phrase said: in-grammar items whose best phrase is right; "
+            System.out.printf("(%s voices, engine %s, step bonus %s; every phrase said: in-grammar items whose best phrase is right; "
                     + "at t: in-grammar right with confidence >= t / outside the grammar below t)%n", split,
-                    p.moonshineStepBonus());
+                    engine.name(), p.moonshineStepBonus());
         }
         System.exit(0);
     }
